@@ -1,0 +1,56 @@
+#include "core/io/atomic_write.h"
+
+#include "core/errors/input_error.h"
+
+#include <fstream>
+#include <system_error>
+#include <unistd.h>
+
+namespace probeproxy {
+
+namespace {
+
+std::filesystem::path temporaryBeside(const std::filesystem::path& target) {
+  // Same folder, so the rename cannot cross file systems; the pid keeps two runs apart.
+  // The extension is kept so that writers choosing a format by extension still see it.
+  std::filesystem::path tmp = target;
+  tmp.replace_filename("." + target.stem().string() + ".tmp" + std::to_string(::getpid()) +
+                       target.extension().string());
+  return tmp;
+}
+
+}  // namespace
+
+void writeFileAtomically(const std::filesystem::path& target,
+                         const std::function<void(const std::filesystem::path&)>& writeTo) {
+  if (target.has_parent_path()) {
+    std::error_code ec;
+    std::filesystem::create_directories(target.parent_path(), ec);
+    if (ec) throw InputError(target, "cannot create folder: " + ec.message());
+  }
+  const std::filesystem::path tmp = temporaryBeside(target);
+  try {
+    writeTo(tmp);
+  } catch (...) {
+    std::error_code ignored;
+    std::filesystem::remove(tmp, ignored);
+    throw;
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, target, ec);
+  if (ec) {
+    std::filesystem::remove(tmp, ec);
+    throw InputError(target, "cannot write: " + ec.message());
+  }
+}
+
+void writeFileAtomically(const std::filesystem::path& target, std::string_view bytes) {
+  writeFileAtomically(target, [&](const std::filesystem::path& tmp) {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out.close();
+    if (!out) throw InputError(target, "cannot write");
+  });
+}
+
+}  // namespace probeproxy

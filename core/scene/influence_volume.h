@@ -1,0 +1,27 @@
+#pragma once
+// Where a probe contributes (seed 000, bonus slides): 100% inside the inner range, fading to
+// 0% at the outer boundary. World frame (Z up), metres.
+
+#include <glm/gtc/quaternion.hpp>
+#include <glm/vec3.hpp>
+
+#include <variant>
+
+namespace probeproxy {
+
+struct BoxInfluence {
+  glm::dvec3 centerMeters{0.0};
+  glm::dvec3 halfExtentsMeters{1.0};       // outer range, in the box's own frame
+  glm::dquat worldFromBox{1, 0, 0, 0};     // unit quaternion, box frame -> world
+  glm::dvec3 innerHalfExtentsMeters{1.0};  // inner range, <= halfExtentsMeters per axis
+};
+
+struct SphereInfluence {
+  glm::dvec3 centerMeters{0.0};
+  double radiusMeters = 1.0;       // outer range
+  double innerRadiusMeters = 1.0;  // inner range, <= radiusMeters
+};
+
+using InfluenceVolume = std::variant<BoxInfluence, SphereInfluence>;
+
+}  // namespace probeproxy

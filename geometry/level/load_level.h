@@ -1,0 +1,20 @@
+#pragma once
+// Reading level meshes (glTF/GLB, OBJ, PLY, OFF) into the world frame. Missing or unreadable
+// files, malformed meshes, NaN or infinite coordinates and levels with no triangles throw
+// InputError naming the file; messy but finite geometry is loaded as it is.
+
+#include "core/scene/scene.h"
+#include "geometry/level/level_mesh.h"
+
+#include <filesystem>
+
+namespace probeproxy {
+
+// One mesh file. `fileUp` and `metersPerUnit` say how the file's coordinates map to the world.
+LevelMesh loadLevelMeshFile(const std::filesystem::path& file, UpAxis fileUp,
+                            double metersPerUnit);
+
+// Every mesh of the scene's level, in scene order. Throws if the level has no triangles.
+LevelMesh loadLevel(const Scene& scene);
+
+}  // namespace probeproxy

@@ -1,0 +1,35 @@
+#pragma once
+// First-hit ray casting against the level with Embree. Built once from a LevelMesh, then
+// immutable: every query is const and safe to call from many threads at once.
+
+#include "geometry/level/level_mesh.h"
+#include "geometry/raycast/ray.h"
+
+#include <memory>
+#include <span>
+
+namespace probeproxy {
+
+class LevelRayCaster {
+ public:
+  // Copies the level's vertices and triangles into Embree's layout; `level` may go away after.
+  explicit LevelRayCaster(const LevelMesh& level);
+  ~LevelRayCaster();
+  LevelRayCaster(const LevelRayCaster&) = delete;
+  LevelRayCaster& operator=(const LevelRayCaster&) = delete;
+
+  RayHit firstHit(const Ray& ray) const;
+
+  // hits[i] answers rays[i]; the batch is split over all cores (TBB). Results do not depend
+  // on the number of threads. `coherent` tells Embree the rays share an origin (depth cubes).
+  void firstHits(std::span<const Ray> rays, std::span<RayHit> hits, bool coherent = false) const;
+
+  // One ray at a time on the calling thread: the baseline the batched path is measured against.
+  void firstHitsOneByOne(std::span<const Ray> rays, std::span<RayHit> hits) const;
+
+ private:
+  struct Embree;
+  std::unique_ptr<Embree> embree_;
+};
+
+}  // namespace probeproxy

@@ -1,0 +1,47 @@
+// probeproxy: the command-line front end. Reports go to stdout (JSON under --json), progress
+// and errors to stderr. Exit codes: 0 done, 1 findings (validate), 2 bad input or not available.
+
+#include "core/errors/input_error.h"
+#include "plugin/cli/verb.h"
+
+#include <iostream>
+
+int main(int argc, char** argv) {
+  using namespace probeproxy;
+  CLI::App app{
+      "probeproxy builds convex proxy volumes for parallax-corrected cubemaps from the level,\n"
+      "validates authored probe volumes, measures every correction method, and exports\n"
+      "proxies for the game runtime.",
+      "probeproxy"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "probeproxy 0.1.0");
+
+  std::vector<cli::Verb> verbs = {cli::addDemoVerb(app), cli::addBuildVerb(app)};
+  for (cli::Verb& pending : cli::addPendingVerbs(app)) verbs.push_back(std::move(pending));
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "probeproxy: " << e.what() << " (see probeproxy --help)\n";
+    return kExitBadInput;
+  }
+
+  try {
+    for (const cli::Verb& verb : verbs) {
+      if (verb.command->parsed()) return verb.run();
+    }
+  } catch (const InputError& e) {
+    std::cerr << "probeproxy: error: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "probeproxy: internal error: " << e.what() << "\n";
+    return 3;
+  }
+  return kExitBadInput;
+}

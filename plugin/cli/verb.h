@@ -1,0 +1,24 @@
+#pragma once
+// Each verb of the `probeproxy` CLI adds its subcommand and says what runs when it is chosen.
+// The run function returns the exit code; bad input is thrown as InputError and becomes one
+// line and exit code 2 in main.
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <vector>
+
+namespace probeproxy::cli {
+
+struct Verb {
+  CLI::App* command = nullptr;
+  std::function<int()> run;  // called once the command line parsed; returns the exit code
+};
+
+Verb addDemoVerb(CLI::App& app);
+Verb addBuildVerb(CLI::App& app);
+// validate, export, correct, blend, bench: present with their real options; each says which
+// issue brings it and exits 2 until that lands.
+std::vector<Verb> addPendingVerbs(CLI::App& app);
+
+}  // namespace probeproxy::cli

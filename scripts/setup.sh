@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# The project's one set-up script. Installs the Debian packages probeproxy needs (only those
+# missing: `apt-get update` once, then one `apt-get install`), configures and builds with CMake
+# into build/, then runs what was asked:
+#   scripts/setup.sh demo    the main job: `probeproxy demo` on the built-in level
+#   scripts/setup.sh test    every test (CTest)
+#   scripts/setup.sh build   install and build only
+# Idempotent: a second run installs nothing and rebuilds only what changed.
+set -euo pipefail
+
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build="${PROBEPROXY_BUILD_DIR:-$here/build}"
+job="${1:-build}"
+
+packages=(
+  build-essential cmake pkg-config
+  libcgal-dev libgmp-dev libmpfr-dev libeigen3-dev   # hulls, fits, oriented boxes
+  libopenmesh-dev                                    # convexity checks, simplification
+  libembree-dev libtbb-dev                           # ray casting, threads
+  libassimp-dev                                      # glTF/GLB, OBJ, PLY, OFF level meshes
+  libopenimageio-dev openimageio-tools               # EXR/HDR/PNG cubemaps and reports
+  libglm-dev nlohmann-json3-dev libcli11-dev
+  pybind11-dev python3-dev                           # the Blender add-on's module
+  libgtest-dev libbenchmark-dev valgrind             # tests, benchmarks, instruction counts
+  blender python3-matplotlib                         # test levels, reference renders, charts
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}" >&2
+  sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  $sudo apt-get update
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y --no-install-recommends "${missing[@]}"
+fi
+
+cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$build" -j"$(nproc)"
+
+case "$job" in
+  demo) "$build/plugin/cli/probeproxy" demo --out "$build/demo" ;;
+  test) ctest --test-dir "$build" --output-on-failure -j"$(nproc)" ;;
+  build) ;;
+  *) echo "usage: scripts/setup.sh [demo|test|build]" >&2; exit 2 ;;
+esac
