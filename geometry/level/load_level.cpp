@@ -2,12 +2,15 @@
 
 #include "core/errors/input_error.h"
 
+#include <assimp/DefaultLogger.hpp>
 #include <assimp/Importer.hpp>
+#include <assimp/LogStream.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 #include <sstream>
 
 namespace probeproxy {
@@ -41,16 +44,17 @@ std::string describeVertex(const aiVector3D& v) {
 
 // Assimp strips the mesh format's own validation down to "it parsed"; we still refuse what
 // would poison every ray: non-finite coordinates and faces pointing at missing vertices.
-void appendAssimpMesh(const aiMesh& mesh, const std::filesystem::path& file, UpAxis fileUp,
-                      double metersPerUnit, LevelMesh& out) {
+void appendAssimpMesh(const aiMesh& mesh, const aiMatrix4x4& fileFromMesh, const std::string& name,
+                      const std::filesystem::path& file, UpAxis fileUp, double metersPerUnit,
+                      LevelMesh& out) {
   LevelPart part;
-  part.name = mesh.mName.length > 0 ? mesh.mName.C_Str() : "mesh" + std::to_string(out.parts.size());
+  part.name = name;
   part.file = file;
   part.firstTriangle = static_cast<std::uint32_t>(out.triangles.size());
 
   const auto base = static_cast<std::uint32_t>(out.positionsMeters.size());
   for (unsigned i = 0; i < mesh.mNumVertices; ++i) {
-    const aiVector3D& v = mesh.mVertices[i];
+    const aiVector3D v = fileFromMesh * mesh.mVertices[i];
     if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
       throw InputError(file, "mesh '" + part.name + "' vertex " + std::to_string(i) +
                                  " has a non-finite coordinate " + describeVertex(v));
@@ -76,28 +80,81 @@ void appendAssimpMesh(const aiMesh& mesh, const std::filesystem::path& file, UpA
   if (part.triangleCount > 0) out.parts.push_back(std::move(part));
 }
 
+// Node transforms are applied here rather than by Assimp's PreTransformVertices, which would
+// merge every mesh that shares a material and lose the object names artists look for.
+void appendNode(const aiScene& scene, const aiNode& node, const aiMatrix4x4& fileFromParent,
+                const std::filesystem::path& file, UpAxis fileUp, double metersPerUnit,
+                LevelMesh& out) {
+  const aiMatrix4x4 fileFromNode = fileFromParent * node.mTransformation;
+  for (unsigned i = 0; i < node.mNumMeshes; ++i) {
+    const aiMesh& mesh = *scene.mMeshes[node.mMeshes[i]];
+    // Artists look for the object's name (the node); the mesh data's name is a fallback.
+    std::string name = node.mName.length > 0 && &node != scene.mRootNode ? node.mName.C_Str()
+                                                                        : mesh.mName.C_Str();
+    if (name.empty()) name = "mesh" + std::to_string(out.parts.size());
+    appendAssimpMesh(mesh, fileFromNode, name, file, fileUp, metersPerUnit, out);
+  }
+  for (unsigned c = 0; c < node.mNumChildren; ++c) {
+    appendNode(scene, *node.mChildren[c], fileFromNode, file, fileUp, metersPerUnit, out);
+  }
+}
+
+// Assimp repairs some broken files quietly (an OFF face index past the end is clamped, an OBJ
+// number that does not parse becomes 0) and only says so in its error log. A level built
+// from a repaired file would be wrong without anyone knowing, so the first logged error
+// rejects the file. Assimp's logger is global: loads take turns.
+class AssimpErrorLog : public Assimp::LogStream {
+ public:
+  AssimpErrorLog() {
+    Assimp::DefaultLogger::create(nullptr, Assimp::Logger::NORMAL, 0);
+    Assimp::DefaultLogger::get()->attachStream(this, Assimp::Logger::Err);
+  }
+  ~AssimpErrorLog() override {
+    Assimp::DefaultLogger::get()->detachStream(this, Assimp::Logger::Err);
+    Assimp::DefaultLogger::kill();
+  }
+  void write(const char* message) override {
+    if (first_.empty()) first_ = message;
+  }
+  // Without Assimp's "Error, T0: " prefix and trailing newline.
+  std::string firstError() const {
+    std::string m = first_;
+    if (const auto colon = m.find(": "); m.rfind("Error", 0) == 0 && colon != std::string::npos) {
+      m = m.substr(colon + 2);
+    }
+    while (!m.empty() && (m.back() == '\n' || m.back() == '\r')) m.pop_back();
+    return m;
+  }
+
+ private:
+  std::string first_;
+};
+
+std::mutex assimpMutex;
+
 }  // namespace
 
 LevelMesh loadLevelMeshFile(const std::filesystem::path& file, UpAxis fileUp,
                             double metersPerUnit) {
   requireReadableMeshFile(file);
 
+  const std::lock_guard<std::mutex> lock(assimpMutex);
+  AssimpErrorLog errors;
   Assimp::Importer importer;
-  // Points and lines are dropped; nothing is welded, fixed or removed, so what we measure is
-  // the level as authored. Node transforms are baked so glTF scenes land where Blender had them.
-  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  const aiScene* scene = importer.ReadFile(
-      file.string(), aiProcess_Triangulate | aiProcess_PreTransformVertices |
-                         aiProcess_SortByPType | aiProcess_ValidateDataStructure);
+  // Polygons are triangulated; nothing is welded, fixed or removed, so what we measure is the
+  // level as authored. Points and lines are skipped below: they carry no surface.
+  const aiScene* scene = importer.ReadFile(file.string(), aiProcess_Triangulate);
   if (scene == nullptr) {
     std::string reason = importer.GetErrorString();
-    if (reason.empty()) reason = "unknown reason";
+    if (reason.empty()) reason = errors.firstError();
+    if (reason.empty()) reason = "not a readable mesh";
     throw InputError(file, "malformed mesh: " + reason);
   }
+  if (!errors.firstError().empty()) throw InputError(file, "malformed mesh: " + errors.firstError());
 
   LevelMesh level;
-  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-    appendAssimpMesh(*scene->mMeshes[m], file, fileUp, metersPerUnit, level);
+  if (scene->mRootNode != nullptr) {
+    appendNode(*scene, *scene->mRootNode, aiMatrix4x4(), file, fileUp, metersPerUnit, level);
   }
   if (level.triangles.empty()) throw InputError(file, "mesh has no triangles");
   return level;

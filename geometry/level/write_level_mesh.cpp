@@ -32,8 +32,9 @@ std::unique_ptr<aiScene> toAssimpScene(const LevelMesh& level, UpAxis fileUp) {
   scene->mMaterials = new aiMaterial*[1]{new aiMaterial()};
   scene->mNumMeshes = static_cast<unsigned>(parts.size());
   scene->mMeshes = new aiMesh*[parts.size()];
-  scene->mRootNode->mNumMeshes = scene->mNumMeshes;
-  scene->mRootNode->mMeshes = new unsigned[parts.size()];
+  // One node per part, named like it: readers (Blender, ours) name objects after nodes.
+  scene->mRootNode->mNumChildren = static_cast<unsigned>(parts.size());
+  scene->mRootNode->mChildren = new aiNode*[parts.size()];
 
   for (std::size_t p = 0; p < parts.size(); ++p) {
     // Each part gets its own compact vertex list, in first-use order.
@@ -63,7 +64,11 @@ std::unique_ptr<aiScene> toAssimpScene(const LevelMesh& level, UpAxis fileUp) {
       mesh->mFaces[t].mIndices = new unsigned[3]{local[tri.x], local[tri.y], local[tri.z]};
     }
     scene->mMeshes[p] = mesh;
-    scene->mRootNode->mMeshes[p] = static_cast<unsigned>(p);
+    auto* node = new aiNode(parts[p].name);
+    node->mParent = scene->mRootNode;
+    node->mNumMeshes = 1;
+    node->mMeshes = new unsigned[1]{static_cast<unsigned>(p)};
+    scene->mRootNode->mChildren[p] = node;
   }
   return scene;
 }

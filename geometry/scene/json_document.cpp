@@ -18,8 +18,7 @@ bool isUtf8Continuation(char byte) { return (static_cast<unsigned char>(byte) & 
 bool isPlainIdentifier(std::string_view key) {
   if (key.empty() || (key[0] >= '0' && key[0] <= '9')) return false;
   return std::all_of(key.begin(), key.end(), [](char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-           c == '_';
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
   });
 }
 
@@ -85,6 +84,8 @@ std::string syntaxProblem(const std::string& what) {
 // as it arrives, so that a problem found during parsing can name it.
 class PathTrackingParser final : public nlohmann::json_sax<Json> {
  public:
+  explicit PathTrackingParser(std::string_view text) : text_(text) {}
+
   Json& document() { return root_; }
   const std::optional<std::string>& problem() const { return problem_; }
 
@@ -119,13 +120,11 @@ class PathTrackingParser final : public nlohmann::json_sax<Json> {
     if (error.id == kNumberOverflow) {
       problem_ = pathOfNextValue() + ": expected a finite number, got " + token;
     } else {
-      problem_ = "invalid JSON at " + lineAndColumn(text_, bytesRead) + ": " +
-                 syntaxProblem(error.what());
+      problem_ =
+          "invalid JSON at " + lineAndColumn(text_, bytesRead) + ": " + syntaxProblem(error.what());
     }
     return false;
   }
-
-  explicit PathTrackingParser(std::string_view text) : text_(text) {}
 
  private:
   struct OpenContainer {
@@ -166,7 +165,7 @@ class PathTrackingParser final : public nlohmann::json_sax<Json> {
   bool open(Json emptyContainer) {
     std::string path = pathOfNextValue();
     Json* container = insert(std::move(emptyContainer));
-    open_.push_back(OpenContainer{container, std::move(path)});
+    open_.push_back(OpenContainer{container, std::move(path), 0, {}});
     return true;
   }
 

@@ -139,8 +139,8 @@ class Layout {
         current += 1;
       }
       if (current + itemText.size() + trailingWidth > limit_ && isContainer(item)) {
-        itemText = prefix + render(item, current + prefix.size(), continuationColumn,
-                                   trailingWidth);
+        itemText =
+            prefix + render(item, current + prefix.size(), continuationColumn, trailingWidth);
       }
       text += itemText;
       current = columnAfter(itemText, current);
@@ -163,8 +163,8 @@ JsonLayoutValue jsonString(std::string_view text) {
 
 JsonLayoutValue jsonInteger(long long value) { return scalar(std::to_string(value)); }
 
-JsonLayoutValue jsonCoordinate(double value) {
-  if (!std::isfinite(value)) return scalar("null");
+double jsonRoundedCoordinate(double value) {
+  if (!std::isfinite(value)) return value;
   double rounded = value;
   if (std::abs(value) < 1e6) {
     // value * 1e9 < 1e15 < 2^53: the rounding is exact integer arithmetic.
@@ -177,7 +177,12 @@ JsonLayoutValue jsonCoordinate(double value) {
         std::to_chars(buffer, buffer + sizeof(buffer), value, std::chars_format::scientific, 14);
     std::from_chars(buffer, printed.ptr, rounded, std::chars_format::scientific);
   }
-  if (rounded == 0.0) rounded = 0.0;  // no "-0.0" from a conversion such as (x, -z, y)
+  return rounded == 0.0 ? 0.0 : rounded;  // no "-0.0" from a conversion such as (x, -z, y)
+}
+
+JsonLayoutValue jsonCoordinate(double value) {
+  if (!std::isfinite(value)) return scalar("null");
+  const double rounded = jsonRoundedCoordinate(value);
   const bool fixedReadsWell = std::abs(rounded) < 1e15;
   return scalar(shortestDecimal(
       rounded, fixedReadsWell ? std::chars_format::fixed : std::chars_format::scientific));

@@ -23,7 +23,7 @@ struct JsonLayoutValue {
   enum class Kind { Scalar, Array, Object };
   Kind kind = Kind::Scalar;
   std::string scalarText;  // Kind::Scalar: the JSON token exactly as it is to be written
-  std::vector<JsonLayoutValue> elements;                          // Kind::Array
+  std::vector<JsonLayoutValue> elements;                         // Kind::Array
   std::vector<std::pair<std::string, JsonLayoutValue>> members;  // Kind::Object, in order
   bool oneItemPerLine = false;
 };
@@ -38,6 +38,7 @@ JsonLayoutValue jsonInteger(long long value);
 // decimal that reads back to it, always with a `.0` or an exponent so it stays a float.
 // Non-finite values become `null` (which no reader of ours accepts: see writeSceneFile).
 JsonLayoutValue jsonCoordinate(double value);
+double jsonRoundedCoordinate(double value);  // the number jsonCoordinate spells
 // A number printed as the shortest decimal that reads back to exactly `value` (no rounding):
 // for scale factors such as meters_per_unit, where 1e-12 is a legitimate value.
 JsonLayoutValue jsonExactNumber(double value);

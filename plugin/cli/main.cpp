@@ -19,6 +19,18 @@ int main(int argc, char** argv) {
   std::vector<cli::Verb> verbs = {cli::addDemoVerb(app), cli::addBuildVerb(app)};
   for (cli::Verb& pending : cli::addPendingVerbs(app)) verbs.push_back(std::move(pending));
 
+  // CLI11 would only say "a subcommand is required"; name what was typed and what exists.
+  std::string known;
+  bool isVerb = false;
+  for (const cli::Verb& verb : verbs) {
+    known += (known.empty() ? "" : ", ") + verb.command->get_name();
+    isVerb = isVerb || (argc > 1 && verb.command->get_name() == argv[1]);
+  }
+  if (argc > 1 && argv[1][0] != '-' && !isVerb) {
+    std::cerr << "probeproxy: unknown verb '" << argv[1] << "' (verbs: " << known << ")\n";
+    return kExitBadInput;
+  }
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -17,6 +17,7 @@ def _script_args():
 
 
 def _run():
+    sys.dont_write_bytecode = True  # no __pycache__ in the source tree
     sys.path.insert(0, str(Path(__file__).resolve().parent))
     from suite import cli
 

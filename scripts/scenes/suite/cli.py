@@ -8,7 +8,6 @@ import argparse
 import importlib
 import json
 import shutil
-import sys
 import time
 from pathlib import Path
 

@@ -5,9 +5,8 @@ camera looking along `forward` with `up` at the top, so right = forward x up.
 """
 
 import math
-from contextlib import contextmanager
 
-from . import materials, render
+from . import render
 
 #         name  forward           up                right
 FACES = (
@@ -18,10 +17,6 @@ FACES = (
     ("pz", (0.0, 0.0, 1.0), (0.0, 1.0, 0.0), (-1.0, 0.0, 0.0)),
     ("nz", (0.0, 0.0, -1.0), (0.0, -1.0, 0.0), (-1.0, 0.0, 0.0)),
 )
-
-# The smallest pixel filter Cycles accepts: samples land within 0.005 px of the texel centre,
-# so a position texel is the surface point the C++ ray caster finds for that centre.
-POSITION_FILTER_WIDTH = 0.01
 
 
 def _check_table():
@@ -39,16 +34,3 @@ def render_cube(scene, cam, capture, pattern_path, size, samples, filter_width):
         render.place_camera(cam, capture, right, up, forward, math.pi / 2.0)
         path = pattern_path.parent / pattern_path.name.replace("{face}", name)
         render.render_exr(scene, path, size, size, samples, filter_width)
-
-
-@contextmanager
-def position_override(scene):
-    """Every surface emits its world position and the sky is black, so sky texels read 0."""
-    layer = scene.view_layers[0]
-    layer.material_override = materials.world_position()
-    materials.set_sky_strength(scene, 0.0)
-    try:
-        yield
-    finally:
-        layer.material_override = None
-        materials.set_sky_strength(scene, 1.0)

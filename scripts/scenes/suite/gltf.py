@@ -2,10 +2,19 @@
 
 import bpy
 
+from .render import quiet_stdout
+
 
 def export_level(path):
     # Geometry only: materials are Cycles node graphs the runtime would not understand, and
     # the cubemaps already carry the colours.
+    with quiet_stdout():
+        _export(path)
+    if not path.is_file() or path.stat().st_size == 0:
+        raise RuntimeError(f"the glTF exporter wrote nothing to {path}")
+
+
+def _export(path):
     bpy.ops.export_scene.gltf(
         filepath=str(path),
         export_format="GLB",
@@ -25,5 +34,3 @@ def export_level(path):
         use_active_collection=False,
         check_existing=False,
     )
-    if not path.is_file() or path.stat().st_size == 0:
-        raise RuntimeError(f"the glTF exporter wrote nothing to {path}")

@@ -39,10 +39,10 @@ def generate(name, module, out_dir, args):
         cube.render_cube(scene, cam, probe.capture, out_dir / spec.cubemap_pattern(probe.name),
                          args.size, args.samples, COLOR_FILTER_WIDTH)
         files += 6
-    with cube.position_override(scene):
+    with materials.position_override(scene):
         for probe in level.probes:
             cube.render_cube(scene, cam, probe.capture, out_dir / spec.position_pattern(probe.name),
-                             args.size, 1, cube.POSITION_FILTER_WIDTH)
+                             args.size, 1, materials.POSITION_FILTER_WIDTH)
             files += 6
 
     views_dir = out_dir / "mirror_views"
@@ -55,6 +55,10 @@ def generate(name, module, out_dir, args):
                                         views_dir, width, height, args.view_samples, COLOR_FILTER_WIDTH)
         scene_json.write(views_dir / f"{view.name}.json", data)
         files += 2
+    with materials.position_override(scene):
+        for view in level.views:
+            mirror_views.render_position(scene, cam, view, level.probe(view.probe), views_dir, width, height)
+            files += 1
 
     scene_json.write(out_dir / f"{name}.scene.json", scene_json.scene([glb.name], level.probes))
     return files + 1

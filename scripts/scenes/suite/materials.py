@@ -7,6 +7,7 @@ reflection visible even inside one wall.
 """
 
 import colorsys
+from contextlib import contextmanager
 
 import bpy
 
@@ -94,3 +95,21 @@ def set_sky_strength(scene, strength):
 def assign(obj, mat):
     obj.data.materials.clear()
     obj.data.materials.append(mat)
+
+
+# The smallest pixel filter Cycles accepts: samples land within 0.005 px of the texel centre,
+# so a position texel is the surface point the C++ ray caster finds for that centre.
+POSITION_FILTER_WIDTH = 0.01
+
+
+@contextmanager
+def position_override(scene):
+    """Every surface emits its world position and the sky is black, so sky texels read 0."""
+    layer = scene.view_layers[0]
+    layer.material_override = world_position()
+    set_sky_strength(scene, 0.0)
+    try:
+        yield
+    finally:
+        layer.material_override = None
+        set_sky_strength(scene, 1.0)

@@ -28,11 +28,15 @@ def mirrored(objects, mirror):
                 obj.data.materials.append(m)
 
 
-def render_view(scene, cam, view, probe, floors, mirror, out_dir, width, height, samples, filter_width):
+def _place(cam, view, probe):
     position = view.position(probe.floor_z)
     forward, up = view.forward(), view.up()
-    right = _cross(forward, up)
-    render.place_camera(cam, position, right, up, forward, math.radians(view.fov_x_deg))
+    render.place_camera(cam, position, _cross(forward, up), up, forward, math.radians(view.fov_x_deg))
+    return position, forward, up
+
+
+def render_view(scene, cam, view, probe, floors, mirror, out_dir, width, height, samples, filter_width):
+    position, forward, up = _place(cam, view, probe)
     image = out_dir / f"{view.name}.exr"
     with mirrored(floors, mirror):
         render.render_exr(scene, image, width, height, samples, filter_width)
@@ -48,3 +52,10 @@ def render_view(scene, cam, view, probe, floors, mirror, out_dir, width, height,
         "fov_x_deg": view.fov_x_deg,
         "mirror_plane": {"point": [position[0], position[1], probe.floor_z], "normal": [0.0, 0.0, 1.0]},
     }
+
+
+def render_position(scene, cam, view, probe, out_dir, width, height):
+    """The same camera's first hits (floor not mirrored), to prove the camera model: run
+    under materials.position_override."""
+    _place(cam, view, probe)
+    render.render_exr(scene, out_dir / f"{view.name}_position.exr", width, height, 1, materials.POSITION_FILTER_WIDTH)

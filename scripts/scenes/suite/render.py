@@ -6,6 +6,7 @@ no stamp metadata (it carries the date and render time, which would make runs di
 """
 
 import os
+import sys
 from contextlib import contextmanager
 
 import bpy
@@ -104,7 +105,7 @@ def render_exr(scene, path, width, height, samples, filter_width):
     scene.cycles.filter_width = filter_width
     scene.render.filepath = str(path)
     scene.render.use_file_extension = False
-    with _quiet_stdout():
+    with quiet_stdout():
         bpy.ops.render.render(write_still=True)
     if not path.is_file() or path.stat().st_size == 0:
         raise RuntimeError(f"Cycles wrote no image to {path}")
@@ -112,11 +113,10 @@ def render_exr(scene, path, width, height, samples, filter_width):
 
 
 @contextmanager
-def _quiet_stdout():
-    """Cycles prints a dozen progress lines per render on the C stdout; hundreds of renders
-    would bury the suite's own messages and errors (which go to stderr) in a CTest log."""
-    import sys
-
+def quiet_stdout():
+    """Cycles prints a dozen progress lines per render (and the glTF exporter one per object)
+    on stdout; hundreds of renders would bury the suite's own messages in a CTest log.
+    Failures still surface: they raise, and the traceback goes to stderr."""
     sys.stdout.flush()
     saved = os.dup(1)
     devnull = os.open(os.devnull, os.O_WRONLY)

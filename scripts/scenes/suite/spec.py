@@ -50,6 +50,9 @@ class BoxInfluence:
     def contains(self, p):
         return Box(self.center, self.half_extents).contains(p)
 
+    def inner_fits(self):
+        return all(0.0 < i <= o for i, o in zip(self.inner_half_extents, self.half_extents))
+
 
 @dataclass(frozen=True)
 class SphereInfluence:
@@ -59,6 +62,9 @@ class SphereInfluence:
 
     def contains(self, p):
         return math.dist(p, self.center) <= self.radius
+
+    def inner_fits(self):
+        return 0.0 < self.inner_radius <= self.radius
 
 
 @dataclass(frozen=True)
@@ -116,6 +122,8 @@ class LevelSpec:
         if not names or len(set(names)) != len(names):
             raise ValueError(f"{level}: probe names must be non-empty and unique: {names}")
         for p in self.probes:
+            if not p.influence.inner_fits():
+                raise ValueError(f"{level}: probe {p.name}'s inner influence range exceeds the outer one")
             if not p.influence.contains(p.capture):
                 raise ValueError(f"{level}: probe {p.name} captures outside its influence volume")
             if not p.proxy.contains(p.capture, margin=1e-6):

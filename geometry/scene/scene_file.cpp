@@ -1,0 +1,837 @@
+#include "geometry/scene/scene_file.h"
+
+#include "core/errors/input_error.h"
+#include "core/io/atomic_write.h"
+#include "geometry/scene/json_document.h"
+#include "geometry/scene/json_layout.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <initializer_list>
+#include <map>
+#include <memory>
+#include <optional>
+#include <system_error>
+#include <utility>
+
+namespace probeproxy {
+
+namespace {
+
+using Json = nlohmann::json;
+namespace fs = std::filesystem;
+
+constexpr int kFormatVersion = 1;
+constexpr double kUnitQuaternionTolerance = 1e-3;  // how far from length 1 a typed-in
+                                                   // quaternion may be before we refuse it
+constexpr char kMeshExtensionsText[] = ".glb, .gltf, .obj, .ply or .off";
+constexpr char kFacePlaceholder[] = "{face}";
+
+// ------------------------------------------------------------------------------------------
+// The file's frame. Everything below converts between it and the world frame (Z up, metres).
+
+struct FileFrame {
+  UpAxis up = UpAxis::Z;
+  double metersPerUnit = 1.0;
+};
+
+glm::dvec3 worldPointFromFile(const glm::dvec3& pointInFile, const FileFrame& frame) {
+  const glm::dvec3 scaled = pointInFile * frame.metersPerUnit;
+  return frame.up == UpAxis::Y ? zUpFromYUp(scaled) : scaled;
+}
+
+glm::dvec3 filePointFromWorld(const glm::dvec3& pointMeters, const FileFrame& frame) {
+  const glm::dvec3 inFileAxes = frame.up == UpAxis::Y ? yUpFromZUp(pointMeters) : pointMeters;
+  return inFileAxes / frame.metersPerUnit;
+}
+
+// Unit directions (plane normals): axes only, never scaled.
+glm::dvec3 worldDirectionFromFile(const glm::dvec3& directionInFile, const FileFrame& frame) {
+  return frame.up == UpAxis::Y ? zUpFromYUp(directionInFile) : directionInFile;
+}
+
+glm::dvec3 fileDirectionFromWorld(const glm::dvec3& directionWorld, const FileFrame& frame) {
+  return frame.up == UpAxis::Y ? yUpFromZUp(directionWorld) : directionWorld;
+}
+
+// Rotations taking a box's own frame to the file's frame convert by conjugation
+// (world_frame.h), which turns the box's own frame along with the file's: an axis-aligned
+// box keeps the identity rotation.
+glm::dquat worldRotationFromFile(const glm::dquat& rotationInFile, const FileFrame& frame) {
+  return frame.up == UpAxis::Y ? zUpFromYUp(rotationInFile) : rotationInFile;
+}
+
+glm::dquat fileRotationFromWorld(const glm::dquat& rotationWorld, const FileFrame& frame) {
+  return frame.up == UpAxis::Y ? yUpFromZUp(rotationWorld) : rotationWorld;
+}
+
+// Half-extents lie along the box's own axes, and conjugating its rotation turned those too:
+// a Y-up box's own y axis (its height) is its own z axis in the world. So Y-up half-extents
+// (x, y, z) are (x, z, y) in the world, the absolute value of the converted vector: "scale
+// only" would give a Y-up box of height 2 and depth 3 a world height of 3.
+glm::dvec3 worldHalfExtentsFromFile(const glm::dvec3& halfExtentsInFile, const FileFrame& frame) {
+  const glm::dvec3 scaled = halfExtentsInFile * frame.metersPerUnit;
+  return frame.up == UpAxis::Y ? glm::dvec3(scaled.x, scaled.z, scaled.y) : scaled;
+}
+
+glm::dvec3 fileHalfExtentsFromWorld(const glm::dvec3& halfExtentsMeters, const FileFrame& frame) {
+  const glm::dvec3& h = halfExtentsMeters;
+  const glm::dvec3 inFileAxes = frame.up == UpAxis::Y ? glm::dvec3(h.x, h.z, h.y) : h;
+  return inFileAxes / frame.metersPerUnit;
+}
+
+double worldLengthFromFile(double lengthInFile, const FileFrame& frame) {
+  return lengthInFile * frame.metersPerUnit;
+}
+
+double fileLengthFromWorld(double lengthMeters, const FileFrame& frame) {
+  return lengthMeters / frame.metersPerUnit;
+}
+
+// ------------------------------------------------------------------------------------------
+// Shared by reading and writing.
+
+std::string lowercase(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
+bool hasMeshExtension(const fs::path& mesh) {
+  const std::string extension = lowercase(mesh.extension().string());
+  return extension == ".glb" || extension == ".gltf" || extension == ".obj" ||
+         extension == ".ply" || extension == ".off";
+}
+
+// The glTF 2.0 specification fixes +Y up, and Blender's exporter converts to it; other
+// formats carry no up axis, so they are taken to be in the scene's frame.
+UpAxis defaultMeshUp(const fs::path& mesh, UpAxis sceneUp) {
+  const std::string extension = lowercase(mesh.extension().string());
+  return extension == ".glb" || extension == ".gltf" ? UpAxis::Y : sceneUp;
+}
+
+// Divides by the largest component first, so that 1e200-sized input does not overflow the
+// length. Reading and the writer's stability check must normalize the same way.
+template <std::size_t N>
+std::array<double, N> normalized(std::array<double, N> v) {
+  double largest = 0.0;
+  for (double c : v) largest = std::max(largest, std::abs(c));
+  double squaredLength = 0.0;
+  for (double& c : v) {
+    c /= largest;
+    squaredLength += c * c;
+  }
+  const double length = std::sqrt(squaredLength);
+  for (double& c : v) c /= length;
+  return v;
+}
+
+template <std::size_t N>
+double lengthOf(const std::array<double, N>& v) {
+  double squaredLength = 0.0;
+  for (double c : v) squaredLength += c * c;
+  return std::sqrt(squaredLength);
+}
+
+std::array<double, 4> wxyz(const glm::dquat& q) { return {q.w, q.x, q.y, q.z}; }
+
+glm::dquat quaternionFromWxyz(const std::array<double, 4>& c) {
+  glm::dquat q;  // members, not the constructor: its argument order depends on GLM's config
+  q.w = c[0];
+  q.x = c[1];
+  q.y = c[2];
+  q.z = c[3];
+  return q;
+}
+
+// ------------------------------------------------------------------------------------------
+// Reading. Each function checks one value and throws JsonProblem("<path>: ...") for the first
+// thing wrong; parseSceneFile turns that into an InputError naming the file.
+
+[[noreturn]] void fail(const std::string& path, const std::string& problem) {
+  throw JsonProblem(path + ": " + problem);
+}
+
+[[noreturn]] void failExpected(const std::string& path, const std::string& expected,
+                               const Json& got) {
+  fail(path, "expected " + expected + ", got " + describeJson(got));
+}
+
+std::string quoted(std::string_view text) { return "\"" + std::string(text) + "\""; }
+
+void requireObject(const Json& value, const std::string& path) {
+  if (!value.is_object()) failExpected(path, "an object", value);
+}
+
+const Json& requiredMember(const Json& object, const std::string& path, const char* name) {
+  const auto member = object.find(name);
+  if (member == object.end()) fail(path, "expected member " + quoted(name));
+  return *member;
+}
+
+const Json* optionalMember(const Json& object, const char* name) {
+  const auto member = object.find(name);
+  return member == object.end() ? nullptr : &*member;
+}
+
+// Levenshtein distance, ignoring case: `Capture` and `captur` are typos of `capture`.
+std::size_t editDistance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> previous(b.size() + 1), current(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) previous[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    current[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) ==
+                        std::tolower(static_cast<unsigned char>(b[j - 1]));
+      current[j] = std::min({previous[j] + 1, current[j - 1] + 1, previous[j - 1] + !same});
+    }
+    std::swap(previous, current);
+  }
+  return previous[b.size()];
+}
+
+std::optional<std::string_view> closestName(std::string_view typed,
+                                            std::initializer_list<std::string_view> known) {
+  std::optional<std::string_view> best;
+  std::size_t bestDistance = 0;
+  for (std::string_view name : known) {
+    const std::size_t distance = editDistance(typed, name);
+    // Short names are close to everything; allow about a third of the name to be wrong.
+    const std::size_t allowed = name.size() <= 3 ? 1 : std::max<std::size_t>(2, name.size() / 3);
+    if (distance <= allowed && (!best || distance < bestDistance)) {
+      best = name;
+      bestDistance = distance;
+    }
+  }
+  return best;
+}
+
+void rejectUnknownMembers(const Json& object, const std::string& path,
+                          std::initializer_list<std::string_view> known) {
+  for (const auto& [name, value] : object.items()) {
+    if (std::find(known.begin(), known.end(), name) != known.end()) continue;
+    std::string hint;
+    if (const auto suggestion = closestName(name, known)) {
+      hint = "did you mean " + quoted(*suggestion) + "?";
+    } else {
+      hint = "expected one of";
+      for (std::string_view option : known) {
+        hint += (option == *known.begin() ? " " : ", ") + quoted(option);
+      }
+    }
+    fail(jsonMemberPath(path, name), "unknown member (" + hint + ")");
+  }
+}
+
+void checkVersion(const Json& root) {
+  const Json& version = requiredMember(root, "$", "probeproxy_scene");
+  if (!version.is_number() || version.get<double>() != kFormatVersion) {
+    failExpected("$.probeproxy_scene", std::to_string(kFormatVersion), version);
+  }
+}
+
+UpAxis upAxis(const Json& value, const std::string& path) {
+  if (value == "Y") return UpAxis::Y;
+  if (value == "Z") return UpAxis::Z;
+  failExpected(path, "\"Y\" or \"Z\"", value);
+}
+
+bool isFiniteNumber(const Json& value) {
+  return value.is_number() && std::isfinite(value.get<double>());
+}
+
+double positiveNumber(const Json& value, const std::string& path) {
+  if (!isFiniteNumber(value) || !(value.get<double>() > 0.0)) {
+    failExpected(path, "a positive number", value);
+  }
+  return value.get<double>();
+}
+
+template <std::size_t N>
+std::optional<std::array<double, N>> finiteNumbers(const Json& value) {
+  if (!value.is_array() || value.size() != N) return std::nullopt;
+  std::array<double, N> numbers;
+  for (std::size_t i = 0; i < N; ++i) {
+    if (!isFiniteNumber(value[i])) return std::nullopt;
+    numbers[i] = value[i].get<double>();
+  }
+  return numbers;
+}
+
+glm::dvec3 toVec3(const std::array<double, 3>& c) { return {c[0], c[1], c[2]}; }
+
+glm::dvec3 finiteVec3(const Json& value, const std::string& path) {
+  const auto numbers = finiteNumbers<3>(value);
+  if (!numbers) failExpected(path, "an array of 3 finite numbers", value);
+  return toVec3(*numbers);
+}
+
+bool allPositive(const std::array<double, 3>& numbers) {
+  return std::all_of(numbers.begin(), numbers.end(), [](double c) { return c > 0.0; });
+}
+
+glm::dvec3 positiveVec3(const Json& value, const std::string& path) {
+  const auto numbers = finiteNumbers<3>(value);
+  if (!numbers || !allPositive(*numbers)) {
+    failExpected(path, "an array of 3 positive numbers", value);
+  }
+  return toVec3(*numbers);
+}
+
+glm::dvec3 unitDirection(const Json& value, const std::string& path) {
+  const auto numbers = finiteNumbers<3>(value);
+  const auto isZero = [](const std::array<double, 3>& c) {
+    return c[0] == 0.0 && c[1] == 0.0 && c[2] == 0.0;
+  };
+  if (!numbers || isZero(*numbers)) {
+    failExpected(path, "a non-zero direction (an array of 3 finite numbers)", value);
+  }
+  return toVec3(normalized(*numbers));
+}
+
+glm::dquat unitQuaternion(const Json& value, const std::string& path) {
+  const auto numbers = finiteNumbers<4>(value);
+  if (!numbers || !(std::abs(lengthOf(*numbers) - 1.0) <= kUnitQuaternionTolerance)) {
+    failExpected(path, "a unit quaternion [w, x, y, z] (length within 1e-3 of 1)", value);
+  }
+  return quaternionFromWxyz(normalized(*numbers));
+}
+
+std::string nonEmptyString(const Json& value, const std::string& path) {
+  if (!value.is_string() || value.get_ref<const std::string&>().empty()) {
+    failExpected(path, "a non-empty string", value);
+  }
+  return value.get<std::string>();
+}
+
+fs::path meshPathAsWritten(const Json& value, const std::string& path) {
+  if (!value.is_string() || !hasMeshExtension(value.get<std::string>())) {
+    failExpected(path, std::string("a mesh path ending in ") + kMeshExtensionsText, value);
+  }
+  return fs::path(value.get<std::string>());
+}
+
+fs::path resolvedAgainst(const fs::path& pathAsWritten, const fs::path& folder) {
+  if (pathAsWritten.is_absolute()) return pathAsWritten.lexically_normal();
+  return (folder / pathAsWritten).lexically_normal();
+}
+
+// Members holding positions and sizes, read straight into metres. A number that is finite in
+// file units can still overflow once scaled (a meters_per_unit of 1e300); the world may not.
+bool isFinite(const glm::dvec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+[[noreturn]] void failOverflow(const std::string& path, const Json& value) {
+  failExpected(path, "numbers that stay finite in metres", value);
+}
+
+glm::dvec3 pointMember(const Json& object, const std::string& path, const char* name,
+                       const FileFrame& frame) {
+  const std::string memberPath = jsonMemberPath(path, name);
+  const Json& value = requiredMember(object, path, name);
+  const glm::dvec3 meters = worldPointFromFile(finiteVec3(value, memberPath), frame);
+  if (!isFinite(meters)) failOverflow(memberPath, value);
+  return meters;
+}
+
+glm::dvec3 halfExtentsMember(const Json& object, const std::string& path, const char* name,
+                             const FileFrame& frame) {
+  const std::string memberPath = jsonMemberPath(path, name);
+  const Json& value = requiredMember(object, path, name);
+  const glm::dvec3 meters = worldHalfExtentsFromFile(positiveVec3(value, memberPath), frame);
+  if (!isFinite(meters)) failOverflow(memberPath, value);
+  return meters;
+}
+
+double lengthMember(const Json& object, const std::string& path, const char* name,
+                    const FileFrame& frame) {
+  const std::string memberPath = jsonMemberPath(path, name);
+  const Json& value = requiredMember(object, path, name);
+  const double meters = worldLengthFromFile(positiveNumber(value, memberPath), frame);
+  if (!std::isfinite(meters)) failOverflow(memberPath, value);
+  return meters;
+}
+
+// `kind` selects the member set; it must be one of `kinds`.
+std::string kindOf(const Json& object, const std::string& path,
+                   std::initializer_list<std::string_view> kinds, const std::string& expectedText) {
+  const Json& kind = requiredMember(object, path, "kind");
+  if (kind.is_string()) {
+    const std::string& name = kind.get_ref<const std::string&>();
+    if (std::find(kinds.begin(), kinds.end(), name) != kinds.end()) return name;
+  }
+  failExpected(jsonMemberPath(path, "kind"), expectedText, kind);
+}
+
+LevelMeshRef readLevelMesh(const Json& value, const std::string& path, UpAxis sceneUp,
+                           const fs::path& folder) {
+  LevelMeshRef mesh;
+  if (value.is_string()) {  // "corridor.glb" is short for {"mesh": "corridor.glb"}
+    mesh.pathAsWritten = meshPathAsWritten(value, path);
+  } else if (value.is_object()) {
+    rejectUnknownMembers(value, path, {"mesh", "up"});
+    mesh.pathAsWritten =
+        meshPathAsWritten(requiredMember(value, path, "mesh"), jsonMemberPath(path, "mesh"));
+    if (const Json* up = optionalMember(value, "up")) {
+      mesh.up = upAxis(*up, jsonMemberPath(path, "up"));
+      mesh.upWasExplicit = true;
+    }
+  } else {
+    failExpected(path, "a mesh path or an object with \"mesh\"", value);
+  }
+  mesh.path = resolvedAgainst(mesh.pathAsWritten, folder);
+  if (!mesh.upWasExplicit) mesh.up = defaultMeshUp(mesh.pathAsWritten, sceneUp);
+  return mesh;
+}
+
+std::vector<LevelMeshRef> readLevel(const Json& value, const std::string& path, UpAxis sceneUp,
+                                    const fs::path& folder) {
+  if (!value.is_array() || value.empty()) failExpected(path, "a non-empty array of meshes", value);
+  std::vector<LevelMeshRef> level;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    level.push_back(readLevelMesh(value[i], jsonIndexPath(path, i), sceneUp, folder));
+  }
+  return level;
+}
+
+BoxInfluence readBoxInfluence(const Json& value, const std::string& path, const FileFrame& frame) {
+  rejectUnknownMembers(value, path,
+                       {"kind", "center", "half_extents", "rotation", "inner_half_extents"});
+  BoxInfluence box;
+  box.centerMeters = pointMember(value, path, "center", frame);
+  box.halfExtentsMeters = halfExtentsMember(value, path, "half_extents", frame);
+  const Json& halfExtentsJson = value.at("half_extents");  // checked by halfExtentsMember
+  const glm::dvec3 halfExtentsInFile = toVec3(*finiteNumbers<3>(halfExtentsJson));
+  glm::dquat boxToFile(1, 0, 0, 0);
+  if (const Json* rotation = optionalMember(value, "rotation")) {
+    boxToFile = unitQuaternion(*rotation, jsonMemberPath(path, "rotation"));
+  }
+  box.worldFromBox = worldRotationFromFile(boxToFile, frame);
+  box.innerHalfExtentsMeters = box.halfExtentsMeters;  // no fade unless the file says so
+  if (const Json* inner = optionalMember(value, "inner_half_extents")) {
+    const auto numbers = finiteNumbers<3>(*inner);
+    const auto withinOuter = [&](const std::array<double, 3>& c) {
+      return c[0] <= halfExtentsInFile.x && c[1] <= halfExtentsInFile.y &&
+             c[2] <= halfExtentsInFile.z;
+    };
+    if (!numbers || !allPositive(*numbers) || !withinOuter(*numbers)) {
+      failExpected(jsonMemberPath(path, "inner_half_extents"),
+                   "an array of 3 positive numbers, each at most half_extents " +
+                       describeJson(halfExtentsJson),
+                   *inner);
+    }
+    box.innerHalfExtentsMeters = worldHalfExtentsFromFile(toVec3(*numbers), frame);
+  }
+  return box;
+}
+
+SphereInfluence readSphereInfluence(const Json& value, const std::string& path,
+                                    const FileFrame& frame) {
+  rejectUnknownMembers(value, path, {"kind", "center", "radius", "inner_radius"});
+  SphereInfluence sphere;
+  sphere.centerMeters = pointMember(value, path, "center", frame);
+  sphere.radiusMeters = lengthMember(value, path, "radius", frame);
+  sphere.innerRadiusMeters = sphere.radiusMeters;
+  if (const Json* inner = optionalMember(value, "inner_radius")) {
+    const Json& radiusJson = value.at("radius");
+    if (!isFiniteNumber(*inner) || !(inner->get<double>() > 0.0) ||
+        inner->get<double>() > radiusJson.get<double>()) {
+      failExpected(jsonMemberPath(path, "inner_radius"),
+                   "a positive number at most radius " + describeJson(radiusJson), *inner);
+    }
+    sphere.innerRadiusMeters = worldLengthFromFile(inner->get<double>(), frame);
+  }
+  return sphere;
+}
+
+InfluenceVolume readInfluence(const Json& value, const std::string& path, const FileFrame& frame) {
+  requireObject(value, path);
+  const std::string kind = kindOf(value, path, {"box", "sphere"}, "\"box\" or \"sphere\"");
+  if (kind == "box") return readBoxInfluence(value, path, frame);
+  return readSphereInfluence(value, path, frame);
+}
+
+ProxySpec readProxy(const Json& value, const std::string& path, const FileFrame& frame,
+                    const fs::path& folder) {
+  if (value == "auto") return AutoProxy{};
+  if (value == "infinite") return InfiniteProxy{};
+  if (!value.is_object()) failExpected(path, "\"auto\", \"infinite\" or an object", value);
+
+  const std::string kind = kindOf(value, path, {"box", "obb", "sphere", "convex"},
+                                  "\"box\", \"obb\", \"sphere\" or \"convex\"");
+  if (kind == "box") {
+    rejectUnknownMembers(value, path, {"kind", "center", "half_extents"});
+    return AuthoredBox{pointMember(value, path, "center", frame),
+                       halfExtentsMember(value, path, "half_extents", frame)};
+  }
+  if (kind == "obb") {
+    rejectUnknownMembers(value, path, {"kind", "center", "half_extents", "rotation"});
+    AuthoredObb obb{pointMember(value, path, "center", frame),
+                    halfExtentsMember(value, path, "half_extents", frame)};
+    obb.worldFromBox = worldRotationFromFile(
+        unitQuaternion(requiredMember(value, path, "rotation"), jsonMemberPath(path, "rotation")),
+        frame);
+    return obb;
+  }
+  if (kind == "sphere") {
+    rejectUnknownMembers(value, path, {"kind", "center", "radius"});
+    return AuthoredSphere{pointMember(value, path, "center", frame),
+                          lengthMember(value, path, "radius", frame)};
+  }
+  rejectUnknownMembers(value, path, {"kind", "mesh"});
+  AuthoredConvexMesh convex;
+  convex.meshAsWritten =
+      meshPathAsWritten(requiredMember(value, path, "mesh"), jsonMemberPath(path, "mesh"));
+  convex.mesh = resolvedAgainst(convex.meshAsWritten, folder);
+  return convex;
+}
+
+std::string cubemapPattern(const Json& value, const std::string& path) {
+  if (!value.is_string() ||
+      value.get_ref<const std::string&>().find(kFacePlaceholder) == std::string::npos) {
+    failExpected(path, std::string("a path containing ") + kFacePlaceholder, value);
+  }
+  return value.get<std::string>();
+}
+
+std::vector<ReflectionPlane> readReflectionPlanes(const Json& value, const std::string& path,
+                                                  const FileFrame& frame) {
+  if (!value.is_array()) failExpected(path, "an array of planes", value);
+  std::vector<ReflectionPlane> planes;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    const std::string planePath = jsonIndexPath(path, i);
+    const Json& planeJson = value[i];
+    requireObject(planeJson, planePath);
+    rejectUnknownMembers(planeJson, planePath, {"point", "normal"});
+    ReflectionPlane plane;
+    plane.pointMeters = pointMember(planeJson, planePath, "point", frame);
+    plane.normal =
+        worldDirectionFromFile(unitDirection(requiredMember(planeJson, planePath, "normal"),
+                                             jsonMemberPath(planePath, "normal")),
+                               frame);
+    planes.push_back(plane);
+  }
+  return planes;
+}
+
+Probe readProbe(const Json& value, const std::string& path, const FileFrame& frame,
+                const fs::path& folder) {
+  requireObject(value, path);
+  rejectUnknownMembers(value, path,
+                       {"name", "capture", "influence", "proxy", "cubemap", "reflection_planes"});
+  Probe probe;
+  probe.name = nonEmptyString(requiredMember(value, path, "name"), jsonMemberPath(path, "name"));
+  probe.captureMeters = pointMember(value, path, "capture", frame);
+  probe.influence = readInfluence(requiredMember(value, path, "influence"),
+                                  jsonMemberPath(path, "influence"), frame);
+  probe.proxy =
+      readProxy(requiredMember(value, path, "proxy"), jsonMemberPath(path, "proxy"), frame, folder);
+  if (const Json* cubemap = optionalMember(value, "cubemap")) {
+    probe.cubemap = cubemapPattern(*cubemap, jsonMemberPath(path, "cubemap"));
+  }
+  if (const Json* planes = optionalMember(value, "reflection_planes")) {
+    probe.reflectionPlanes =
+        readReflectionPlanes(*planes, jsonMemberPath(path, "reflection_planes"), frame);
+  }
+  return probe;
+}
+
+std::vector<Probe> readProbes(const Json& value, const std::string& path, const FileFrame& frame,
+                              const fs::path& folder) {
+  if (!value.is_array()) failExpected(path, "an array of probes", value);
+  std::vector<Probe> probes;
+  std::map<std::string, std::size_t> indexByName;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    const std::string probePath = jsonIndexPath(path, i);
+    probes.push_back(readProbe(value[i], probePath, frame, folder));
+    const auto [first, isNew] = indexByName.emplace(probes.back().name, i);
+    if (!isNew) {
+      fail(jsonMemberPath(probePath, "name"), describeJson(Json(probes.back().name)) +
+                                                  " is used by " +
+                                                  jsonIndexPath(path, first->second) + " already");
+    }
+  }
+  return probes;
+}
+
+Scene sceneFromDocument(const Json& root, const fs::path& absoluteFile) {
+  requireObject(root, "$");
+  // The version first: a newer file may well have members this reader does not know.
+  checkVersion(root);
+  rejectUnknownMembers(root, "$", {"probeproxy_scene", "up", "meters_per_unit", "level", "probes"});
+  Scene scene;
+  scene.file = absoluteFile;
+  scene.fileUp = upAxis(requiredMember(root, "$", "up"), "$.up");
+  if (const Json* metersPerUnit = optionalMember(root, "meters_per_unit")) {
+    scene.metersPerUnit = positiveNumber(*metersPerUnit, "$.meters_per_unit");
+  }
+  const FileFrame frame{scene.fileUp, scene.metersPerUnit};
+  const fs::path folder = absoluteFile.parent_path();
+  scene.level = readLevel(requiredMember(root, "$", "level"), "$.level", scene.fileUp, folder);
+  scene.probes = readProbes(requiredMember(root, "$", "probes"), "$.probes", frame, folder);
+  return scene;
+}
+
+struct FileCloser {
+  void operator()(std::FILE* stream) const { std::fclose(stream); }
+};
+
+std::string readWholeFile(const fs::path& file) {
+  const std::unique_ptr<std::FILE, FileCloser> stream(std::fopen(file.c_str(), "rb"));
+  if (!stream) {
+    throw InputError(file, "cannot open: " + std::generic_category().message(errno));
+  }
+  std::string bytes;
+  char buffer[1 << 16];
+  std::size_t count;
+  while ((count = std::fread(buffer, 1, sizeof(buffer), stream.get())) > 0) {
+    bytes.append(buffer, count);
+  }
+  if (std::ferror(stream.get())) {  // e.g. a folder: fopen succeeds, reading does not
+    throw InputError(file, "cannot read: " + std::generic_category().message(errno));
+  }
+  return bytes;
+}
+
+// ------------------------------------------------------------------------------------------
+// Writing.
+
+using Members = std::vector<std::pair<std::string, JsonLayoutValue>>;
+
+JsonLayoutValue numbersJson(std::initializer_list<double> numbers) {
+  std::vector<JsonLayoutValue> elements;
+  for (double number : numbers) elements.push_back(jsonCoordinate(number));
+  return jsonArray(std::move(elements));
+}
+
+JsonLayoutValue vec3Json(const glm::dvec3& v) { return numbersJson({v.x, v.y, v.z}); }
+
+template <std::size_t N>
+std::array<double, N> roundedForJson(const std::array<double, N>& v) {
+  std::array<double, N> rounded;
+  for (std::size_t i = 0; i < N; ++i) rounded[i] = jsonRoundedCoordinate(v[i]);
+  return rounded;
+}
+
+// The reader normalizes unit vectors and quaternions. Rounding them to the written precision
+// moves their length off 1 by up to ~1e-9, enough for the re-normalized numbers to round
+// differently next time; so settle on a rounding that normalizes back to itself, and
+// writing, reading and writing again gives the same bytes.
+template <std::size_t N>
+std::array<double, N> stableUnitForJson(const std::array<double, N>& unit) {
+  std::array<double, N> rounded = roundedForJson(unit);
+  for (int attempt = 0; attempt < 8; ++attempt) {
+    const std::array<double, N> again = roundedForJson(normalized(rounded));
+    if (again == rounded) break;
+    rounded = again;
+  }
+  return rounded;
+}
+
+JsonLayoutValue rotationJson(const glm::dquat& rotationInFile) {
+  std::array<double, 4> c = wxyz(rotationInFile);
+  // Only a unit quaternion is settled; anything else is written as it is, for the
+  // read-back check to report.
+  if (std::abs(lengthOf(c) - 1.0) <= kUnitQuaternionTolerance) c = stableUnitForJson(c);
+  return numbersJson({c[0], c[1], c[2], c[3]});
+}
+
+JsonLayoutValue directionJson(const glm::dvec3& directionInFile) {
+  std::array<double, 3> c = {directionInFile.x, directionInFile.y, directionInFile.z};
+  if (lengthOf(c) > 0.0 && std::isfinite(lengthOf(c))) c = stableUnitForJson(c);
+  return numbersJson({c[0], c[1], c[2]});
+}
+
+bool sameText(const JsonLayoutValue& a, const JsonLayoutValue& b) {
+  if (a.elements.size() != b.elements.size()) return false;
+  for (std::size_t i = 0; i < a.elements.size(); ++i) {
+    if (a.elements[i].scalarText != b.elements[i].scalarText) return false;
+  }
+  return a.scalarText == b.scalarText;
+}
+
+JsonLayoutValue upJson(UpAxis up) { return jsonString(up == UpAxis::Y ? "Y" : "Z"); }
+
+fs::path spelledPath(const fs::path& absolutePath, const fs::path& pathAsWritten) {
+  return pathAsWritten.empty() ? absolutePath : pathAsWritten;
+}
+
+JsonLayoutValue pathJson(const fs::path& path) { return jsonString(path.generic_string()); }
+
+JsonLayoutValue levelMeshJson(const LevelMeshRef& mesh, UpAxis sceneUp) {
+  const fs::path spelled = spelledPath(mesh.path, mesh.pathAsWritten);
+  Members members{{"mesh", pathJson(spelled)}};
+  // A Scene built in memory may not say upWasExplicit; an up the default would not give back
+  // must still be written.
+  if (mesh.upWasExplicit || mesh.up != defaultMeshUp(spelled, sceneUp)) {
+    members.emplace_back("up", upJson(mesh.up));
+  }
+  return jsonObject(std::move(members));
+}
+
+JsonLayoutValue influenceJson(const InfluenceVolume& influence, const FileFrame& frame) {
+  if (const auto* box = std::get_if<BoxInfluence>(&influence)) {
+    const JsonLayoutValue outer = vec3Json(fileHalfExtentsFromWorld(box->halfExtentsMeters, frame));
+    const JsonLayoutValue inner =
+        vec3Json(fileHalfExtentsFromWorld(box->innerHalfExtentsMeters, frame));
+    Members members{{"kind", jsonString("box")},
+                    {"center", vec3Json(filePointFromWorld(box->centerMeters, frame))},
+                    {"half_extents", outer},
+                    {"rotation", rotationJson(fileRotationFromWorld(box->worldFromBox, frame))}};
+    if (!sameText(inner, outer)) members.emplace_back("inner_half_extents", inner);
+    return jsonObject(std::move(members));
+  }
+  const auto& sphere = std::get<SphereInfluence>(influence);
+  const JsonLayoutValue outer = jsonCoordinate(fileLengthFromWorld(sphere.radiusMeters, frame));
+  const JsonLayoutValue inner =
+      jsonCoordinate(fileLengthFromWorld(sphere.innerRadiusMeters, frame));
+  Members members{{"kind", jsonString("sphere")},
+                  {"center", vec3Json(filePointFromWorld(sphere.centerMeters, frame))},
+                  {"radius", outer}};
+  if (!sameText(inner, outer)) members.emplace_back("inner_radius", inner);
+  return jsonObject(std::move(members));
+}
+
+template <class... Handlers>
+struct Overloaded : Handlers... {
+  using Handlers::operator()...;
+};
+template <class... Handlers>
+Overloaded(Handlers...) -> Overloaded<Handlers...>;
+
+JsonLayoutValue proxyJson(const ProxySpec& proxy, const FileFrame& frame) {
+  const auto center = [&](const glm::dvec3& centerMeters) {
+    return vec3Json(filePointFromWorld(centerMeters, frame));
+  };
+  const auto halfExtents = [&](const glm::dvec3& halfExtentsMeters) {
+    return vec3Json(fileHalfExtentsFromWorld(halfExtentsMeters, frame));
+  };
+  return std::visit(
+      Overloaded{
+          [](const AutoProxy&) { return jsonString("auto"); },
+          [](const InfiniteProxy&) { return jsonString("infinite"); },
+          [&](const AuthoredBox& box) {
+            return jsonObject({{"kind", jsonString("box")},
+                               {"center", center(box.centerMeters)},
+                               {"half_extents", halfExtents(box.halfExtentsMeters)}});
+          },
+          [&](const AuthoredObb& obb) {
+            return jsonObject(
+                {{"kind", jsonString("obb")},
+                 {"center", center(obb.centerMeters)},
+                 {"half_extents", halfExtents(obb.halfExtentsMeters)},
+                 {"rotation", rotationJson(fileRotationFromWorld(obb.worldFromBox, frame))}});
+          },
+          [&](const AuthoredSphere& sphere) {
+            return jsonObject(
+                {{"kind", jsonString("sphere")},
+                 {"center", center(sphere.centerMeters)},
+                 {"radius", jsonCoordinate(fileLengthFromWorld(sphere.radiusMeters, frame))}});
+          },
+          [&](const AuthoredConvexMesh& convex) {
+            return jsonObject({{"kind", jsonString("convex")},
+                               {"mesh", pathJson(spelledPath(convex.mesh, convex.meshAsWritten))}});
+          },
+      },
+      proxy);
+}
+
+JsonLayoutValue reflectionPlanesJson(const std::vector<ReflectionPlane>& planes,
+                                     const FileFrame& frame) {
+  std::vector<JsonLayoutValue> elements;
+  for (const ReflectionPlane& plane : planes) {
+    elements.push_back(
+        jsonObject({{"point", vec3Json(filePointFromWorld(plane.pointMeters, frame))},
+                    {"normal", directionJson(fileDirectionFromWorld(plane.normal, frame))}}));
+  }
+  return jsonArray(std::move(elements));
+}
+
+JsonLayoutValue probeJson(const Probe& probe, const FileFrame& frame) {
+  Members members{{"name", jsonString(probe.name)},
+                  {"capture", vec3Json(filePointFromWorld(probe.captureMeters, frame))},
+                  {"influence", influenceJson(probe.influence, frame)},
+                  {"proxy", proxyJson(probe.proxy, frame)}};
+  if (probe.cubemap) members.emplace_back("cubemap", jsonString(*probe.cubemap));
+  if (!probe.reflectionPlanes.empty()) {
+    members.emplace_back("reflection_planes", reflectionPlanesJson(probe.reflectionPlanes, frame));
+  }
+  return jsonObject(std::move(members), /*oneItemPerLine=*/true);
+}
+
+// How `absolutePath` is spelled in a file in `newFolder`: as before while that still names the
+// same file, else relative to the new folder (absolute only if there is no relative way).
+fs::path spellingIn(const fs::path& absolutePath, const fs::path& pathAsWritten,
+                    const fs::path& oldFolder, const fs::path& newFolder) {
+  if (!pathAsWritten.empty() && (pathAsWritten.is_absolute() || oldFolder == newFolder)) {
+    return pathAsWritten;
+  }
+  if (!absolutePath.is_absolute()) return spelledPath(absolutePath, pathAsWritten);
+  return absolutePath.lexically_proximate(newFolder);
+}
+
+fs::path absoluteNormal(const fs::path& file) { return fs::absolute(file).lexically_normal(); }
+
+Scene rebasedFor(const Scene& scene, const fs::path& absoluteTarget) {
+  const fs::path oldFolder =
+      scene.file.empty() ? fs::path() : absoluteNormal(scene.file).parent_path();
+  const fs::path newFolder = absoluteTarget.parent_path();
+  Scene rebased = scene;
+  rebased.file = absoluteTarget;
+  for (LevelMeshRef& mesh : rebased.level) {
+    mesh.pathAsWritten = spellingIn(mesh.path, mesh.pathAsWritten, oldFolder, newFolder);
+  }
+  for (Probe& probe : rebased.probes) {
+    if (auto* convex = std::get_if<AuthoredConvexMesh>(&probe.proxy)) {
+      convex->meshAsWritten = spellingIn(convex->mesh, convex->meshAsWritten, oldFolder, newFolder);
+    }
+  }
+  return rebased;
+}
+
+}  // namespace
+
+Scene parseSceneFile(std::string_view bytes, const std::filesystem::path& file) {
+  try {
+    return sceneFromDocument(parseJsonDocument(bytes), absoluteNormal(file));
+  } catch (const JsonProblem& problem) {
+    throw InputError(file, problem.what());
+  }
+}
+
+Scene readSceneFile(const std::filesystem::path& file) {
+  return parseSceneFile(readWholeFile(file), file);
+}
+
+std::string sceneFileJson(const Scene& scene) {
+  const FileFrame frame{scene.fileUp, scene.metersPerUnit};
+  std::vector<JsonLayoutValue> level;
+  for (const LevelMeshRef& mesh : scene.level) level.push_back(levelMeshJson(mesh, scene.fileUp));
+  std::vector<JsonLayoutValue> probes;
+  for (const Probe& probe : scene.probes) probes.push_back(probeJson(probe, frame));
+  const JsonLayoutValue root =
+      jsonObject({{"probeproxy_scene", jsonInteger(kFormatVersion)},
+                  {"up", upJson(scene.fileUp)},
+                  {"meters_per_unit", jsonExactNumber(scene.metersPerUnit)},
+                  {"level", jsonArray(std::move(level))},
+                  {"probes", jsonArray(std::move(probes), /*oneItemPerLine=*/true)}},
+                 /*oneItemPerLine=*/true);
+  return layoutJson(root);
+}
+
+void writeSceneFile(const Scene& scene, const std::filesystem::path& file) {
+  const std::string bytes = sceneFileJson(rebasedFor(scene, absoluteNormal(file)));
+  // Never write a file we would refuse to read: this throws the reader's message, naming
+  // `file` and the JSON path, before anything touches the disk.
+  parseSceneFile(bytes, file);
+  writeFileAtomically(file, bytes);
+}
+
+}  // namespace probeproxy

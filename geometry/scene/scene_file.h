@@ -1,0 +1,45 @@
+#pragma once
+// The scene file (`*.scene.json`, schema in README.md "Scene file"): reading with full
+// validation, and writing in the one canonical layout.
+//
+// Frames: a Scene is always in the world frame (Z up, metres); the file may be Y-up and in
+// other units (`up`, `meters_per_unit`). Reading converts to the world frame once
+// (core/scene/world_frame.h), writing converts back, so a Scene never holds file units.
+//
+// Canonical form: the bytes sceneFileJson writes (the README's example is one). It is a fixed
+// point: reading a canonical file and writing it again gives the same bytes, whatever its
+// `up` and `meters_per_unit`. Written numbers are rounded to 1e-9 of a file unit (15
+// significant digits from 1e6 up), so conversion noise such as 30 * 0.01 / 0.01 never shows.
+
+#include "core/scene/scene.h"
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace probeproxy {
+
+// Reads and validates `file`. Relative paths in it are resolved against its folder
+// (LevelMeshRef::path, AuthoredConvexMesh::mesh), and kept as written beside. Whether the
+// mesh files exist is not checked here: the level loader does that, naming the mesh.
+// Throws InputError(file, "<JSON path>: <what was expected>, got <what was there>") for the
+// first problem found, e.g. "$.probes[1].influence.radius: expected a positive number, got -2".
+Scene readSceneFile(const std::filesystem::path& file);
+
+// The same for bytes already read (the add-on, fuzzers); `file` names them in errors and
+// anchors their relative paths.
+Scene parseSceneFile(std::string_view bytes, const std::filesystem::path& file);
+
+// The canonical bytes of `scene`'s file: fixed member order (the README's), 2-space indent,
+// values wrapped at 100 columns, trailing newline. Paths are written as they were read
+// (`pathAsWritten`, or `path` when that is empty). Does not validate: writeSceneFile does.
+std::string sceneFileJson(const Scene& scene);
+
+// Writes `scene` to `file` atomically (core/io/atomic_write.h). Relative paths are rewritten
+// relative to `file`'s folder when it differs from the folder `scene.file` is in. The bytes
+// are read back through readSceneFile's validation first, so a Scene the format cannot
+// express (duplicate names, a NaN, an inner range past the outer) throws InputError naming
+// `file` and the JSON path, and nothing is written.
+void writeSceneFile(const Scene& scene, const std::filesystem::path& file);
+
+}  // namespace probeproxy
