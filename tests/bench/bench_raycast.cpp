@@ -13,6 +13,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cstring>
+#include <map>
 #include <iostream>
 
 namespace probeproxy {
@@ -45,6 +46,23 @@ Workload loadWorkload(const std::string& sceneFile, int faceSize) {
   }
   return w;
 }
+
+// Prints the usual table and remembers each benchmark's median, so the run can end with the
+// batched path's speed-up over the one-by-one baseline measured in this same process.
+class MedianReporter : public benchmark::ConsoleReporter {
+ public:
+  void ReportRuns(const std::vector<Run>& runs) override {
+    ConsoleReporter::ReportRuns(runs);
+    for (const Run& run : runs) {
+      if (run.run_type == Run::RT_Aggregate && run.aggregate_name == "median") {
+        medianSeconds[run.run_name.function_name] = run.GetAdjustedRealTime();
+      } else if (run.run_type == Run::RT_Iteration && !medianSeconds.count(run.run_name.function_name)) {
+        medianSeconds[run.run_name.function_name] = run.GetAdjustedRealTime();  // one repetition
+      }
+    }
+  }
+  std::map<std::string, double> medianSeconds;
+};
 
 void setRaysPerSecond(benchmark::State& state, std::size_t rays) {
   state.counters["rays_per_s"] = benchmark::Counter(
@@ -101,7 +119,16 @@ int main(int argc, char** argv) {
                                  setRaysPerSecond(state, w.rays.size());
                                })
       ->Unit(benchmark::kMillisecond)->UseRealTime();
-  benchmark::RunSpecifiedBenchmarks();
+  MedianReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
   benchmark::Shutdown();
+  const double baseline = reporter.medianSeconds["depth_cubes_one_by_one_1thread" + suffix];
+  const double batched = reporter.medianSeconds["depth_cubes_batched_all_cores" + suffix];
+  if (baseline > 0 && batched > 0) {
+    std::cout << "rays per depth-cube set: " << w.rays.size() << "; median rays/s: one by one "
+              << w.rays.size() / (baseline * 1e-3) / 1e6 << " M, batched "
+              << w.rays.size() / (batched * 1e-3) / 1e6 << " M; batched / one-by-one speed-up: "
+              << baseline / batched << "x\n";
+  }
   return 0;
 }
