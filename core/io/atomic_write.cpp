@@ -14,8 +14,11 @@ std::filesystem::path temporaryBeside(const std::filesystem::path& target) {
   // Same folder, so the rename cannot cross file systems; the pid keeps two runs apart.
   // The extension is kept so that writers choosing a format by extension still see it.
   std::filesystem::path tmp = target;
-  tmp.replace_filename("." + target.stem().string() + ".tmp" + std::to_string(::getpid()) +
-                       target.extension().string());
+  std::string name = ".";
+  name += target.stem().string();
+  name += ".tmp" + std::to_string(::getpid());
+  name += target.extension().string();
+  tmp.replace_filename(name);
   return tmp;
 }
 

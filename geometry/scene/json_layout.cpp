@@ -57,7 +57,7 @@ std::string openerOf(const JsonLayoutValue& value) {
 
 std::string closerOf(const JsonLayoutValue& value) {
   const char* bracket = value.kind == Kind::Object ? "}" : "]";
-  return isPadded(value) ? " " + std::string(bracket) : std::string(bracket);
+  return isPadded(value) ? std::string(" ").append(bracket) : std::string(bracket);
 }
 
 std::string keyPrefix(const std::string& key) { return jsonString(key).scalarText + ": "; }
@@ -130,7 +130,8 @@ class Layout {
       std::string itemText = prefix + flat(item);
 
       if (!firstOnLine && current + 1 + itemText.size() + trailingWidth > limit_) {
-        text += "\n" + spaces(continuationColumn);
+        text += '\n';
+        text += spaces(continuationColumn);
         current = continuationColumn;
         firstOnLine = true;
       }
