@@ -1,0 +1,27 @@
+#pragma once
+// A convex proxy: the intersection of half-spaces, with its boundary as a triangle mesh.
+// World frame (Z up), metres. Plain data, owns its arrays.
+
+#include <glm/vec3.hpp>
+
+#include <vector>
+
+namespace probeproxy {
+
+struct ProxyPlane {
+  glm::dvec3 normal{0, 0, 1};  // unit, pointing out of the proxy
+  double offsetMeters = 0.0;   // inside: dot(normal, x) <= offsetMeters
+};
+
+struct ConvexProxy {
+  std::vector<ProxyPlane> planes;
+  // The boundary: corners and triangles wound counter-clockwise seen from outside (so the
+  // right-handed normal points out). Every triangle lies on one of `planes`.
+  std::vector<glm::dvec3> verticesMeters;
+  std::vector<glm::uvec3> triangles;
+};
+
+// How far x lies outside the proxy: max over planes of dot(n, x) - d (negative inside).
+double signedDistanceOutside(const std::vector<ProxyPlane>& planes, glm::dvec3 xMeters);
+
+}  // namespace probeproxy

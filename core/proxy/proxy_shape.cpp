@@ -1,0 +1,58 @@
+#include "core/proxy/proxy_shape.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <limits>
+
+namespace probeproxy {
+
+double signedDistanceOutside(const std::vector<ProxyPlane>& planes, glm::dvec3 x) {
+  double outside = -std::numeric_limits<double>::infinity();
+  for (const ProxyPlane& p : planes) outside = std::max(outside, glm::dot(p.normal, x) - p.offsetMeters);
+  return outside;
+}
+
+std::string_view methodId(const ProxyShape& shape) {
+  struct Visitor {
+    std::string_view operator()(const InfiniteShape&) const { return "infinite"; }
+    std::string_view operator()(const CheapKShape&) const { return "cheap_k"; }
+    std::string_view operator()(const SphereShape&) const { return "sphere"; }
+    std::string_view operator()(const BoxShape& b) const {
+      return b.worldFromBox == glm::dquat(1, 0, 0, 0) ? "aabb" : "obb";
+    }
+    std::string_view operator()(const ConvexProxy&) const { return "convex"; }
+  };
+  return std::visit(Visitor{}, shape);
+}
+
+int planeCount(const ProxyShape& shape) {
+  if (std::holds_alternative<BoxShape>(shape)) return 6;
+  if (const auto* convex = std::get_if<ConvexProxy>(&shape)) return static_cast<int>(convex->planes.size());
+  return 0;
+}
+
+ConvexProxy convexFromBox(const BoxShape& box) {
+  ConvexProxy convex;
+  const glm::dmat3 axes = glm::mat3_cast(box.worldFromBox);
+  for (int axis = 0; axis < 3; ++axis) {
+    for (double sign : {1.0, -1.0}) {
+      const glm::dvec3 n = sign * axes[axis];
+      convex.planes.push_back({n, glm::dot(n, box.centerMeters) + box.halfExtentsMeters[axis]});
+    }
+  }
+  for (int i = 0; i < 8; ++i) {
+    const glm::dvec3 local((i & 1) ? 1 : -1, (i & 2) ? 1 : -1, (i & 4) ? 1 : -1);
+    convex.verticesMeters.push_back(box.centerMeters + axes * (local * box.halfExtentsMeters));
+  }
+  // Corner i has bit 0 = +x, bit 1 = +y, bit 2 = +z; quads counter-clockwise from outside.
+  const unsigned quads[6][4] = {{1, 3, 7, 5}, {0, 4, 6, 2}, {2, 6, 7, 3},
+                                {0, 1, 5, 4}, {4, 5, 7, 6}, {0, 2, 3, 1}};
+  for (const auto& q : quads) {
+    convex.triangles.emplace_back(q[0], q[1], q[2]);
+    convex.triangles.emplace_back(q[0], q[2], q[3]);
+  }
+  return convex;
+}
+
+}  // namespace probeproxy

@@ -1,0 +1,45 @@
+#pragma once
+// Every proxy shape a correction method intersects reflection rays with. World frame (Z up),
+// metres. A box with the identity rotation is the `aabb` method's, any other the `obb`'s.
+
+#include "core/proxy/convex_proxy.h"
+
+#include <glm/gtc/quaternion.hpp>
+#include <glm/vec3.hpp>
+
+#include <string_view>
+#include <variant>
+
+namespace probeproxy {
+
+struct InfiniteShape {};  // no proxy: the cubemap is looked up with the reflection vector
+
+struct CheapKShape {  // seed 000's approximation: lookup = normalize(k * (x - C) + r)
+  double kPerMeter = 0.0;
+};
+
+struct SphereShape {  // seed 001's lighting-space sphere (an ellipsoid when radii differ)
+  glm::dvec3 centerMeters{0.0};
+  glm::dvec3 radiiMeters{1.0};        // along the sphere's own axes
+  glm::dquat worldFromSphere{1, 0, 0, 0};
+};
+
+struct BoxShape {
+  glm::dvec3 centerMeters{0.0};
+  glm::dvec3 halfExtentsMeters{1.0};  // in the box's own frame
+  glm::dquat worldFromBox{1, 0, 0, 0};
+};
+
+using ProxyShape = std::variant<InfiniteShape, CheapKShape, SphereShape, BoxShape, ConvexProxy>;
+
+// The DESIGN.md method id a shape is evaluated with: "infinite", "cheap_k", "sphere",
+// "aabb" (a box whose rotation is the identity), "obb" or "convex".
+std::string_view methodId(const ProxyShape& shape);
+
+// Planes a shader tests: 0 for infinite, cheap_k and sphere, 6 for boxes, k for convex.
+int planeCount(const ProxyShape& shape);
+
+// The box as six planes and its 8 corners / 12 triangles.
+ConvexProxy convexFromBox(const BoxShape& box);
+
+}  // namespace probeproxy
