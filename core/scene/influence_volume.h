@@ -25,3 +25,13 @@ struct SphereInfluence {
 using InfluenceVolume = std::variant<BoxInfluence, SphereInfluence>;
 
 }  // namespace probeproxy
+
+namespace probeproxy {
+
+// Whether a point lies in the outer range of an influence volume.
+bool insideInfluence(const InfluenceVolume& influence, glm::dvec3 pointMeters);
+
+// The axis-aligned bounds of the outer range, world frame.
+void influenceBounds(const InfluenceVolume& influence, glm::dvec3& minMeters, glm::dvec3& maxMeters);
+
+}  // namespace probeproxy

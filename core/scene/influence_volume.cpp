@@ -1,0 +1,33 @@
+#include "core/scene/influence_volume.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+namespace probeproxy {
+
+bool insideInfluence(const InfluenceVolume& influence, glm::dvec3 p) {
+  if (const auto* box = std::get_if<BoxInfluence>(&influence)) {
+    const glm::dvec3 local = glm::conjugate(box->worldFromBox) * (p - box->centerMeters);
+    return glm::all(glm::lessThanEqual(glm::abs(local), box->halfExtentsMeters));
+  }
+  const auto& sphere = std::get<SphereInfluence>(influence);
+  return glm::distance(p, sphere.centerMeters) <= sphere.radiusMeters;
+}
+
+void influenceBounds(const InfluenceVolume& influence, glm::dvec3& lo, glm::dvec3& hi) {
+  if (const auto* box = std::get_if<BoxInfluence>(&influence)) {
+    const glm::dmat3 axes = glm::mat3_cast(box->worldFromBox);
+    // Half-size of the rotated box along each world axis.
+    const glm::dvec3 reach = glm::abs(axes[0]) * box->halfExtentsMeters.x +
+                             glm::abs(axes[1]) * box->halfExtentsMeters.y +
+                             glm::abs(axes[2]) * box->halfExtentsMeters.z;
+    lo = box->centerMeters - reach;
+    hi = box->centerMeters + reach;
+    return;
+  }
+  const auto& sphere = std::get<SphereInfluence>(influence);
+  lo = sphere.centerMeters - glm::dvec3(sphere.radiusMeters);
+  hi = sphere.centerMeters + glm::dvec3(sphere.radiusMeters);
+}
+
+}  // namespace probeproxy

@@ -1,0 +1,19 @@
+#pragma once
+// The proxy an artist authored in the scene file, as a shape the evaluation can measure.
+
+#include "core/proxy/proxy_shape.h"
+#include "core/scene/scene.h"
+
+#include <optional>
+
+namespace probeproxy {
+
+// None for `auto`; InfiniteShape for `infinite`. A convex mesh is read like a level mesh (the
+// scene's units; glTF Y-up) and turned into one plane per distinct face plane; whether it
+// really is convex and closed is for the proxy mesh checks to say.
+std::optional<ProxyShape> authoredProxyShape(const ProxySpec& spec, const Scene& scene);
+
+// Planes of a triangle mesh wound counter-clockwise from outside, near-duplicates merged.
+ConvexProxy convexFromMesh(std::vector<glm::dvec3> verticesMeters, std::vector<glm::uvec3> triangles);
+
+}  // namespace probeproxy

@@ -1,0 +1,181 @@
+#include "geometry/build/build_probe_proxy.h"
+
+#include "geometry/evaluation/evaluate_shape.h"
+#include "geometry/fit/bounding_sphere_fit.h"
+#include "geometry/fit/convex_hull_proxy.h"
+#include "geometry/fit/fit_error.h"
+#include "geometry/fit/oriented_box_fit.h"
+#include "geometry/fit/polytope_from_planes.h"
+#include "geometry/raycast/capture_depth_cube.h"
+#include "geometry/tune/greedy_plane_removal.h"
+#include "geometry/tune/one_dimensional_fits.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <tuple>
+
+namespace probeproxy {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// What the probe sees: the level points of its depth cube (sky texels have none).
+std::vector<glm::dvec3> seenPoints(const DepthCube& cube) {
+  std::vector<glm::dvec3> points;
+  for (int f = 0; f < kCubeFaceCount; ++f) {
+    for (int row = 0; row < cube.faceSize; ++row) {
+      for (int col = 0; col < cube.faceSize; ++col) {
+        const float t = cube.at(CubeFace(f), col, row);
+        if (std::isfinite(t)) {
+          points.push_back(cube.captureMeters +
+                           double(t) * glm::dvec3(texelDirection(CubeFace(f), col, row, cube.faceSize)));
+        }
+      }
+    }
+  }
+  return points;
+}
+
+// Shaders pay per plane; among equal plane counts the simpler test wins.
+int methodRank(const ProxyShape& shape) {
+  const std::string_view id = methodId(shape);
+  static constexpr std::string_view order[] = {"infinite", "cheap_k", "sphere", "aabb", "obb", "convex"};
+  return static_cast<int>(std::find(std::begin(order), std::end(order), id) - std::begin(order));
+}
+
+bool meetsTolerance(const ErrorFigures& e, const ProxyBuildOptions& o) {
+  return std::isfinite(e.p95Deg) && e.p95Deg <= o.toleranceDeg && e.missRate <= o.maxMissRate;
+}
+
+}  // namespace
+
+std::size_t selectProxy(const std::vector<ProxyCandidate>& candidates, const ProxyBuildOptions& o) {
+  if (!o.regenerate && !candidates.empty() && candidates.front().kind == "authored") return 0;
+  const auto complexity = [&](std::size_t i) {
+    return std::make_tuple(planeCount(candidates[i].shape), methodRank(candidates[i].shape), i);
+  };
+  // The fewest planes that meet the tolerance.
+  std::size_t best = candidates.size();
+  const auto generated = [&](std::size_t i) {
+    return candidates[i].kind != "authored" && planeCount(candidates[i].shape) <= o.maxPlanes;
+  };
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (!generated(i) || !meetsTolerance(candidates[i].error, o)) continue;
+    if (best == candidates.size() || complexity(i) < complexity(best)) best = i;
+  }
+  if (best != candidates.size()) return best;
+  // None does: the most accurate within the plane budget, misses first, then p95.
+  const auto accuracy = [&](std::size_t i) {
+    const ErrorFigures& e = candidates[i].error;
+    return std::make_tuple(e.missRate > o.maxMissRate, std::isfinite(e.p95Deg) ? e.p95Deg : 1e300,
+                           complexity(i));
+  };
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (!generated(i)) continue;
+    if (best == candidates.size() || accuracy(i) < accuracy(best)) best = i;
+  }
+  return best == candidates.size() ? 0 : best;
+}
+
+ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
+                                const std::optional<ProxyShape>& authored,
+                                const ProxyBuildOptions& o) {
+  const auto start = Clock::now();
+  ProbeProxyBuild build;
+  build.probe = probe.name;
+  const glm::dvec3 capture = probe.captureMeters;
+
+  auto t = Clock::now();
+  const std::vector<glm::dvec3> points = seenPoints(captureDepthCube(level, capture, o.depthFaceSize));
+  build.depthMs = msSince(t);
+
+  // Fit on one sample set and report on others drawn with other seeds, so the figures are not
+  // flattered by fitting to the very samples they are measured on.
+  t = Clock::now();
+  ReflectionSampleOptions fitOptions = o.samples;
+  fitOptions.seed = o.samples.seed;
+  ReflectionSampleOptions reportOptions = o.samples;
+  reportOptions.seed = o.samples.seed + 1000;
+  const auto fitSamples = buildReflectionSamples(level, probe, SampleSet::MirrorFloor, fitOptions);
+  const auto floorSamples = buildReflectionSamples(level, probe, SampleSet::MirrorFloor, reportOptions);
+  const auto allSamples = buildReflectionSamples(level, probe, SampleSet::AllSurfaces, reportOptions);
+  build.samplingMs = msSince(t);
+
+  std::vector<ProxyCandidate> candidates;
+  const auto add = [&](std::string kind, ProxyShape shape, double buildMs) {
+    candidates.push_back({std::move(kind), std::move(shape), {}, {}, buildMs});
+  };
+  if (authored) add("authored", *authored, 0.0);
+
+  double nearest = 1e300, farthest = 0.0;
+  for (const glm::dvec3& p : points) {
+    const double d = glm::distance(p, capture);
+    nearest = std::min(nearest, d), farthest = std::max(farthest, d);
+  }
+  if (points.empty()) nearest = farthest = 1.0;
+
+  t = Clock::now();
+  add("infinite", InfiniteShape{}, 0.0);
+  auto fitStart = Clock::now();
+  add("cheap_k", fitCheapK(capture, fitSamples, 0.5 * (nearest + farthest)), msSince(fitStart));
+  fitStart = Clock::now();
+  add("sphere", fitCaptureSphere(capture, fitSamples, nearest, farthest), msSince(fitStart));
+  if (points.size() >= 4) {
+    fitStart = Clock::now();
+    add("min_sphere", minimumEnclosingSphere(points), msSince(fitStart));
+    fitStart = Clock::now();
+    add("aabb", axisAlignedBoxFit(points), msSince(fitStart));
+    fitStart = Clock::now();
+    add("obb", orientedBoxFit(points), msSince(fitStart));
+  }
+  build.fitMs = msSince(t);
+
+  // The hull of what the probe sees, then every simplification of it down to a tetrahedron.
+  try {
+    t = Clock::now();
+    const double size = std::max(farthest, 1e-3);
+    const ConvexProxy hull = convexHullProxy(points, 1e-4 * size + 1e-4);
+    build.hullMs = msSince(t);
+    add("hull", hull, build.hullMs);
+
+    t = Clock::now();
+    const std::vector<PlaneRemovalStep> steps =
+        greedyPlaneRemoval(hull.planes, capture, fitSamples, 4, isBounded);
+    build.simplifyMs = msSince(t);
+    const double perStepMs = steps.size() > 1 ? build.simplifyMs / double(steps.size() - 1) : 0.0;
+    for (std::size_t s = 1; s < steps.size(); ++s) {
+      ConvexProxy simplified;
+      simplified.planes = steps[s].planes;
+      add("convex_" + std::to_string(steps[s].planes.size()), std::move(simplified), perStepMs * double(s));
+    }
+  } catch (const FitError&) {
+    // A probe that sees one plane only (or nothing) gets no hull; the other candidates stand.
+  }
+
+  t = Clock::now();
+  for (ProxyCandidate& c : candidates) {
+    c.error = evaluateShape(c.shape, capture, floorSamples);
+    c.errorAllSurfaces = evaluateShape(c.shape, capture, allSamples);
+  }
+  build.evaluateMs = msSince(t);
+
+  build.candidates = std::move(candidates);
+  build.kept = selectProxy(build.candidates, o);
+  // Only the kept simplified hull needs its corners: engines and Blender draw it.
+  if (auto* convex = std::get_if<ConvexProxy>(&build.candidates[build.kept].shape);
+      convex != nullptr && convex->verticesMeters.empty()) {
+    *convex = polytopeFromPlanes(convex->planes, capture);
+  }
+  build.buildMs = msSince(start);
+  return build;
+}
+
+}  // namespace probeproxy

@@ -1,0 +1,125 @@
+#include "geometry/evaluation/reflection_samples.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+namespace probeproxy {
+
+std::string_view sampleSetName(SampleSet set) {
+  return set == SampleSet::MirrorFloor ? "mirror_floor" : "all_surfaces";
+}
+
+namespace {
+
+// Self-intersection offset that grows with the distance from the origin, where float
+// vertices are coarser.
+double surfaceEpsilon(glm::dvec3 x) { return 1e-4 + 1e-6 * glm::length(x); }
+
+glm::dvec3 uniformDirection(std::mt19937& rng, bool lowerHemisphereOnly) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double z = lowerHemisphereOnly ? -unit(rng) : 2.0 * unit(rng) - 1.0;
+  const double phi = 2.0 * M_PI * unit(rng);
+  const double s = std::sqrt(std::max(0.0, 1.0 - z * z));
+  return {s * std::cos(phi), s * std::sin(phi), z};
+}
+
+RayHit castDouble(const LevelRayCaster& level, glm::dvec3 origin, glm::dvec3 direction,
+                  double tMin = 0.0) {
+  return level.firstHit({glm::vec3(origin), glm::vec3(direction), static_cast<float>(tMin)});
+}
+
+// Where the reflection ray lands, and whether the capture point can see that place.
+void traceTrueHit(const LevelRayCaster& level, glm::dvec3 capture, ReflectionSample& s) {
+  const double eps = surfaceEpsilon(s.xMeters);
+  const RayHit hit = castDouble(level, s.xMeters + eps * s.normal, s.reflected);
+  if (!hit.hit()) {
+    s.hitsSky = true;
+    // The cubemap shows the sky along r only if nothing stands in the way from C.
+    s.occluded = castDouble(level, capture, s.reflected).hit();
+    return;
+  }
+  s.trueHitMeters = s.xMeters + eps * s.normal + double(hit.t) * s.reflected;
+  const glm::dvec3 toHit = s.trueHitMeters - capture;
+  const double distance = glm::length(toHit);
+  if (distance < 1e-9) return;
+  const RayHit fromCapture = castDouble(level, capture, toHit / distance);
+  const double slack = 1e-3 * distance + surfaceEpsilon(s.trueHitMeters) * 10.0;
+  s.occluded = fromCapture.hit() && double(fromCapture.t) < distance - slack;
+}
+
+}  // namespace
+
+std::vector<glm::dvec3> reflectionCameras(const LevelRayCaster& level, const Probe& probe,
+                                          const ReflectionSampleOptions& o) {
+  glm::dvec3 lo, hi;
+  influenceBounds(probe.influence, lo, hi);
+  const double longer = std::max(hi.x - lo.x, hi.y - lo.y);
+  const double spacing = std::max(o.minCameraSpacingMeters, longer / o.camerasAcross);
+  const int nx = std::max(1, static_cast<int>(std::floor((hi.x - lo.x) / spacing)));
+  const int ny = std::max(1, static_cast<int>(std::floor((hi.y - lo.y) / spacing)));
+
+  std::vector<glm::dvec3> cameras;
+  for (int j = 0; j < ny; ++j) {
+    for (int i = 0; i < nx; ++i) {
+      // Cell centres, so a one-cell grid sits in the middle.
+      const glm::dvec3 column(lo.x + (i + 0.5) * (hi.x - lo.x) / nx,
+                              lo.y + (j + 0.5) * (hi.y - lo.y) / ny, probe.captureMeters.z);
+      const RayHit floor = castDouble(level, column, {0, 0, -1});
+      if (!floor.hit() || floor.geometricNormal.z == 0.0f) continue;
+      glm::dvec3 eye = column - glm::dvec3(0, 0, floor.t) + glm::dvec3(0, 0, o.eyeHeightMeters);
+      // Under a low ceiling (an attic's eaves, a closet) the eye goes halfway up instead.
+      const RayHit ceiling = castDouble(level, column - glm::dvec3(0, 0, floor.t - 1e-3), {0, 0, 1});
+      if (ceiling.hit() && ceiling.t < o.eyeHeightMeters + 0.1) {
+        eye.z = column.z - floor.t + 0.5 * ceiling.t;
+      }
+      if (insideInfluence(probe.influence, eye)) cameras.push_back(eye);
+    }
+  }
+  if (cameras.empty()) cameras.push_back(probe.captureMeters);
+  return cameras;
+}
+
+std::vector<ReflectionSample> buildReflectionSamples(const LevelRayCaster& level,
+                                                     const Probe& probe, SampleSet set,
+                                                     const ReflectionSampleOptions& o) {
+  const std::vector<glm::dvec3> cameras = reflectionCameras(level, probe, o);
+  const bool floorOnly = set == SampleSet::MirrorFloor;
+  std::mt19937 rng(o.seed * 2654435761u + (floorOnly ? 0u : 1u));
+
+  std::vector<ReflectionSample> samples;
+  samples.reserve(o.targetSamples);
+  const std::size_t batch = 512;
+  std::vector<Ray> rays(batch);
+  std::vector<RayHit> hits(batch);
+  std::size_t attempts = 0;
+  const std::size_t maxAttempts = o.targetSamples * static_cast<std::size_t>(o.maxAttemptsPerSample);
+  while (samples.size() < o.targetSamples && attempts < maxAttempts) {
+    // Cameras take turns, so every part of the volume is seen even when the target is small.
+    for (std::size_t i = 0; i < batch; ++i) {
+      const glm::dvec3 eye = cameras[(attempts + i) % cameras.size()];
+      rays[i] = {glm::vec3(eye), glm::vec3(uniformDirection(rng, floorOnly))};
+    }
+    level.firstHits(rays, hits);
+    attempts += batch;
+    for (std::size_t i = 0; i < batch && samples.size() < o.targetSamples; ++i) {
+      if (!hits[i].hit()) continue;
+      ReflectionSample s;
+      s.eyeMeters = cameras[(attempts - batch + i) % cameras.size()];
+      const glm::dvec3 view = glm::normalize(glm::dvec3(rays[i].direction));
+      s.xMeters = s.eyeMeters + double(hits[i].t) * view;
+      if (!insideInfluence(probe.influence, s.xMeters)) continue;
+      s.normal = glm::dvec3(hits[i].geometricNormal);
+      if (glm::dot(s.normal, view) > 0) s.normal = -s.normal;  // face the camera
+      if (floorOnly && s.normal.z < o.upwardCosine) continue;
+      s.reflected = glm::normalize(view - 2.0 * glm::dot(view, s.normal) * s.normal);
+      samples.push_back(s);
+    }
+  }
+  for (ReflectionSample& s : samples) traceTrueHit(level, probe.captureMeters, s);
+  return samples;
+}
+
+}  // namespace probeproxy

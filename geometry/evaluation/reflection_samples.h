@@ -1,0 +1,32 @@
+#pragma once
+// Building a probe's reflection sample sets against the level (Embree). Deterministic: the
+// same level, probe, set and options give the same samples, whatever the thread count.
+
+#include "core/scene/probe.h"
+#include "geometry/evaluation/reflection_sample.h"
+#include "geometry/raycast/level_ray_caster.h"
+
+#include <vector>
+
+namespace probeproxy {
+
+struct ReflectionSampleOptions {
+  std::size_t targetSamples = 2048;  // stops here, or after maxAttemptsPerSample x this rays
+  int maxAttemptsPerSample = 16;
+  double eyeHeightMeters = 1.7;      // camera height above the floor under it
+  int camerasAcross = 8;             // grid cells along the influence volume's longer side
+  double minCameraSpacingMeters = 0.25;
+  double upwardCosine = 0.9;         // mirror_floor: normal.z at least this (about 25 degrees)
+  std::uint32_t seed = 1;
+};
+
+std::vector<ReflectionSample> buildReflectionSamples(const LevelRayCaster& level,
+                                                     const Probe& probe, SampleSet set,
+                                                     const ReflectionSampleOptions& options = {});
+
+// The cameras of the grid: at eye height above the floor, inside the influence volume. Falls
+// back to the capture point when no grid point qualifies (a closet, a probe over a void).
+std::vector<glm::dvec3> reflectionCameras(const LevelRayCaster& level, const Probe& probe,
+                                          const ReflectionSampleOptions& options);
+
+}  // namespace probeproxy
