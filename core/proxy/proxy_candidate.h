@@ -28,6 +28,9 @@ struct ProbeProxyBuild {
   // other fits, evaluation.
   double depthMs = 0.0, samplingMs = 0.0, hullMs = 0.0, simplifyMs = 0.0, fitMs = 0.0,
          evaluateMs = 0.0;
+  // What kept the build from doing its best, one line each, e.g. that the capture point is
+  // outside the level. The build still keeps the best candidate it could make.
+  std::vector<std::string> findings;
 };
 
 }  // namespace probeproxy

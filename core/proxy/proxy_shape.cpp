@@ -32,6 +32,16 @@ int planeCount(const ProxyShape& shape) {
   return 0;
 }
 
+bool strictlyContains(const ProxyShape& shape, glm::dvec3 p) {
+  if (const auto* box = std::get_if<BoxShape>(&shape)) return signedDistanceOutside(convexFromBox(*box).planes, p) < 0;
+  if (const auto* convex = std::get_if<ConvexProxy>(&shape)) return signedDistanceOutside(convex->planes, p) < 0;
+  if (const auto* sphere = std::get_if<SphereShape>(&shape)) {
+    const glm::dvec3 local = (glm::conjugate(sphere->worldFromSphere) * (p - sphere->centerMeters)) / sphere->radiiMeters;
+    return glm::dot(local, local) < 1.0;
+  }
+  return true;
+}
+
 ConvexProxy convexFromBox(const BoxShape& box) {
   ConvexProxy convex;
   const glm::dmat3 axes = glm::mat3_cast(box.worldFromBox);

@@ -39,6 +39,10 @@ std::string_view methodId(const ProxyShape& shape);
 // Planes a shader tests: 0 for infinite, cheap_k and sphere, 6 for boxes, k for convex.
 int planeCount(const ProxyShape& shape);
 
+// Whether a point is strictly inside the shape (shapes without a volume contain everything):
+// a capture point on or outside its proxy breaks parallax correction.
+bool strictlyContains(const ProxyShape& shape, glm::dvec3 pointMeters);
+
 // The box as six planes and its 8 corners / 12 triangles.
 ConvexProxy convexFromBox(const BoxShape& box);
 

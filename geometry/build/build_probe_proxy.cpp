@@ -9,6 +9,7 @@
 #include "geometry/raycast/capture_depth_cube.h"
 #include "geometry/tune/greedy_plane_removal.h"
 #include "geometry/tune/one_dimensional_fits.h"
+#include "geometry/tune/visible_surface_planes.h"
 
 #include <glm/geometric.hpp>
 
@@ -94,8 +95,15 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
   const glm::dvec3 capture = probe.captureMeters;
 
   auto t = Clock::now();
-  const std::vector<glm::dvec3> points = seenPoints(captureDepthCube(level, capture, o.depthFaceSize));
+  const std::vector<RayHit> hits = castDepthCubeRays(level, capture, o.depthFaceSize);
+  const std::vector<glm::dvec3> points = seenPoints(depthCubeFromHits(hits, capture, o.depthFaceSize));
   build.depthMs = msSince(t);
+  const double skyShare = 1.0 - static_cast<double>(points.size()) / static_cast<double>(hits.size());
+  if (skyShare > 0.5) {
+    build.findings.push_back("the capture point sees no level in " +
+                             std::to_string(static_cast<int>(std::round(100 * skyShare))) +
+                             "% of directions: it is outside the level, or the level is open");
+  }
 
   // Fit on one sample set and report on others drawn with other seeds, so the figures are not
   // flattered by fitting to the very samples they are measured on.
@@ -142,13 +150,23 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
   try {
     t = Clock::now();
     const double size = std::max(farthest, 1e-3);
-    const ConvexProxy hull = convexHullProxy(points, 1e-4 * size + 1e-4);
+    const double tolerance = 1e-4 * size + 1e-4;
+    const ConvexProxy hull = convexHullProxy(points, tolerance);
     build.hullMs = msSince(t);
+    if (signedDistanceOutside(hull.planes, capture) >= 0) {
+      throw FitError("the capture point is outside everything it sees: it is outside the level");
+    }
     add("hull", hull, build.hullMs);
 
+    // The hull's planes and the planes of the walls the probe sees (the inner walls of a
+    // concave room among them); error decides which stay.
     t = Clock::now();
+    std::vector<ProxyPlane> planes = hull.planes;
+    for (const ProxyPlane& p : visibleSurfacePlanes(hits, capture, o.depthFaceSize, 10 * tolerance)) {
+      planes.push_back(p);
+    }
     const std::vector<PlaneRemovalStep> steps =
-        greedyPlaneRemoval(hull.planes, capture, fitSamples, 4, isBounded);
+        greedyPlaneRemoval(planes, capture, fitSamples, 4, isBounded);
     build.simplifyMs = msSince(t);
     const double perStepMs = steps.size() > 1 ? build.simplifyMs / double(steps.size() - 1) : 0.0;
     for (std::size_t s = 1; s < steps.size(); ++s) {
@@ -156,8 +174,9 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
       simplified.planes = steps[s].planes;
       add("convex_" + std::to_string(steps[s].planes.size()), std::move(simplified), perStepMs * double(s));
     }
-  } catch (const FitError&) {
+  } catch (const FitError& e) {
     // A probe that sees one plane only (or nothing) gets no hull; the other candidates stand.
+    build.findings.push_back(std::string("no convex proxy: ") + e.what());
   }
 
   t = Clock::now();
@@ -169,10 +188,17 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
 
   build.candidates = std::move(candidates);
   build.kept = selectProxy(build.candidates, o);
-  // Only the kept simplified hull needs its corners: engines and Blender draw it.
+  // Only the kept simplification needs its corners: engines and Blender draw it.
   if (auto* convex = std::get_if<ConvexProxy>(&build.candidates[build.kept].shape);
       convex != nullptr && convex->verticesMeters.empty()) {
-    *convex = polytopeFromPlanes(convex->planes, capture);
+    try {
+      *convex = polytopeFromPlanes(convex->planes, capture);
+    } catch (const FitError& e) {
+      build.findings.push_back(std::string("the kept proxy has no boundary mesh: ") + e.what());
+    }
+  }
+  if (!strictlyContains(build.candidates[build.kept].shape, capture)) {
+    build.findings.push_back("the capture point is not inside the kept proxy");
   }
   build.buildMs = msSince(start);
   return build;

@@ -19,11 +19,15 @@ std::vector<Ray> depthCubeRays(glm::dvec3 captureMeters, int faceSize) {
   return rays;
 }
 
-DepthCube captureDepthCube(const LevelRayCaster& level, glm::dvec3 captureMeters, int faceSize) {
+std::vector<RayHit> castDepthCubeRays(const LevelRayCaster& level, glm::dvec3 captureMeters,
+                                      int faceSize) {
   const std::vector<Ray> rays = depthCubeRays(captureMeters, faceSize);
   std::vector<RayHit> hits(rays.size());
   level.firstHits(rays, hits, /*coherent=*/true);
+  return hits;
+}
 
+DepthCube depthCubeFromHits(std::span<const RayHit> hits, glm::dvec3 captureMeters, int faceSize) {
   DepthCube cube;
   cube.captureMeters = captureMeters;
   cube.faceSize = faceSize;
@@ -33,6 +37,10 @@ DepthCube captureDepthCube(const LevelRayCaster& level, glm::dvec3 captureMeters
     for (std::size_t i = 0; i < perFace; ++i) cube.distanceMeters[f][i] = hits[f * perFace + i].t;
   }
   return cube;
+}
+
+DepthCube captureDepthCube(const LevelRayCaster& level, glm::dvec3 captureMeters, int faceSize) {
+  return depthCubeFromHits(castDepthCubeRays(level, captureMeters, faceSize), captureMeters, faceSize);
 }
 
 }  // namespace probeproxy

@@ -11,4 +11,10 @@ DepthCube captureDepthCube(const LevelRayCaster& level, glm::dvec3 captureMeters
 // The rays captureDepthCube casts, face by face, row by row: for benchmarks and tests.
 std::vector<Ray> depthCubeRays(glm::dvec3 captureMeters, int faceSize);
 
+// Their hits, in the same order (t in metres: the rays are unit length).
+std::vector<RayHit> castDepthCubeRays(const LevelRayCaster& level, glm::dvec3 captureMeters, int faceSize);
+
+// The depth cube those hits make.
+DepthCube depthCubeFromHits(std::span<const RayHit> hits, glm::dvec3 captureMeters, int faceSize);
+
 }  // namespace probeproxy

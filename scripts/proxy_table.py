@@ -1,0 +1,61 @@
+#!/usr/bin/env python3
+"""The proxy table of the README and of issue 3: for every level of the suite, per probe, the
+kept proxy's kind, planes and mirror_floor error beside the artist box's and the plain hull's.
+
+    scripts/proxy_table.py build/plugin/cli/probeproxy build/scenes [--out build/proxy-table]
+
+Runs `probeproxy build --json --regenerate` on each level (the artist box is the scene file's
+authored proxy, so it is measured as the `authored` candidate) and prints a Markdown table.
+"""
+
+import argparse
+import json
+import pathlib
+import subprocess
+import sys
+
+LEVELS = ["corridor", "l_room", "u_corridors", "hall_pillars", "attic", "round_room",
+          "courtyard", "tiny_closet", "hangar"]
+
+
+def fmt(value, digits=3):
+    return "-" if value is None else f"{value:.{digits}f}"
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("probeproxy")
+    parser.add_argument("suite")
+    parser.add_argument("--out", default=None, help="folder for each level's proxies")
+    parser.add_argument("--levels", default=",".join(LEVELS))
+    args = parser.parse_args()
+
+    suite = pathlib.Path(args.suite)
+    out = pathlib.Path(args.out) if args.out else suite.parent / "proxy-table"
+    print("| level | probe | kept | planes | median deg | p95 deg | miss % | artist box median / p95 |"
+          " hull planes | hull median / p95 | build ms |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    for level in args.levels.split(","):
+        scene = suite / level / f"{level}.scene.json"
+        run = subprocess.run([args.probeproxy, "build", str(scene), "--out", str(out / level),
+                              "--json", "--regenerate"], capture_output=True, text=True)
+        if run.returncode != 0:
+            print(f"{level}: probeproxy build failed: {run.stderr.strip()}", file=sys.stderr)
+            return 1
+        for probe in json.loads(run.stdout)["probes"]:
+            by_kind = {c["kind"]: c for c in probe["candidates"]}
+            kept = probe["proxy"]
+            err = probe["error"]
+            artist = by_kind.get("authored", {}).get("error", {})
+            hull = by_kind.get("hull", {})
+            hull_err = hull.get("error", {})
+            print(f"| {level} | {probe['name']} | {kept['candidate']} ({kept['kind']}) | {kept['planes']} "
+                  f"| {fmt(err['median_deg'])} | {fmt(err['p95_deg'])} | {fmt(100 * err['miss_rate'], 1)} "
+                  f"| {fmt(artist.get('median_deg'))} / {fmt(artist.get('p95_deg'))} "
+                  f"| {hull.get('planes', '-')} | {fmt(hull_err.get('median_deg'))} / {fmt(hull_err.get('p95_deg'))} "
+                  f"| {probe['build_ms']:.0f} |")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

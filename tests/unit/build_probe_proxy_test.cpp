@@ -1,0 +1,140 @@
+// The per-probe pipeline on levels with known answers, and on the degenerate inputs real levels
+// produce: a valid proxy or a clear finding, never a crash.
+
+#include "geometry/build/build_probe_proxy.h"
+#include "geometry/builtin/box_room.h"
+#include "geometry/validate/proxy_mesh_checks.h"
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include <cmath>
+
+namespace probeproxy {
+namespace {
+
+Probe probeAt(glm::dvec3 capture, glm::dvec3 lo, glm::dvec3 hi) {
+  Probe probe;
+  probe.name = "probe";
+  probe.captureMeters = capture;
+  BoxInfluence influence;
+  influence.centerMeters = 0.5 * (lo + hi);
+  influence.halfExtentsMeters = influence.innerHalfExtentsMeters = 0.5 * (hi - lo);
+  probe.influence = influence;
+  return probe;
+}
+
+ProxyBuildOptions fastOptions() {
+  ProxyBuildOptions o;
+  o.depthFaceSize = 48;
+  o.samples.targetSamples = 1024;
+  return o;
+}
+
+const ProxyCandidate& kept(const ProbeProxyBuild& b) { return b.candidates[b.kept]; }
+
+// An L-shaped room: two 8 x 3 m arms, 3 m high, meeting at the origin corner.
+LevelMesh lRoom() {
+  LevelMesh level;
+  const auto quad = [&](glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d) {
+    const auto base = static_cast<unsigned>(level.positionsMeters.size());
+    level.positionsMeters.insert(level.positionsMeters.end(), {a, b, c, d});
+    level.triangles.emplace_back(base, base + 1, base + 2);
+    level.triangles.emplace_back(base, base + 2, base + 3);
+  };
+  const float h = 3.0f;
+  // Outline (counter-clockwise from above): (0,0) (8,0) (8,3) (3,3) (3,8) (0,8).
+  const glm::vec2 outline[6] = {{0, 0}, {8, 0}, {8, 3}, {3, 3}, {3, 8}, {0, 8}};
+  for (int i = 0; i < 6; ++i) {
+    const glm::vec2 a = outline[i], b = outline[(i + 1) % 6];
+    quad({a, 0}, {b, 0}, {b, h}, {a, h});
+  }
+  quad({0, 0, 0}, {8, 0, 0}, {8, 3, 0}, {0, 3, 0});  // floor, arm along x
+  quad({0, 3, 0}, {3, 3, 0}, {3, 8, 0}, {0, 8, 0});  // floor, arm along y
+  quad({0, 0, h}, {0, 3, h}, {8, 3, h}, {8, 0, h});  // ceiling
+  quad({0, 3, h}, {0, 8, h}, {3, 8, h}, {3, 3, h});
+  level.parts.push_back({"l_room", {}, 0, static_cast<std::uint32_t>(level.triangles.size())});
+  return level;
+}
+
+TEST(BuildProbeProxy, BoxRoomKeepsAnExactSixPlaneProxy) {
+  const glm::dvec3 lo(-4, -2, 0), hi(6, 3, 3);
+  const LevelRayCaster level(boxRoom(glm::vec3(lo), glm::vec3(hi)));
+  const ProbeProxyBuild b = buildProbeProxy(level, probeAt({1, 0.5, 1.6}, lo, hi), std::nullopt, fastOptions());
+  EXPECT_LE(planeCount(kept(b).shape), 6);
+  EXPECT_LT(kept(b).error.p95Deg, 0.25);
+  EXPECT_EQ(kept(b).error.missRate, 0.0);
+  EXPECT_TRUE(b.findings.empty());
+}
+
+TEST(BuildProbeProxy, KeptConvexProxiesContainTheCaptureAndPassTheMeshChecks) {
+  const LevelRayCaster level(lRoom());
+  const glm::dvec3 capture(1.5, 1.5, 1.6);
+  ProxyBuildOptions o = fastOptions();
+  o.toleranceDeg = 0.01;  // force a convex proxy
+  const ProbeProxyBuild b = buildProbeProxy(level, probeAt(capture, {0, 0, 0}, {8, 3, 3}), std::nullopt, o);
+  const auto* convex = std::get_if<ConvexProxy>(&kept(b).shape);
+  ASSERT_NE(convex, nullptr) << kept(b).kind;
+  EXPECT_LT(signedDistanceOutside(convex->planes, capture), 0.0);
+  EXPECT_TRUE(checkConvexProxy(*convex, capture).empty());
+}
+
+TEST(BuildProbeProxy, LRoomBeatsItsBoundingBoxByHalf) {
+  const LevelRayCaster level(lRoom());
+  const ProbeProxyBuild b = buildProbeProxy(
+      level, probeAt({6.5, 1.5, 1.6}, {3, 0, 0}, {8, 3, 3}),
+      BoxShape{{4, 4, 1.5}, {4, 4, 1.5}, glm::dquat(1, 0, 0, 0)}, [] {
+        ProxyBuildOptions o = fastOptions();
+        o.regenerate = true;
+        return o;
+      }());
+  ASSERT_EQ(b.candidates.front().kind, "authored");
+  EXPECT_NE(b.kept, 0u);
+  EXPECT_LE(kept(b).error.medianDeg, 0.5 * b.candidates.front().error.medianDeg);
+  EXPECT_LT(planeCount(kept(b).shape), 32);
+}
+
+TEST(BuildProbeProxy, AuthoredProxyIsKeptAndMeasured) {
+  const glm::dvec3 lo(0, 0, 0), hi(4, 4, 3);
+  const LevelRayCaster level(boxRoom(glm::vec3(lo), glm::vec3(hi)));
+  const BoxShape tooSmall{{2, 2, 1.5}, {1, 1, 1.5}, glm::dquat(1, 0, 0, 0)};
+  const ProbeProxyBuild b = buildProbeProxy(level, probeAt({2, 2, 1.6}, lo, hi), tooSmall, fastOptions());
+  EXPECT_EQ(b.kept, 0u);
+  EXPECT_EQ(kept(b).kind, "authored");
+  EXPECT_GT(kept(b).error.missRate, 0.2);  // floor points outside the small box are misses
+}
+
+TEST(BuildProbeProxy, ProbeSeeingOnlyAFloorGetsAFindingNotACrash) {
+  LevelMesh floor = boxRoom({-5, -5, 0}, {5, 5, 1});
+  floor.triangles = {floor.triangles[8], floor.triangles[9]};  // keep the floor only
+  floor.parts[0].triangleCount = 2;
+  const LevelRayCaster level(floor);
+  const ProbeProxyBuild b =
+      buildProbeProxy(level, probeAt({0, 0, 1.6}, {-5, -5, 0}, {5, 5, 3}), std::nullopt, fastOptions());
+  EXPECT_FALSE(b.candidates.empty());
+  EXPECT_FALSE(b.findings.empty());
+}
+
+TEST(BuildProbeProxy, ProbeOutsideTheLevelGetsAFinding) {
+  const glm::dvec3 lo(0, 0, 0), hi(4, 4, 3);
+  const LevelRayCaster level(boxRoom(glm::vec3(lo), glm::vec3(hi)));
+  const ProbeProxyBuild b =
+      buildProbeProxy(level, probeAt({10, 2, 1.6}, {8, 0, 0}, {12, 4, 3}), std::nullopt, fastOptions());
+  ASSERT_FALSE(b.findings.empty());
+  EXPECT_NE(b.findings.front().find("outside"), std::string::npos) << b.findings.front();
+}
+
+TEST(BuildProbeProxy, TenCentimetreClosetAndTenKilometresOut) {
+  for (const glm::dvec3 offset : {glm::dvec3(0.0), glm::dvec3(10000.0, -10000.0, 0.0)}) {
+    const glm::dvec3 lo = offset, hi = offset + glm::dvec3(0.1, 0.8, 2.2);
+    const LevelRayCaster level(boxRoom(glm::vec3(lo), glm::vec3(hi)));
+    const ProbeProxyBuild b =
+        buildProbeProxy(level, probeAt(offset + glm::dvec3(0.05, 0.4, 1.6), lo, hi), std::nullopt, fastOptions());
+    EXPECT_LE(planeCount(kept(b).shape), 6) << offset.x;
+    EXPECT_LT(kept(b).error.p95Deg, 0.5) << offset.x;
+    EXPECT_LE(kept(b).error.missRate, 0.01) << offset.x;
+  }
+}
+
+}  // namespace
+}  // namespace probeproxy
