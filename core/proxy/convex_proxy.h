@@ -24,4 +24,11 @@ struct ConvexProxy {
 // How far x lies outside the proxy: max over planes of dot(n, x) - d (negative inside).
 double signedDistanceOutside(const std::vector<ProxyPlane>& planes, glm::dvec3 xMeters);
 
+// How far the proxy reaches from a point inside it: the largest exit distance over a fixed
+// set of `directions` spread evenly over the sphere (infinite if some direction never leaves).
+// A set of planes can be bounded in theory yet reach kilometres out along a direction no
+// sample tested; this is the check that keeps such proxies out.
+double farthestExitMeters(const std::vector<ProxyPlane>& planes, glm::dvec3 fromMeters,
+                          int directions = 2048);
+
 }  // namespace probeproxy

@@ -15,7 +15,8 @@ struct ProxyCandidate {
                            // "authored": how it was made (the method is methodId(shape))
   ProxyShape shape;
   ErrorFigures error;      // on the probe's `mirror_floor` sample set
-  ErrorFigures errorAllSurfaces;
+  ErrorFigures errorAllSurfaces;  // measured for the kept one and each non-convex_k kind;
+                                  // samples == 0 where not measured
   double buildMs = 0.0;    // time to make this candidate (not to evaluate it)
 };
 

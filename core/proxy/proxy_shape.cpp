@@ -3,6 +3,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace probeproxy {
@@ -11,6 +12,24 @@ double signedDistanceOutside(const std::vector<ProxyPlane>& planes, glm::dvec3 x
   double outside = -std::numeric_limits<double>::infinity();
   for (const ProxyPlane& p : planes) outside = std::max(outside, glm::dot(p.normal, x) - p.offsetMeters);
   return outside;
+}
+
+double farthestExitMeters(const std::vector<ProxyPlane>& planes, glm::dvec3 from, int directions) {
+  double farthest = 0.0;
+  for (int i = 0; i < directions; ++i) {
+    // Fibonacci sphere: even coverage, no randomness.
+    const double z = 1.0 - 2.0 * (i + 0.5) / directions;
+    const double phi = i * 2.399963229728653;  // the golden angle
+    const double s = std::sqrt(1.0 - z * z);
+    const glm::dvec3 v(s * std::cos(phi), s * std::sin(phi), z);
+    double exit = std::numeric_limits<double>::infinity();
+    for (const ProxyPlane& p : planes) {
+      const double towards = glm::dot(p.normal, v);
+      if (towards > 0) exit = std::min(exit, (p.offsetMeters - glm::dot(p.normal, from)) / towards);
+    }
+    farthest = std::max(farthest, exit);
+  }
+  return farthest;
 }
 
 std::string_view methodId(const ProxyShape& shape) {

@@ -112,7 +112,13 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
   fitOptions.seed = o.samples.seed;
   ReflectionSampleOptions reportOptions = o.samples;
   reportOptions.seed = o.samples.seed + 1000;
-  const auto fitSamples = buildReflectionSamples(level, probe, SampleSet::MirrorFloor, fitOptions);
+  // Fitting sees every surface, not just floors: a proxy tuned to floor reflections alone
+  // would drop walls that floor reflections happen not to reach.
+  std::vector<ReflectionSample> fitSamples =
+      buildReflectionSamples(level, probe, SampleSet::MirrorFloor, fitOptions);
+  for (const ReflectionSample& s : buildReflectionSamples(level, probe, SampleSet::AllSurfaces, fitOptions)) {
+    fitSamples.push_back(s);
+  }
   const auto floorSamples = buildReflectionSamples(level, probe, SampleSet::MirrorFloor, reportOptions);
   const auto allSamples = buildReflectionSamples(level, probe, SampleSet::AllSurfaces, reportOptions);
   build.samplingMs = msSince(t);
@@ -130,43 +136,65 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
   }
   if (points.empty()) nearest = farthest = 1.0;
 
+  // The hull of what the probe sees comes first: boxes and spheres around the points are
+  // boxes and spheres around the hull's corners, a few hundred points instead of 10^5.
+  std::optional<ConvexProxy> hull;
+  double tolerance = 1e-4;
+  try {
+    t = Clock::now();
+    tolerance = 1e-4 * std::max(farthest, 1e-3) + 1e-4;
+    hull = convexHullProxy(points, tolerance);
+    build.hullMs = msSince(t);
+    if (signedDistanceOutside(hull->planes, capture) >= 0) {
+      hull.reset();
+      throw FitError("the capture point is outside everything it sees: it is outside the level");
+    }
+  } catch (const FitError& e) {
+    // A probe that sees one plane only (or nothing) gets no hull; the other candidates stand.
+    build.findings.push_back(std::string("no convex proxy: ") + e.what());
+  }
+  const std::span<const glm::dvec3> corners =
+      hull ? std::span<const glm::dvec3>(hull->verticesMeters) : std::span<const glm::dvec3>(points);
+
   t = Clock::now();
   add("infinite", InfiniteShape{}, 0.0);
+  // One free parameter needs far fewer samples than a plane set: every fourth will do.
+  std::vector<ReflectionSample> sparseFitSamples;
+  for (std::size_t i = 0; i < fitSamples.size(); i += 4) sparseFitSamples.push_back(fitSamples[i]);
   auto fitStart = Clock::now();
-  add("cheap_k", fitCheapK(capture, fitSamples, 0.5 * (nearest + farthest)), msSince(fitStart));
+  add("cheap_k", fitCheapK(capture, sparseFitSamples, 0.5 * (nearest + farthest)), msSince(fitStart));
   fitStart = Clock::now();
-  add("sphere", fitCaptureSphere(capture, fitSamples, nearest, farthest), msSince(fitStart));
-  if (points.size() >= 4) {
+  add("sphere", fitCaptureSphere(capture, sparseFitSamples, nearest, farthest), msSince(fitStart));
+  if (!corners.empty()) {
     fitStart = Clock::now();
-    add("min_sphere", minimumEnclosingSphere(points), msSince(fitStart));
+    add("min_sphere", minimumEnclosingSphere(corners), msSince(fitStart));
     fitStart = Clock::now();
-    add("aabb", axisAlignedBoxFit(points), msSince(fitStart));
+    add("aabb", axisAlignedBoxFit(corners), msSince(fitStart));
     fitStart = Clock::now();
-    add("obb", orientedBoxFit(points), msSince(fitStart));
+    add("obb", orientedBoxFit(corners), msSince(fitStart));
   }
   build.fitMs = msSince(t);
 
-  // The hull of what the probe sees, then every simplification of it down to a tetrahedron.
-  try {
+  if (hull) {
+    add("hull", *hull, build.hullMs);
+    // Every simplification of the hull's planes and of the planes of the walls the probe sees
+    // (the inner walls of a concave room among them), down to a tetrahedron; error decides
+    // which planes stay.
     t = Clock::now();
-    const double size = std::max(farthest, 1e-3);
-    const double tolerance = 1e-4 * size + 1e-4;
-    const ConvexProxy hull = convexHullProxy(points, tolerance);
-    build.hullMs = msSince(t);
-    if (signedDistanceOutside(hull.planes, capture) >= 0) {
-      throw FitError("the capture point is outside everything it sees: it is outside the level");
-    }
-    add("hull", hull, build.hullMs);
-
-    // The hull's planes and the planes of the walls the probe sees (the inner walls of a
-    // concave room among them); error decides which stay.
-    t = Clock::now();
-    std::vector<ProxyPlane> planes = hull.planes;
+    std::vector<ProxyPlane> planes = hull->planes;
     for (const ProxyPlane& p : visibleSurfacePlanes(hits, capture, o.depthFaceSize, 10 * tolerance)) {
-      planes.push_back(p);
+      const bool onHull = std::any_of(planes.begin(), planes.end(), [&](const ProxyPlane& q) {
+        return glm::dot(p.normal, q.normal) > 0.9998 && std::abs(p.offsetMeters - q.offsetMeters) < 10 * tolerance;
+      });
+      if (!onHull) planes.push_back(p);
     }
+    // A proxy may reach past what the probe sees (an open end of a corridor), but not far:
+    // twice the farthest point seen.
+    const auto acceptable = [&](const std::vector<ProxyPlane>& p) {
+      return isBounded(p) && farthestExitMeters(p, capture) <= 2.0 * farthest;
+    };
     const std::vector<PlaneRemovalStep> steps =
-        greedyPlaneRemoval(planes, capture, fitSamples, 4, isBounded);
+        greedyPlaneRemoval(planes, capture, fitSamples, 4, acceptable);
     build.simplifyMs = msSince(t);
     const double perStepMs = steps.size() > 1 ? build.simplifyMs / double(steps.size() - 1) : 0.0;
     for (std::size_t s = 1; s < steps.size(); ++s) {
@@ -174,20 +202,21 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
       simplified.planes = steps[s].planes;
       add("convex_" + std::to_string(steps[s].planes.size()), std::move(simplified), perStepMs * double(s));
     }
-  } catch (const FitError& e) {
-    // A probe that sees one plane only (or nothing) gets no hull; the other candidates stand.
-    build.findings.push_back(std::string("no convex proxy: ") + e.what());
   }
 
   t = Clock::now();
-  for (ProxyCandidate& c : candidates) {
-    c.error = evaluateShape(c.shape, capture, floorSamples);
-    c.errorAllSurfaces = evaluateShape(c.shape, capture, allSamples);
-  }
-  build.evaluateMs = msSince(t);
-
+  for (ProxyCandidate& c : candidates) c.error = evaluateShape(c.shape, capture, floorSamples);
   build.candidates = std::move(candidates);
   build.kept = selectProxy(build.candidates, o);
+  // all_surfaces for every kind of proxy and the kept one; the simplification's many steps
+  // are selected on mirror_floor and reported on it alone.
+  for (std::size_t i = 0; i < build.candidates.size(); ++i) {
+    ProxyCandidate& c = build.candidates[i];
+    if (i == build.kept || c.kind.rfind("convex_", 0) != 0) {
+      c.errorAllSurfaces = evaluateShape(c.shape, capture, allSamples);
+    }
+  }
+  build.evaluateMs = msSince(t);
   // Only the kept simplification needs its corners: engines and Blender draw it.
   if (auto* convex = std::get_if<ConvexProxy>(&build.candidates[build.kept].shape);
       convex != nullptr && convex->verticesMeters.empty()) {

@@ -11,7 +11,8 @@
 namespace probeproxy {
 
 enum class SampleSet {
-  MirrorFloor,  // upward-facing surfaces inside the influence volume, cameras at eye height
+  MirrorFloor,  // upward-facing surfaces inside the influence volume, seen by cameras at eye
+                // height as a player sees them (reflection_samples.cpp)
   AllSurfaces,  // every surface inside the influence volume, same cameras
 };
 

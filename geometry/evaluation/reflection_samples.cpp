@@ -14,21 +14,38 @@ std::string_view sampleSetName(SampleSet set) {
 
 namespace {
 
-// Self-intersection offset that grows with the distance from the origin, where float
-// vertices are coarser.
-double surfaceEpsilon(glm::dvec3 x) { return 1e-4 + 1e-6 * glm::length(x); }
+// Self-intersection offset. The ray caster works relative to the level's centre, so this need
+// not grow with the distance from the world origin; a tenth of a millimetre suits rooms from a
+// closet to a hangar.
+double surfaceEpsilon(glm::dvec3) { return 1e-4; }
 
-glm::dvec3 uniformDirection(std::mt19937& rng, bool lowerHemisphereOnly) {
+// all_surfaces: every direction alike.
+glm::dvec3 uniformDirection(std::mt19937& rng) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const double z = lowerHemisphereOnly ? -unit(rng) : 2.0 * unit(rng) - 1.0;
+  const double z = 2.0 * unit(rng) - 1.0;
   const double phi = 2.0 * M_PI * unit(rng);
   const double s = std::sqrt(std::max(0.0, 1.0 - z * z));
   return {s * std::cos(phi), s * std::sin(phi), z};
 }
 
+// mirror_floor: what a player at eye height sees of the floor. Mostly the camera looks level,
+// in any direction, and the floor fills the lower half of a 90-degree-high view: a pixel row
+// there is uniform in tan(depression) from 2 degrees (the far floor, where reflections graze)
+// to 45. A quarter of the time the player looks down, uniform in angle from 45 to 89 degrees:
+// in a closet that is the only floor there is to see.
+glm::dvec3 playerFloorDirection(std::mt19937& rng) {
+  constexpr double kMinDepressionTan = 0.035;  // 2 degrees
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const bool lookingDown = unit(rng) < 0.25;
+  const double tanDepression = lookingDown ? std::tan((45.0 + 44.0 * unit(rng)) * M_PI / 180.0)
+                                           : kMinDepressionTan + (1.0 - kMinDepressionTan) * unit(rng);
+  const double phi = 2.0 * M_PI * unit(rng);
+  return glm::normalize(glm::dvec3(std::cos(phi), std::sin(phi), -tanDepression));
+}
+
 RayHit castDouble(const LevelRayCaster& level, glm::dvec3 origin, glm::dvec3 direction,
                   double tMin = 0.0) {
-  return level.firstHit({glm::vec3(origin), glm::vec3(direction), static_cast<float>(tMin)});
+  return level.firstHit({origin, glm::vec3(direction), static_cast<float>(tMin)});
 }
 
 // Where the reflection ray lands, and whether the capture point can see that place.
@@ -100,7 +117,7 @@ std::vector<ReflectionSample> buildReflectionSamples(const LevelRayCaster& level
     // Cameras take turns, so every part of the volume is seen even when the target is small.
     for (std::size_t i = 0; i < batch; ++i) {
       const glm::dvec3 eye = cameras[(attempts + i) % cameras.size()];
-      rays[i] = {glm::vec3(eye), glm::vec3(uniformDirection(rng, floorOnly))};
+      rays[i] = {eye, glm::vec3(floorOnly ? playerFloorDirection(rng) : uniformDirection(rng))};
     }
     level.firstHits(rays, hits);
     attempts += batch;

@@ -12,7 +12,7 @@ std::vector<Ray> depthCubeRays(glm::dvec3 captureMeters, int faceSize) {
     for (int row = 0; row < faceSize; ++row) {
       for (int col = 0; col < faceSize; ++col) {
         // Unit directions, so t is the Euclidean distance in metres.
-        rays.push_back({glm::vec3(captureMeters), texelDirection(CubeFace(f), col, row, faceSize)});
+        rays.push_back({captureMeters, texelDirection(CubeFace(f), col, row, faceSize)});
       }
     }
   }

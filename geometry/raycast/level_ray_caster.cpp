@@ -1,10 +1,12 @@
 #include "geometry/raycast/level_ray_caster.h"
 
 #include <embree3/rtcore.h>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -14,6 +16,9 @@ namespace probeproxy {
 struct LevelRayCaster::Embree {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
+  // Embree works in float. Vertices and ray origins are stored relative to the centre of the
+  // level's bounds, so a level 10 km from the world origin is cast as precisely as one at it.
+  glm::dvec3 originMeters{0.0};
 };
 
 namespace {
@@ -26,11 +31,12 @@ void throwOnEmbreeError(RTCDevice device, const char* what) {
   }
 }
 
-RTCRayHit toEmbree(const Ray& ray) {
+RTCRayHit toEmbree(const Ray& ray, glm::dvec3 levelOrigin) {
   RTCRayHit rh{};
-  rh.ray.org_x = ray.originMeters.x;
-  rh.ray.org_y = ray.originMeters.y;
-  rh.ray.org_z = ray.originMeters.z;
+  const glm::vec3 origin(ray.originMeters - levelOrigin);
+  rh.ray.org_x = origin.x;
+  rh.ray.org_y = origin.y;
+  rh.ray.org_z = origin.z;
   rh.ray.dir_x = ray.direction.x;
   rh.ray.dir_y = ray.direction.y;
   rh.ray.dir_z = ray.direction.z;
@@ -59,6 +65,10 @@ constexpr std::size_t kBatch = 256;
 }  // namespace
 
 LevelRayCaster::LevelRayCaster(const LevelMesh& level) : embree_(std::make_unique<Embree>()) {
+  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+  for (const glm::vec3& p : level.positionsMeters) lo = glm::min(lo, glm::dvec3(p)), hi = glm::max(hi, glm::dvec3(p));
+  if (!level.positionsMeters.empty()) embree_->originMeters = 0.5 * (lo + hi);
+
   embree_->device = rtcNewDevice(nullptr);
   if (embree_->device == nullptr) throw std::runtime_error("Embree could not create a device");
   // Robust mode: rays that graze shared edges of a closed room must not slip through the crack.
@@ -72,9 +82,10 @@ LevelRayCaster::LevelRayCaster(const LevelMesh& level) : embree_(std::make_uniqu
       geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
       level.positionsMeters.size() + 1));
   for (std::size_t i = 0; i < level.positionsMeters.size(); ++i) {
-    vertices[3 * i + 0] = level.positionsMeters[i].x;
-    vertices[3 * i + 1] = level.positionsMeters[i].y;
-    vertices[3 * i + 2] = level.positionsMeters[i].z;
+    const glm::vec3 local(glm::dvec3(level.positionsMeters[i]) - embree_->originMeters);
+    vertices[3 * i + 0] = local.x;
+    vertices[3 * i + 1] = local.y;
+    vertices[3 * i + 2] = local.z;
   }
   auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
       geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
@@ -99,7 +110,7 @@ LevelRayCaster::~LevelRayCaster() {
 RayHit LevelRayCaster::firstHit(const Ray& ray) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  RTCRayHit rh = toEmbree(ray);
+  RTCRayHit rh = toEmbree(ray, embree_->originMeters);
   rtcIntersect1(embree_->scene, &context, &rh);
   return fromEmbree(rh);
 }
@@ -117,7 +128,7 @@ void LevelRayCaster::firstHits(std::span<const Ray> rays, std::span<RayHit> hits
     for (std::size_t b = range.begin(); b != range.end(); ++b) {
       const std::size_t first = b * kBatch;
       const std::size_t count = std::min(kBatch, rays.size() - first);
-      for (std::size_t i = 0; i < count; ++i) stream[i] = toEmbree(rays[first + i]);
+      for (std::size_t i = 0; i < count; ++i) stream[i] = toEmbree(rays[first + i], embree_->originMeters);
       rtcIntersect1M(embree_->scene, &context, stream, static_cast<unsigned>(count),
                      sizeof(RTCRayHit));
       for (std::size_t i = 0; i < count; ++i) hits[first + i] = fromEmbree(stream[i]);

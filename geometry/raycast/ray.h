@@ -9,7 +9,9 @@
 namespace probeproxy {
 
 struct Ray {
-  glm::vec3 originMeters{0.0f};
+  // Double, so a level far from the world origin keeps its precision: the ray caster works
+  // relative to the level's own centre.
+  glm::dvec3 originMeters{0.0};
   glm::vec3 direction{0, 0, 1};  // need not be unit; distances below are in units of its length
   float tMin = 0.0f;
   float tMax = std::numeric_limits<float>::infinity();

@@ -144,21 +144,27 @@ std::vector<ProxyPlane> activePlanes(const std::vector<ProxyPlane>& planes, cons
 std::vector<PlaneRemovalStep> greedyPlaneRemoval(
     const std::vector<ProxyPlane>& planes, glm::dvec3 capture,
     std::span<const ReflectionSample> samples, int minPlanes,
-    const std::function<bool(const std::vector<ProxyPlane>&)>& isBounded) {
+    const std::function<bool(const std::vector<ProxyPlane>&)>& isAcceptable) {
   RemovalState state(planes, capture, samples);
   const double perSample = 1.0 / std::max<std::size_t>(1, state.sampleCount());
   std::vector<PlaneRemovalStep> steps = {{planes, state.totalCost() * perSample}};
 
   for (std::size_t count = planes.size(); count > static_cast<std::size_t>(std::max(minPlanes, 4)); --count) {
-    std::size_t best = planes.size();
-    double bestDelta = kInfinity;
+    // Cheapest removal first; the acceptability test (an exact boundedness test, and the
+    // caller's own) runs only until one passes.
+    std::vector<std::pair<double, std::size_t>> order;
     for (std::size_t j = 0; j < planes.size(); ++j) {
-      if (!state.isActive(j)) continue;
-      const double delta = state.costOfRemoving(j);
-      // Ties go to the lower index, so the sequence is the same on every run.
-      if (delta < bestDelta && isBounded(activePlanes(planes, state, j))) best = j, bestDelta = delta;
+      if (state.isActive(j)) order.emplace_back(state.costOfRemoving(j), j);
     }
-    if (best == planes.size()) break;  // every remaining plane is needed to stay bounded
+    std::sort(order.begin(), order.end());  // ties go to the lower index: the same every run
+    std::size_t best = planes.size();
+    for (const auto& [delta, j] : order) {
+      if (isAcceptable(activePlanes(planes, state, j))) {
+        best = j;
+        break;
+      }
+    }
+    if (best == planes.size()) break;  // every remaining plane is needed
     state.remove(best);
     steps.push_back({activePlanes(planes, state, planes.size()), state.totalCost() * perSample});
   }

@@ -19,11 +19,11 @@ struct PlaneRemovalStep {
 };
 
 // steps[0] holds all input planes; each next step has one plane fewer, down to `minPlanes` or
-// until no plane can go without the proxy becoming unbounded. `isBounded` says whether a set of
-// planes encloses a finite volume.
+// until no plane can go without the rest failing `isAcceptable` (bounded, and not reaching
+// absurdly far: see farthestExitMeters).
 std::vector<PlaneRemovalStep> greedyPlaneRemoval(
     const std::vector<ProxyPlane>& planes, glm::dvec3 captureMeters,
     std::span<const ReflectionSample> samples, int minPlanes,
-    const std::function<bool(const std::vector<ProxyPlane>&)>& isBounded);
+    const std::function<bool(const std::vector<ProxyPlane>&)>& isAcceptable);
 
 }  // namespace probeproxy

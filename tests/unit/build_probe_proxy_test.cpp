@@ -90,7 +90,12 @@ TEST(BuildProbeProxy, LRoomBeatsItsBoundingBoxByHalf) {
       }());
   ASSERT_EQ(b.candidates.front().kind, "authored");
   EXPECT_NE(b.kept, 0u);
-  EXPECT_LE(kept(b).error.medianDeg, 0.5 * b.candidates.front().error.medianDeg);
+  // Most reflections land on walls both proxies model exactly, so medians sit at the numeric
+  // floor for both; the box's failure shows in the tail: the arm's inner wall is not on it.
+  const ErrorFigures& artist = b.candidates.front().error;
+  EXPECT_GT(artist.p95Deg, 10.0);
+  EXPECT_LE(kept(b).error.p95Deg, 0.05 * artist.p95Deg);
+  EXPECT_LE(kept(b).error.medianDeg, artist.medianDeg + 0.005);
   EXPECT_LT(planeCount(kept(b).shape), 32);
 }
 

@@ -43,7 +43,9 @@ std::string buildReportJson(const std::vector<ProbeProxyBuild>& builds) {
                             {"method", std::string(methodId(c.shape))},
                             {"planes", planeCount(c.shape)},
                             {"error", errorJson(c.error)},
-                            {"error_all_surfaces", errorJson(c.errorAllSurfaces)},
+                            {"error_all_surfaces", c.errorAllSurfaces.samples > 0
+                                                       ? errorJson(c.errorAllSurfaces)
+                                                       : nlohmann::json(nullptr)},
                             {"build_ms", c.buildMs}});
     }
     probes.push_back({{"name", b.probe},

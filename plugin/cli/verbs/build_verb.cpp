@@ -1,11 +1,17 @@
 #include "core/errors/input_error.h"
+#include "geometry/build/build_scene_proxies.h"
+#include "geometry/export/runtime_export.h"
 #include "geometry/level/load_level.h"
-#include "geometry/raycast/capture_depth_cube.h"
 #include "geometry/scene/scene_file.h"
+#include "plugin/cli/reports/build_report.h"
 #include "plugin/cli/verb.h"
+
+#include <tbb/global_control.h>
 
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <unistd.h>
 
 namespace probeproxy::cli {
 
@@ -15,22 +21,34 @@ struct BuildOptions {
   std::string scene;
   std::string out;
   bool json = false;
-  double toleranceDeg = 1.0;
-  int maxPlanes = 32;
-  int faceSize = 128;
+  int threads = 0;  // 0: all cores
+  ProxyBuildOptions proxy;
 };
 
 int runBuild(const BuildOptions& o) {
-  // Everything the proxy fit will need is read and checked first, so bad input is reported
-  // before any work and before anything is written.
+  std::optional<tbb::global_control> threadLimit;
+  if (o.threads > 0) threadLimit.emplace(tbb::global_control::max_allowed_parallelism, o.threads);
+
+  // Everything is read and checked before any work, and nothing is written until the end.
   const Scene scene = readSceneFile(o.scene);
   const LevelMesh level = loadLevel(scene);
   const LevelRayCaster rayCaster(level);
-  for (const Probe& probe : scene.probes) captureDepthCube(rayCaster, probe.captureMeters, o.faceSize);
-  std::cerr << "probeproxy build: read " << scene.probes.size() << " probes and "
-            << level.triangles.size() << " triangles from " << o.scene << "\n"
-            << "probeproxy build: not available yet: proxy generation lands with issue 3\n";
-  return kExitBadInput;
+
+  const bool terminal = ::isatty(STDERR_FILENO) != 0;
+  const std::vector<ProbeProxyBuild> builds = buildSceneProxies(
+      scene, rayCaster, o.proxy, [&](std::size_t done, std::size_t total) {
+        if (terminal) std::cerr << "\rprobeproxy build: " << done << "/" << total << " probes" << std::flush;
+      });
+  if (terminal) std::cerr << "\n";
+
+  writeRuntimeExport(scene, builds, o.out);
+  if (o.json) {
+    std::cout << buildReportJson(builds);
+  } else {
+    printBuildTable(std::cout, builds);
+    std::cout << "wrote " << (std::filesystem::path(o.out) / "proxies.json").string() << " and proxies.glb\n";
+  }
+  return 0;
 }
 
 }  // namespace
@@ -38,17 +56,26 @@ int runBuild(const BuildOptions& o) {
 Verb addBuildVerb(CLI::App& app) {
   auto o = std::make_shared<BuildOptions>();
   CLI::App* build = app.add_subcommand(
-      "build", "Build each probe's convex proxy from the level and measure its error");
+      "build", "Build each probe's convex proxy from the level, measure it, export it");
   build->add_option("scene", o->scene, "scene file (*.scene.json)")->required();
   build->add_option("--out", o->out, "output folder for proxies.json and proxies.glb")->required();
   build->add_flag("--json", o->json, "print the build report as JSON on stdout");
-  build->add_option("--tolerance-deg", o->toleranceDeg,
-                    "keep the simplest proxy whose p95 angular error is under this")
+  build->add_option("--tolerance-deg", o->proxy.toleranceDeg,
+                    "keep the fewest planes whose mirror_floor p95 angular error is under this")
       ->capture_default_str()->check(CLI::PositiveNumber);
-  build->add_option("--max-planes", o->maxPlanes, "never use more planes than this")
+  build->add_option("--max-planes", o->proxy.maxPlanes, "never keep more planes than this")
       ->capture_default_str()->check(CLI::Range(4, 256));
-  build->add_option("--face-size", o->faceSize, "depth cube face size in texels")
+  build->add_option("--max-miss-rate", o->proxy.maxMissRate,
+                    "share of visible samples a kept proxy may miss")
+      ->capture_default_str()->check(CLI::Range(0.0, 1.0));
+  build->add_option("--face-size", o->proxy.depthFaceSize, "depth cube face size in texels")
       ->capture_default_str()->check(CLI::Range(8, 2048));
+  build->add_option("--samples", o->proxy.samples.targetSamples, "reflection samples per set")
+      ->capture_default_str()->check(CLI::Range(64, 1000000));
+  build->add_flag("--regenerate", o->proxy.regenerate,
+                  "generate a proxy also where the scene authors one (which is measured beside)");
+  build->add_option("--threads", o->threads, "worker threads (0: all cores)")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
   return {build, [o] { return runBuild(*o); }};
 }
 

@@ -1,0 +1,194 @@
+#include "geometry/export/runtime_export.h"
+
+#include "geometry/export/unit_transform.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <set>
+#include <stdexcept>
+
+namespace probeproxy {
+
+namespace {
+
+bool isFinite(glm::dvec3 v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+bool isFinite(const glm::dquat& q) {
+  return std::isfinite(q.w) && std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z);
+}
+
+bool isPositive(glm::dvec3 v) { return v.x > 0.0 && v.y > 0.0 && v.z > 0.0; }
+
+[[noreturn]] void failShape(const std::string& probe, const std::string& problem) {
+  throw std::invalid_argument("runtime export: probe '" + probe + "': " + problem);
+}
+
+// The build is ours, not the user's: a broken shape is a bug upstream, not bad input.
+void checkShape(const std::string& probe, const ProxyShape& shape) {
+  if (const auto* k = std::get_if<CheapKShape>(&shape)) {
+    if (!std::isfinite(k->kPerMeter)) failShape(probe, "cheap_k with a non-finite k");
+  } else if (const auto* box = std::get_if<BoxShape>(&shape)) {
+    if (!isFinite(box->centerMeters) || !isPositive(box->halfExtentsMeters) ||
+        !isFinite(box->halfExtentsMeters) || !isFinite(box->worldFromBox)) {
+      failShape(probe, "box with a non-finite or empty extent");
+    }
+  } else if (const auto* sphere = std::get_if<SphereShape>(&shape)) {
+    if (!isFinite(sphere->centerMeters) || !isPositive(sphere->radiiMeters) ||
+        !isFinite(sphere->radiiMeters) || !isFinite(sphere->worldFromSphere)) {
+      failShape(probe, "sphere with a non-finite or empty radius");
+    }
+  } else if (const auto* convex = std::get_if<ConvexProxy>(&shape)) {
+    if (convex->planes.empty()) failShape(probe, "convex proxy without planes");
+    for (const ProxyPlane& p : convex->planes) {
+      if (!isFinite(p.normal) || !std::isfinite(p.offsetMeters)) {
+        failShape(probe, "convex proxy with a non-finite plane");
+      }
+    }
+    for (const glm::dvec3& v : convex->verticesMeters) {
+      if (!isFinite(v)) failShape(probe, "convex proxy with a non-finite vertex");
+    }
+    for (const glm::uvec3& t : convex->triangles) {
+      if (t.x >= convex->verticesMeters.size() || t.y >= convex->verticesMeters.size() ||
+          t.z >= convex->verticesMeters.size()) {
+        failShape(probe, "convex proxy with a triangle index out of range");
+      }
+    }
+  }
+}
+
+// Lowest p95 among the candidates `accepts` takes; unmeasured (NaN) last, ties to the first.
+std::optional<std::size_t> bestCandidate(const std::vector<ProxyCandidate>& candidates,
+                                         const std::function<bool(const ProxyShape&)>& accepts) {
+  std::optional<std::size_t> best;
+  const auto p95 = [&](std::size_t i) {
+    const double v = candidates[i].error.p95Deg;
+    return std::isnan(v) ? INFINITY : v;
+  };
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (!accepts(candidates[i].shape)) continue;
+    if (!best || p95(i) < p95(*best)) best = i;
+  }
+  return best;
+}
+
+bool isAabb(const ProxyShape& s) { return methodId(s) == "aabb"; }
+bool isBox(const ProxyShape& s) { return std::holds_alternative<BoxShape>(s); }
+bool isTrueSphere(const ProxyShape& s) {
+  const auto* sphere = std::get_if<SphereShape>(&s);
+  return sphere && sphere->radiiMeters.x == sphere->radiiMeters.y &&
+         sphere->radiiMeters.y == sphere->radiiMeters.z;
+}
+
+EngineSource sourceOf(const ProxyCandidate& c) { return {c.kind, c.error}; }
+
+RuntimeEngines enginesFor(const ProbeProxyBuild& build, const Probe& probe) {
+  RuntimeEngines engines;
+  const auto& cs = build.candidates;
+  if (const auto i = bestCandidate(cs, isAabb)) {
+    engines.unity = unityReflectionProbe(std::get<BoxShape>(cs[*i].shape), probe.captureMeters);
+    engines.unity->source = sourceOf(cs[*i]);
+  }
+  if (const auto i = bestCandidate(cs, isBox)) {
+    const BoxShape& box = std::get<BoxShape>(cs[*i].shape);
+    engines.unrealBox = unrealBoxReflectionCapture(box, probe.captureMeters, probe.influence);
+    engines.unrealBox->source = sourceOf(cs[*i]);
+    engines.godot = godotReflectionProbe(box, probe.captureMeters);
+    engines.godot->source = sourceOf(cs[*i]);
+    engines.bevy = bevyLightProbe(box, probe.captureMeters);
+    engines.bevy->source = sourceOf(cs[*i]);
+  }
+  if (const auto i = bestCandidate(cs, isTrueSphere)) {
+    engines.unrealSphere =
+        unrealSphereReflectionCapture(std::get<SphereShape>(cs[*i].shape), probe.captureMeters);
+    engines.unrealSphere->source = sourceOf(cs[*i]);
+  }
+  return engines;
+}
+
+// Enlighten measures distance to a box in the box's own frame; the probe's region is its
+// influence's outer range, and a sphere's is its bounding cube.
+EnlightenBlend enlightenFor(const InfluenceVolume& influence) {
+  EnlightenBlend blend;
+  if (const auto* box = std::get_if<BoxInfluence>(&influence)) {
+    blend.box = {box->centerMeters, box->halfExtentsMeters, box->worldFromBox};
+  } else {
+    const auto& sphere = std::get<SphereInfluence>(influence);
+    blend.box = {sphere.centerMeters, glm::dvec3(sphere.radiusMeters), glm::dquat(1, 0, 0, 0)};
+  }
+  return blend;
+}
+
+void describeShape(const ProxyShape& shape, RuntimeProbe& out) {
+  if (const auto* k = std::get_if<CheapKShape>(&shape)) {
+    out.kPerMeter = k->kPerMeter;
+  } else if (const auto* box = std::get_if<BoxShape>(&shape)) {
+    out.box = *box;
+    out.worldToUnit = toUnitTransform(box->centerMeters, box->halfExtentsMeters, box->worldFromBox);
+    out.convex = convexFromBox(*box);
+  } else if (const auto* sphere = std::get_if<SphereShape>(&shape)) {
+    out.sphere = *sphere;
+    out.worldToUnit =
+        toUnitTransform(sphere->centerMeters, sphere->radiiMeters, sphere->worldFromSphere);
+    out.convex = icosphereMesh(sphere->centerMeters, sphere->radiiMeters, sphere->worldFromSphere);
+    out.meshIsDisplayOnly = true;
+  } else if (const auto* convex = std::get_if<ConvexProxy>(&shape)) {
+    out.convex = *convex;
+  }
+}
+
+}  // namespace
+
+RuntimeExport makeRuntimeExport(const Scene& scene, const std::vector<ProbeProxyBuild>& builds) {
+  if (!(scene.metersPerUnit > 0.0) || !std::isfinite(scene.metersPerUnit)) {
+    throw std::invalid_argument("runtime export: meters_per_unit must be a positive number");
+  }
+  RuntimeExport runtime;
+  runtime.fileUp = scene.fileUp;
+  runtime.metersPerUnit = scene.metersPerUnit;
+  std::set<std::string> seen;
+  for (const ProbeProxyBuild& build : builds) {
+    const auto probe = std::find_if(scene.probes.begin(), scene.probes.end(),
+                                    [&](const Probe& p) { return p.name == build.probe; });
+    if (probe == scene.probes.end()) failShape(build.probe, "not a probe of the scene");
+    if (!seen.insert(build.probe).second) failShape(build.probe, "built twice");
+    if (build.kept >= build.candidates.size()) failShape(build.probe, "kept index out of range");
+    for (const ProxyCandidate& c : build.candidates) checkShape(build.probe, c.shape);
+
+    const ProxyCandidate& kept = build.candidates[build.kept];
+    RuntimeProbe out;
+    out.name = probe->name;
+    out.captureMeters = probe->captureMeters;
+    out.kind = std::string(methodId(kept.shape));
+    out.candidate = kept.kind;
+    describeShape(kept.shape, out);
+    out.planesCount = planeCount(kept.shape);
+    out.influence = probe->influence;
+    out.enlighten = enlightenFor(probe->influence);
+    out.error = kept.error;
+    out.engines = enginesFor(build, *probe);
+    runtime.probes.push_back(std::move(out));
+  }
+  return runtime;
+}
+
+LevelMesh runtimeExportMesh(const RuntimeExport& runtime) {
+  LevelMesh mesh;
+  for (const RuntimeProbe& probe : runtime.probes) {
+    if (probe.convex.triangles.empty()) continue;
+    LevelMesh part;
+    for (const glm::dvec3& v : probe.convex.verticesMeters) part.positionsMeters.emplace_back(v);
+    part.triangles = probe.convex.triangles;
+    part.parts.push_back(
+        {probe.name + "_proxy", {}, 0, static_cast<std::uint32_t>(probe.convex.triangles.size())});
+    appendLevelMesh(mesh, part);
+  }
+  return mesh;
+}
+
+}  // namespace probeproxy

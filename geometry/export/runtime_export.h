@@ -1,0 +1,163 @@
+#pragma once
+// The runtime export (DESIGN.md "Contracts": Runtime export): `proxies.json` + `proxies.glb`,
+// files a game engine loads without this library. RuntimeExport is what proxies.json holds, in
+// the world frame (Z up, metres), so that readRuntimeExport gives back what was written.
+//
+// proxies.json, format id "probeproxy_runtime", version 1
+// -------------------------------------------------------
+// Coordinates are in the scene file's frame and unit (`up`, `meters_per_unit` copied from
+// it), so the engine side sees what the artist declared; a loader converts back as the scene
+// file's reader does: metres = value * meters_per_unit, and a Y-up point (x, y, z) is the
+// Z-up point (x, -z, y). Rotations are unit quaternions [w, x, y, z] taking a shape's own
+// frame to the file's frame; boxes store half-extents along their own axes (with Y up, a box's
+// own axes turn with the file's: Y-up half-extents (x, y, z) are Z-up (x, z, y)). Members
+// appear in the order below. `null` stands for a figure that was not measured (NaN).
+//
+// {
+//   "probeproxy_runtime": 1,
+//   "up": "Z",                           // or "Y"
+//   "meters_per_unit": 1.0,
+//   "mesh_file": "proxies.glb",          // one node "<probe name>_proxy" per probe whose proxy
+//                                        // has a volume; glTF: metres, Y up
+//   "probes": [ {
+//     "name": "corridor_a",
+//     "capture": [x, y, z],              // the cubemap's centre
+//     "kind": "obb",                     // the method a shader runs: infinite, cheap_k, sphere,
+//                                        // aabb, obb or convex
+//     "candidate": "obb",                // the build candidate it is: authored, hull, convex_12..
+//     "k": 0.5,                          // cheap_k only, per file unit: the lookup is
+//                                        // normalize(k * (x - capture) + r)
+//     "box": { "center", "half_extents", "rotation" },  // aabb and obb only
+//     "sphere": { "center", "radii", "rotation" },      // sphere only (an ellipsoid if radii
+//                                                       // differ)
+//     "world_to_unit": [[4 numbers], [..], [..], [0.0, 0.0, 0.0, 1.0]],
+//                                        // aabb, obb, sphere only: row-major, unit = M * [x, y,
+//                                        // z, 1] maps the box to [-1, 1]^3 (seed 000's unit box
+//                                        // space), the sphere to the unit sphere (seed 001's
+//                                        // lighting space); file frame in, the shape's own axes
+//                                        // out
+//     "planes_count": 6,                 // planes a shader tests: 0 for infinite, cheap_k and
+//                                        // sphere, 6 for boxes, k for convex
+//     "planes": [[nx, ny, nz, d], ..],   // outward unit normal n, inside where n . x <= d;
+//                                        // [] for infinite, cheap_k and sphere
+//     "vertices": [[x, y, z], ..],       // the proxy's boundary; [] for infinite and cheap_k
+//     "triangles": [[a, b, c], ..],      // 0-based into vertices, counter-clockwise from outside
+//     "mesh_is_display_only": false,     // true for sphere: an icosphere (162 vertices) on the
+//                                        // sphere to look at, not what the method intersects
+//     "influence": { "kind": "box", "center", "half_extents", "rotation", "inner_half_extents" }
+//               or { "kind": "sphere", "center", "radius", "inner_radius" },
+//                                        // Lagarde's blend: 100% inside the inner range, fading
+//                                        // to 0% at the outer one
+//     "blend": { "enlighten": { "epsilon": 0.000001, "box": { "center", "half_extents",
+//                                                           "rotation" } } },
+//                                        // Enlighten's weight 1 / (epsilon + distSq), distSq the
+//                                        // squared distance (file units) from the point to the
+//                                        // box, measured in the box's own frame; the box is the
+//                                        // influence's outer range (a sphere's bounding cube)
+//     "error": { "median_deg", "p95_deg", "max_deg", "miss_rate", "occluded_rate", "samples" },
+//                                        // of the kept proxy, on the mirror_floor sample set
+//     "engines": {                       // for runtimes that take only a box or a sphere; each
+//                                        // is null when no candidate of that kind was built.
+//                                        // Engine frames and units, see engine_probes.h;
+//                                        // quaternions [x, y, z, w]; each entry has "candidate"
+//                                        // and "error" of the candidate it was made from
+//       "unity_reflection_probe": { .., "position", "center", "size", "box_projection" },
+//       "unreal_box_reflection_capture": { .., "location", "rotation_xyzw", "scale_3d",
+//                                          "capture_offset", "box_transition_distance" },
+//       "unreal_sphere_reflection_capture": { .., "location", "influence_radius",
+//                                             "capture_offset" },
+//       "godot_reflection_probe": { .., "origin", "rotation_xyzw", "size", "origin_offset",
+//                                   "box_projection", "exact" },
+//       "bevy_light_probe": { .., "translation", "rotation_xyzw", "scale",
+//                             "parallax_correction": "auto", "exact" }
+//     }
+//   } ]
+// }
+//
+// Unity gets the best `aabb` candidate (lowest p95), the other box engines the best `aabb` or
+// `obb`, Unreal's sphere capture the best `sphere` candidate with equal radii. Numbers in the
+// file read back to the same world values (shortest round-trip decimals; a file-unit value is
+// rounded to 1e-9 only where that reads back to the same metres); engine numbers are rounded
+// to 1e-9 of the engine's unit. Same input, same bytes.
+
+#include "core/measures/error_figures.h"
+#include "core/proxy/proxy_candidate.h"
+#include "core/proxy/proxy_shape.h"
+#include "core/scene/scene.h"
+#include "geometry/export/engine_probes.h"
+#include "geometry/level/level_mesh.h"
+
+#include <glm/mat4x4.hpp>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace probeproxy {
+
+inline constexpr int kRuntimeExportVersion = 1;
+inline constexpr char kRuntimeExportFormatId[] = "probeproxy_runtime";
+inline constexpr char kProxiesJsonName[] = "proxies.json";
+inline constexpr char kProxiesGlbName[] = "proxies.glb";
+inline constexpr double kEnlightenEpsilon = 1e-6;  // seed 004: 1 / (epsilon + distSq)
+
+struct EnlightenBlend {
+  double epsilon = kEnlightenEpsilon;
+  BoxShape box;  // world frame: the box distSq is measured to
+};
+
+struct RuntimeProbe {
+  std::string name;
+  glm::dvec3 captureMeters{0.0};
+  std::string kind;                       // methodId of the kept shape
+  std::string candidate;                  // ProxyCandidate::kind of the kept one
+  std::optional<double> kPerMeter;        // cheap_k
+  std::optional<BoxShape> box;            // aabb, obb
+  std::optional<SphereShape> sphere;      // sphere
+  std::optional<glm::dmat4> worldToUnit;  // aabb, obb, sphere: world point -> unit box/sphere
+  ConvexProxy convex;  // planes (none for a sphere) and boundary mesh (none without a volume)
+  bool meshIsDisplayOnly = false;  // the sphere's icosphere
+  int planesCount = 0;             // planeCount(kept shape)
+  InfluenceVolume influence;
+  EnlightenBlend enlighten;
+  ErrorFigures error;  // mirror_floor
+  RuntimeEngines engines;
+};
+
+struct RuntimeExport {
+  UpAxis fileUp = UpAxis::Z;  // the scene file's, written as `up`
+  double metersPerUnit = 1.0;
+  std::vector<RuntimeProbe> probes;  // in the order of the builds
+};
+
+// The export of `builds` (one per probe, each naming a probe of `scene`, in the order given).
+// Throws std::invalid_argument for builds that break that contract (unknown or repeated probe,
+// `kept` out of range, a non-finite or empty shape).
+RuntimeExport makeRuntimeExport(const Scene& scene, const std::vector<ProbeProxyBuild>& builds);
+
+// The bytes of proxies.json. Deterministic.
+std::string runtimeExportJson(const RuntimeExport& runtime);
+
+// Writes `outFolder`/proxies.json and proxies.glb. Both are built in memory and written to
+// temporary files first; only when both are complete are they renamed into place (proxies.glb
+// first, proxies.json last), so neither is ever left half-written.
+// Nothing an artist authored is overwritten; InputError (naming the file) if
+//   - outFolder holds a proxies.json that is not a probeproxy runtime export,
+//   - outFolder holds a proxies.glb but no probeproxy proxies.json beside it,
+//   - an output path is the scene file, a level mesh or an authored proxy mesh.
+void writeRuntimeExport(const Scene& scene, const std::vector<ProbeProxyBuild>& builds,
+                        const std::filesystem::path& outFolder);
+
+// Reads proxies.json back into the world frame. Throws InputError(file, "<JSON path>: <what
+// was expected>, got <what was there>") for the first problem, e.g.
+// "$.probes[0].capture: expected an array of 3 finite numbers, got "a"".
+RuntimeExport readRuntimeExport(const std::filesystem::path& proxiesJson);
+RuntimeExport parseRuntimeExport(std::string_view bytes, const std::filesystem::path& file);
+
+// The proxies.glb content: one part "<probe>_proxy" per probe with a boundary mesh, world
+// frame (writeLevelMeshFile turns it Y-up).
+LevelMesh runtimeExportMesh(const RuntimeExport& runtime);
+
+}  // namespace probeproxy

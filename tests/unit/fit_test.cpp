@@ -1,0 +1,519 @@
+// geometry/fit: hulls, polytopes of planes, boxes and spheres around what a probe sees. Rooms
+// with exact answers first (a box room's hull is its six walls), then the degenerate inputs
+// real levels give (a probe above a bare floor, a handful of points), each with a fixed seed.
+
+#include "core/proxy/proxy_shape.h"
+#include "geometry/fit/bounding_sphere_fit.h"
+#include "geometry/fit/convex_hull_proxy.h"
+#include "geometry/fit/fit_error.h"
+#include "geometry/fit/oriented_box_fit.h"
+#include "geometry/fit/polytope_from_planes.h"
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <map>
+#include <numbers>
+#include <random>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace probeproxy {
+namespace {
+
+using Points = std::vector<glm::dvec3>;
+
+// n x n points on each wall of the box [low, high], edges and corners included, so that the
+// hull is the box itself and not a box with its edges cut off.
+Points boxRoomPoints(glm::dvec3 low, glm::dvec3 high, int n) {
+  Points points;
+  const auto at = [&](int axis, int i) { return i == n - 1 ? high[axis] : low[axis] + (high[axis] - low[axis]) * i / (n - 1); };
+  for (int axis = 0; axis < 3; ++axis) {
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    for (double side : {low[axis], high[axis]}) {
+      for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) {
+          glm::dvec3 p;
+          p[axis] = side, p[u] = at(u, i), p[v] = at(v, j);
+          points.push_back(p);
+        }
+      }
+    }
+  }
+  return points;
+}
+
+// Points on the walls, floor and ceiling of a prism over a convex or concave footprint.
+Points prismRoomPoints(const std::vector<glm::dvec2>& footprint, double height, int perWall,
+                       const std::vector<glm::dvec2>& floorPoints) {
+  Points points;
+  for (std::size_t k = 0; k < footprint.size(); ++k) {
+    const glm::dvec2 a = footprint[k], b = footprint[(k + 1) % footprint.size()];
+    for (int i = 0; i < perWall; ++i) {
+      const double s = double(i) / (perWall - 1);
+      const glm::dvec2 p = i == perWall - 1 ? b : a + s * (b - a);
+      for (int j = 0; j < perWall; ++j) {
+        points.emplace_back(p.x, p.y, j == perWall - 1 ? height : height * j / (perWall - 1));
+      }
+    }
+  }
+  for (const glm::dvec2& p : floorPoints) {
+    points.emplace_back(p.x, p.y, 0.0);
+    points.emplace_back(p.x, p.y, height);
+  }
+  return points;
+}
+
+std::vector<ProxyPlane> boxPlanes(glm::dvec3 low, glm::dvec3 high) {
+  std::vector<ProxyPlane> planes;
+  for (int axis = 0; axis < 3; ++axis) {
+    glm::dvec3 n(0.0);
+    n[axis] = 1;
+    planes.push_back({n, high[axis]});
+    planes.push_back({-n, -low[axis]});
+  }
+  return planes;
+}
+
+double relativeOffsetError(double got, double want) { return std::abs(got - want) / std::max(1.0, std::abs(want)); }
+
+// The proxy has a plane equal to `want` (normal within `normalTolerance`, offset relative).
+bool hasPlane(const ConvexProxy& proxy, const ProxyPlane& want, double tolerance) {
+  return std::any_of(proxy.planes.begin(), proxy.planes.end(), [&](const ProxyPlane& p) {
+    return glm::length(p.normal - want.normal) <= tolerance &&
+           relativeOffsetError(p.offsetMeters, want.offsetMeters) <= tolerance;
+  });
+}
+
+// A well-formed proxy: unit normals, a closed mesh in which every directed edge meets its
+// reverse once, every triangle on a plane and facing the way its normal does, every corner
+// inside every half-space.
+void expectConsistent(const ConvexProxy& proxy, double toleranceMeters) {
+  for (const ProxyPlane& p : proxy.planes) EXPECT_NEAR(glm::length(p.normal), 1.0, 1e-12);
+  std::map<std::pair<unsigned, unsigned>, int> edges;
+  for (const glm::uvec3& t : proxy.triangles) {
+    const glm::dvec3 a = proxy.verticesMeters[t[0]], b = proxy.verticesMeters[t[1]], c = proxy.verticesMeters[t[2]];
+    const glm::dvec3 n = glm::normalize(glm::cross(b - a, c - a));
+    const auto plane = std::max_element(proxy.planes.begin(), proxy.planes.end(), [&](const ProxyPlane& p, const ProxyPlane& q) {
+      return glm::dot(p.normal, n) < glm::dot(q.normal, n);
+    });
+    EXPECT_GT(glm::dot(plane->normal, n), 1 - 1e-9) << "a triangle faces no plane's way";
+    for (const glm::dvec3& corner : {a, b, c}) {
+      EXPECT_NEAR(glm::dot(plane->normal, corner), plane->offsetMeters, toleranceMeters);
+    }
+    for (int e = 0; e < 3; ++e) ++edges[{t[e], t[(e + 1) % 3]}];
+  }
+  for (const auto& [edge, count] : edges) {
+    EXPECT_EQ(count, 1);
+    EXPECT_EQ(edges.count({edge.second, edge.first}), 1u) << "the mesh is open at an edge";
+  }
+  for (const glm::dvec3& v : proxy.verticesMeters) {
+    EXPECT_LE(signedDistanceOutside(proxy.planes, v), toleranceMeters);
+  }
+}
+
+void expectContains(const ConvexProxy& proxy, const Points& points, double toleranceMeters) {
+  double worst = -1e300;
+  for (const glm::dvec3& p : points) worst = std::max(worst, signedDistanceOutside(proxy.planes, p));
+  EXPECT_LE(worst, toleranceMeters);
+}
+
+// The call throws FitError and its message says `words`.
+void expectFitError(const std::function<void()>& call, const std::string& words) {
+  try {
+    call();
+    ADD_FAILURE() << "no FitError; expected one saying \"" << words << "\"";
+  } catch (const FitError& e) {
+    EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << "message: " << e.what();
+  }
+}
+
+double medianMs(const std::function<void()>& run, int repeats) {
+  std::vector<double> ms;
+  for (int i = 0; i < repeats; ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    run();
+    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+  }
+  std::sort(ms.begin(), ms.end());
+  return ms[ms.size() / 2];
+}
+
+const glm::dvec3 kRoomLow{-3.0, -2.0, 0.0};
+const glm::dvec3 kRoomHigh{7.0, 4.0, 3.0};  // 10 x 6 x 3 m
+
+TEST(ConvexHullProxy, BoxRoomGivesItsSixWalls) {
+  const Points points = boxRoomPoints(kRoomLow, kRoomHigh, 40);
+  const ConvexProxy proxy = convexHullProxy(points, 1e-4);
+  ASSERT_EQ(proxy.planes.size(), 6u);
+  EXPECT_EQ(proxy.verticesMeters.size(), 8u);
+  EXPECT_EQ(proxy.triangles.size(), 12u);
+  for (const ProxyPlane& want : boxPlanes(kRoomLow, kRoomHigh)) EXPECT_TRUE(hasPlane(proxy, want, 1e-9));
+  expectConsistent(proxy, 1e-9);
+  expectContains(proxy, points, 1e-9);
+}
+
+TEST(ConvexHullProxy, PlanesComeSortedByNormalThenOffset) {
+  const ConvexProxy proxy = convexHullProxy(boxRoomPoints(kRoomLow, kRoomHigh, 10), 0.0);
+  ASSERT_EQ(proxy.planes.size(), 6u);
+  EXPECT_EQ(proxy.planes.front().normal, glm::dvec3(-1, 0, 0));
+  EXPECT_EQ(proxy.planes.back().normal, glm::dvec3(1, 0, 0));
+  // The same points in another order give the same proxy.
+  Points shuffled = boxRoomPoints(kRoomLow, kRoomHigh, 10);
+  std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937_64(7));
+  const ConvexProxy again = convexHullProxy(shuffled, 0.0);
+  ASSERT_EQ(again.planes.size(), 6u);
+  for (std::size_t i = 0; i < 6; ++i) {
+    EXPECT_EQ(again.planes[i].normal, proxy.planes[i].normal);
+    EXPECT_EQ(again.planes[i].offsetMeters, proxy.planes[i].offsetMeters);
+  }
+  EXPECT_EQ(again.verticesMeters, proxy.verticesMeters);
+}
+
+TEST(ConvexHullProxy, LShapedRoomGetsTheCutPlaneAcrossItsInnerCorner) {
+  // An L: 10 m along x, 8 m along y, arms 4 m wide. The hull closes the notch with one plane
+  // from (10, 4) to (4, 8), outward normal (2, 3) / sqrt(13).
+  const std::vector<glm::dvec2> footprint = {{0, 0}, {10, 0}, {10, 4}, {4, 4}, {4, 8}, {0, 8}};
+  std::vector<glm::dvec2> floor;
+  for (int i = 0; i <= 20; ++i) {
+    for (int j = 0; j <= 16; ++j) {
+      const glm::dvec2 p(0.5 * i, 0.5 * j);
+      if (p.x <= 4 || p.y <= 4) floor.push_back(p);
+    }
+  }
+  const Points points = prismRoomPoints(footprint, 3.0, 20, floor);
+  const ConvexProxy proxy = convexHullProxy(points, 1e-6);
+  EXPECT_EQ(proxy.planes.size(), 7u);  // floor, ceiling, four outer walls, the cut
+  const glm::dvec3 cut = glm::normalize(glm::dvec3(2, 3, 0));
+  EXPECT_TRUE(hasPlane(proxy, {cut, glm::dot(cut, glm::dvec3(10, 4, 0))}, 1e-9));
+  EXPECT_EQ(proxy.verticesMeters.size(), 10u);
+  expectConsistent(proxy, 1e-9);
+  expectContains(proxy, points, 1e-9);
+}
+
+TEST(ConvexHullProxy, RoundRoomOf48WallsGives50Planes) {
+  std::vector<glm::dvec2> footprint, floor{{0, 0}};
+  for (int k = 0; k < 48; ++k) {
+    const double angle = 2 * std::numbers::pi * k / 48;
+    footprint.emplace_back(5 * std::cos(angle), 5 * std::sin(angle));
+    floor.push_back(0.5 * footprint.back());
+  }
+  const Points points = prismRoomPoints(footprint, 3.0, 8, floor);
+  const ConvexProxy proxy = convexHullProxy(points, 1e-6);
+  ASSERT_EQ(proxy.planes.size(), 50u);
+  EXPECT_EQ(proxy.verticesMeters.size(), 96u);
+  for (int k = 0; k < 48; ++k) {
+    const double middle = 2 * std::numbers::pi * (k + 0.5) / 48;
+    const glm::dvec3 n(std::cos(middle), std::sin(middle), 0);
+    EXPECT_TRUE(hasPlane(proxy, {n, 5 * std::cos(std::numbers::pi / 48)}, 1e-9)) << "wall " << k;
+  }
+  expectConsistent(proxy, 1e-9);
+  expectContains(proxy, points, 1e-9);
+}
+
+TEST(ConvexHullProxy, NoisyWallsMergeIntoSixPlanes) {
+  Points points = boxRoomPoints(kRoomLow, kRoomHigh, 40);
+  std::mt19937_64 rng(42);
+  std::uniform_real_distribution<double> noise(-1e-7, 1e-7);
+  for (glm::dvec3& p : points) p += glm::dvec3(noise(rng), noise(rng), noise(rng));
+  const ConvexProxy proxy = convexHullProxy(points, 1e-4);
+  ASSERT_EQ(proxy.planes.size(), 6u);
+  EXPECT_EQ(proxy.verticesMeters.size(), 8u);
+  for (const ProxyPlane& want : boxPlanes(kRoomLow, kRoomHigh)) EXPECT_TRUE(hasPlane(proxy, want, 1e-6));
+  expectConsistent(proxy, 1e-9);
+  expectContains(proxy, points, 1e-9);
+}
+
+TEST(ConvexHullProxy, RoomTenKilometresFromTheOrigin) {
+  const glm::dvec3 far(10000.0, -10000.0, 250.0);
+  const Points points = boxRoomPoints(kRoomLow + far, kRoomHigh + far, 30);
+  const ConvexProxy proxy = convexHullProxy(points, 1e-4);
+  ASSERT_EQ(proxy.planes.size(), 6u);
+  EXPECT_EQ(proxy.verticesMeters.size(), 8u);
+  for (const ProxyPlane& want : boxPlanes(kRoomLow + far, kRoomHigh + far)) EXPECT_TRUE(hasPlane(proxy, want, 1e-9));
+  expectConsistent(proxy, 1e-8);
+  expectContains(proxy, points, 1e-8);
+}
+
+TEST(ConvexHullProxy, FewerThanFourPointsIsAFitError) {
+  const Points corners = boxRoomPoints(kRoomLow, kRoomHigh, 2);
+  for (std::size_t n = 0; n < 4; ++n) {
+    const Points points(corners.begin(), corners.begin() + static_cast<std::ptrdiff_t>(n));
+    expectFitError([&] { convexHullProxy(points, 1e-4); }, "needs at least 4 points");
+  }
+}
+
+TEST(ConvexHullProxy, FourPointsMakeATetrahedronOrAnError) {
+  const Points tetrahedron = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const ConvexProxy proxy = convexHullProxy(tetrahedron, 1e-4);
+  EXPECT_EQ(proxy.planes.size(), 4u);
+  EXPECT_EQ(proxy.verticesMeters.size(), 4u);
+  EXPECT_EQ(proxy.triangles.size(), 4u);
+  expectConsistent(proxy, 1e-12);
+  expectFitError([] { convexHullProxy(Points{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}}, 1e-4); }, "are coplanar");
+}
+
+TEST(ConvexHullProxy, OnePointLineOrPlaneIsAFitError) {
+  expectFitError([] { convexHullProxy(Points(10, glm::dvec3(1, 2, 3)), 1e-4); }, "all 10 points are the same point");
+  Points line;
+  for (int i = 0; i < 100; ++i) line.push_back(glm::dvec3(1, 2, 3) + double(i) * glm::dvec3(1, -2, 0.5));
+  expectFitError([&] { convexHullProxy(line, 1e-4); }, "all 100 points are collinear: the probe sees one line only");
+  // A probe above a bare floor, and the same in each axis plane.
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> coordinate(-10, 10);
+  for (int axis = 0; axis < 3; ++axis) {
+    for (double level : {0.0, 2.5}) {
+      Points plane(12000);
+      for (glm::dvec3& p : plane) {
+        p = {coordinate(rng), coordinate(rng), coordinate(rng)};
+        p[axis] = level;
+      }
+      expectFitError([&] { convexHullProxy(plane, 1e-4); }, "all 12000 points are coplanar: the probe sees one plane only");
+    }
+  }
+}
+
+TEST(ConvexHullProxy, PointsWithinTheToleranceOfOnePlaneAreAFitError) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> coordinate(-10, 10), bump(0, 1e-6);
+  Points floor(1000);
+  for (glm::dvec3& p : floor) p = {coordinate(rng), coordinate(rng), bump(rng)};
+  expectFitError([&] { convexHullProxy(floor, 1e-4); }, "of one plane (tolerance 0.0001 m): the probe sees one plane only");
+}
+
+TEST(ConvexHullProxy, BadValuesAreAFitError) {
+  Points points = boxRoomPoints(kRoomLow, kRoomHigh, 3);
+  expectFitError([&] { convexHullProxy(points, -1.0); }, "tolerance must be finite and >= 0");
+  points[5].y = std::nan("");
+  expectFitError([&] { convexHullProxy(points, 1e-4); }, "point 5 of 54 is not finite");
+}
+
+TEST(ConvexHullProxy, TimingOn100kPointsOfABoxRoom) {
+  const Points points = boxRoomPoints(kRoomLow, kRoomHigh, 128);  // 6 x 128 x 128 = 98304
+  Points noisy = points;
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> noise(-1e-6, 1e-6);
+  for (glm::dvec3& p : noisy) p += glm::dvec3(noise(rng), noise(rng), noise(rng));
+  std::size_t planes = 0, noisyPlanes = 0;
+  const double exactMs = medianMs([&] { planes = convexHullProxy(points, 1e-4).planes.size(); }, 5);
+  const double noisyMs = medianMs([&] { noisyPlanes = convexHullProxy(noisy, 1e-4).planes.size(); }, 5);
+  EXPECT_EQ(planes, 6u);
+  EXPECT_EQ(noisyPlanes, 6u);
+  // A figure for the log, not a bar: speed targets live in benchmarks.
+  std::printf("[ timing   ] convexHullProxy, %zu points: %.2f ms exact walls, %.2f ms with 1e-6 m noise (median of 5)\n",
+              points.size(), exactMs, noisyMs);
+  RecordProperty("hull_ms_exact", std::to_string(exactMs));
+  RecordProperty("hull_ms_noisy", std::to_string(noisyMs));
+}
+
+const glm::dvec3 kInside{0.5, 0.2, 1.5};
+
+TEST(PolytopeFromPlanes, BoxPlanesGiveTheBox) {
+  const ConvexProxy proxy = polytopeFromPlanes(boxPlanes(kRoomLow, kRoomHigh), kInside);
+  EXPECT_EQ(proxy.planes.size(), 6u);
+  ASSERT_EQ(proxy.verticesMeters.size(), 8u);
+  EXPECT_EQ(proxy.triangles.size(), 12u);
+  EXPECT_EQ(proxy.verticesMeters.front(), kRoomLow);  // sorted by (x, y, z)
+  EXPECT_EQ(proxy.verticesMeters.back(), kRoomHigh);
+  expectConsistent(proxy, 1e-12);
+}
+
+TEST(PolytopeFromPlanes, RedundantPlanesAreDroppedAndReported) {
+  std::vector<ProxyPlane> planes = boxPlanes(kRoomLow, kRoomHigh);
+  const glm::dvec3 corner = glm::normalize(glm::dvec3(1, 1, 1));
+  const glm::dvec3 tilted = glm::normalize(glm::dvec3(1, 2, 3));
+  planes.insert(planes.begin() + 2, {{1, 0, 0}, 20.0});                         // 2: behind +x
+  planes.push_back(planes[0]);                                                  // 7: a copy of +x
+  planes.push_back({corner, glm::dot(corner, kRoomHigh)});                      // 8: touches a corner
+  planes.push_back({tilted, 100.0});                                            // 9: far away
+  planes.push_back({{0, 0, 1}, kRoomHigh.z + 1e-3});                            // 10: just above the ceiling
+  std::vector<std::size_t> dropped;
+  const ConvexProxy proxy = polytopeFromPlanes(planes, kInside, &dropped);
+  EXPECT_EQ(proxy.planes.size(), 6u);
+  EXPECT_EQ(proxy.verticesMeters.size(), 8u);
+  EXPECT_EQ(proxy.triangles.size(), 12u);
+  EXPECT_EQ(dropped, (std::vector<std::size_t>{2, 7, 8, 9, 10}));
+  for (const ProxyPlane& want : boxPlanes(kRoomLow, kRoomHigh)) EXPECT_TRUE(hasPlane(proxy, want, 0.0));
+  expectConsistent(proxy, 1e-12);
+}
+
+TEST(PolytopeFromPlanes, FourPlanesThroughOneCornerGiveOneCorner) {
+  // A square pyramid: its apex is where four planes meet, one corner and not two.
+  std::vector<ProxyPlane> planes = {{{0, 0, -1}, 0.0}};
+  for (glm::dvec3 side : {glm::dvec3(1, 0, 1), glm::dvec3(-1, 0, 1), glm::dvec3(0, 1, 1), glm::dvec3(0, -1, 1)}) {
+    const glm::dvec3 n = glm::normalize(side);
+    planes.push_back({n, glm::dot(n, glm::dvec3(0, 0, 1))});
+  }
+  const ConvexProxy proxy = polytopeFromPlanes(planes, {0.1, -0.1, 0.3});
+  EXPECT_EQ(proxy.planes.size(), 5u);
+  EXPECT_EQ(proxy.verticesMeters.size(), 5u);
+  EXPECT_EQ(proxy.triangles.size(), 6u);
+  expectConsistent(proxy, 1e-12);
+}
+
+TEST(PolytopeFromPlanes, UnboundedPlanesAreAFitError) {
+  std::vector<ProxyPlane> planes = boxPlanes(kRoomLow, kRoomHigh);
+  EXPECT_TRUE(isBounded(planes));
+  planes.pop_back();  // no floor
+  EXPECT_FALSE(isBounded(planes));
+  expectFitError([&] { polytopeFromPlanes(planes, kInside); },
+                 "the 5 planes bound no volume: nothing stops it in direction (0, 0, -1)");
+  for (std::size_t n : {0u, 1u, 2u, 3u}) {
+    const std::vector<ProxyPlane> few(planes.begin(), planes.begin() + n);
+    EXPECT_FALSE(isBounded(few));
+    expectFitError([&] { polytopeFromPlanes(few, kInside); }, "bound no volume");
+  }
+  // Normals in one plane (a corridor open at both ends), and normals in one half-space.
+  const std::vector<ProxyPlane> corridor = {{{1, 0, 0}, 1}, {{-1, 0, 0}, 1}, {{0, 0, 1}, 1}, {{0, 0, -1}, 1}};
+  EXPECT_FALSE(isBounded(corridor));
+  expectFitError([&] { polytopeFromPlanes(corridor, {0, 0, 0}); }, "direction (0, 1, 0)");
+  const std::vector<ProxyPlane> tetrahedron = {{glm::normalize(glm::dvec3(1, 1, 1)), 1},
+                                               {glm::normalize(glm::dvec3(1, -1, -1)), 1},
+                                               {glm::normalize(glm::dvec3(-1, 1, -1)), 1},
+                                               {glm::normalize(glm::dvec3(-1, -1, 1)), 1}};
+  EXPECT_TRUE(isBounded(tetrahedron));
+  EXPECT_EQ(polytopeFromPlanes(tetrahedron, {0, 0, 0}).verticesMeters.size(), 4u);
+}
+
+TEST(PolytopeFromPlanes, InteriorPointOutsideOrOnAPlaneIsAFitError) {
+  const std::vector<ProxyPlane> planes = boxPlanes(kRoomLow, kRoomHigh);
+  expectFitError([&] { polytopeFromPlanes(planes, {8.0, 0.0, 1.0}); }, "is not strictly inside plane 0");
+  expectFitError([&] { polytopeFromPlanes(planes, {1.0, 0.0, 0.0}); }, "is not strictly inside plane 5");
+}
+
+TEST(PolytopeFromPlanes, BadPlanesAreAFitError) {
+  std::vector<ProxyPlane> planes = boxPlanes(kRoomLow, kRoomHigh);
+  planes[3].normal = {0, -2, 0};
+  expectFitError([&] { polytopeFromPlanes(planes, kInside); }, "needs a finite unit normal");
+  planes[3].normal = {0, -1, 0};
+  planes[3].offsetMeters = std::nan("");
+  expectFitError([&] { polytopeFromPlanes(planes, kInside); }, "plane 3 of 6");
+}
+
+// Corners of a box as a set: each of one within `tolerance` of one of the other.
+void expectSameCorners(const BoxShape& got, const BoxShape& want, double tolerance) {
+  const Points gotCorners = convexFromBox(got).verticesMeters, wantCorners = convexFromBox(want).verticesMeters;
+  for (const glm::dvec3& w : wantCorners) {
+    double nearest = 1e300;
+    for (const glm::dvec3& g : gotCorners) nearest = std::min(nearest, glm::distance(g, w));
+    EXPECT_LE(nearest, tolerance) << "corner (" << w.x << ", " << w.y << ", " << w.z << ")";
+  }
+}
+
+void expectBoxContains(const BoxShape& box, const Points& points, double tolerance) {
+  const ConvexProxy convex = convexFromBox(box);
+  for (const glm::dvec3& p : points) EXPECT_LE(signedDistanceOutside(convex.planes, p), tolerance);
+}
+
+Points transformed(const Points& points, const glm::dquat& rotation, glm::dvec3 shift) {
+  Points out;
+  for (const glm::dvec3& p : points) out.push_back(rotation * p + shift);
+  return out;
+}
+
+TEST(OrientedBoxFit, BoxTurned30DegreesAboutZIsRecovered) {
+  const glm::dvec3 half(5.0, 3.0, 1.5);
+  const glm::dquat turn = glm::angleAxis(std::numbers::pi / 6, glm::dvec3(0, 0, 1));
+  const BoxShape want{{2.0, -1.0, 1.5}, half, turn};
+  const Points points = transformed(boxRoomPoints(-half, half, 12), turn, want.centerMeters);
+  const BoxShape box = orientedBoxFit(points);
+  expectSameCorners(box, want, 1e-6);
+  EXPECT_LE(glm::length(box.halfExtentsMeters - half), 1e-6);
+  EXPECT_LE(glm::length(box.centerMeters - want.centerMeters), 1e-6);
+  EXPECT_NEAR(std::abs(glm::dot(box.worldFromBox, turn)), 1.0, 1e-12);  // closest to identity: 30, not -60
+  EXPECT_NEAR(glm::length(box.worldFromBox), 1.0, 1e-12);
+  expectBoxContains(box, points, 1e-9);
+}
+
+TEST(OrientedBoxFit, TiltedBoxIsRecoveredAndTheSameEveryTime) {
+  const glm::dvec3 half(4.0, 2.5, 1.0);
+  const glm::dquat turn = glm::normalize(glm::angleAxis(0.4, glm::normalize(glm::dvec3(1, 2, 3))));
+  const BoxShape want{{-3.0, 7.0, 2.0}, half, turn};
+  const Points points = transformed(boxRoomPoints(-half, half, 10), turn, want.centerMeters);
+  const BoxShape box = orientedBoxFit(points);
+  expectSameCorners(box, want, 1e-6);
+  expectBoxContains(box, points, 1e-9);
+  const BoxShape again = orientedBoxFit(points);
+  EXPECT_EQ(again.centerMeters, box.centerMeters);
+  EXPECT_EQ(again.halfExtentsMeters, box.halfExtentsMeters);
+  EXPECT_EQ(again.worldFromBox, box.worldFromBox);
+}
+
+TEST(OrientedBoxFit, AxisAlignedRoomComesOutAsAnAabb) {
+  const Points points = boxRoomPoints(kRoomLow, kRoomHigh, 16);
+  const BoxShape box = orientedBoxFit(points);
+  EXPECT_EQ(box.worldFromBox, glm::dquat(1, 0, 0, 0));
+  EXPECT_EQ(methodId(box), "aabb");
+  EXPECT_EQ(box.centerMeters, 0.5 * (kRoomLow + kRoomHigh));
+  EXPECT_EQ(box.halfExtentsMeters, 0.5 * (kRoomHigh - kRoomLow));
+}
+
+TEST(OrientedBoxFit, FlatLinearAndSinglePointInputsGiveThinBoxes) {
+  // A probe above a bare floor turned 20 degrees: a box of zero height around the floor.
+  const glm::dquat turn = glm::angleAxis(0.35, glm::dvec3(0, 0, 1));
+  Points floor;
+  for (int i = 0; i <= 20; ++i) {
+    for (int j = 0; j <= 10; ++j) floor.push_back(turn * glm::dvec3(0.4 * i - 4, 0.3 * j - 1.5, 0) + glm::dvec3(1, 1, 0));
+  }
+  const BoxShape flat = orientedBoxFit(floor);
+  EXPECT_NEAR(flat.halfExtentsMeters.z, 0.0, 1e-12);
+  EXPECT_NEAR(flat.halfExtentsMeters.x, 4.0, 1e-9);
+  EXPECT_NEAR(flat.halfExtentsMeters.y, 1.5, 1e-9);
+  expectBoxContains(flat, floor, 1e-9);
+
+  Points line;
+  for (int i = 0; i < 7; ++i) line.push_back(glm::dvec3(1, 1, 1) + double(i) * glm::dvec3(0.3, 0.2, 0.1));
+  const BoxShape thin = orientedBoxFit(line);
+  EXPECT_NEAR(glm::length(thin.halfExtentsMeters), 0.5 * glm::distance(line.front(), line.back()), 1e-12);
+  expectBoxContains(thin, line, 1e-12);
+
+  const BoxShape point = orientedBoxFit(Points(3, glm::dvec3(4, 5, 6)));
+  EXPECT_EQ(point.centerMeters, glm::dvec3(4, 5, 6));
+  EXPECT_EQ(point.halfExtentsMeters, glm::dvec3(0.0));
+  expectFitError([] { orientedBoxFit(Points{}); }, "oriented box fit: no points to fit");
+}
+
+TEST(OrientedBoxFit, AxisAlignedBoxIsTheBounds) {
+  const glm::dquat turn = glm::angleAxis(std::numbers::pi / 6, glm::dvec3(0, 0, 1));
+  const Points points = transformed(boxRoomPoints({-1, -1, -1}, {1, 1, 1}, 5), turn, {10, 0, 0});
+  const BoxShape box = axisAlignedBoxFit(points);
+  EXPECT_EQ(box.worldFromBox, glm::dquat(1, 0, 0, 0));
+  const double halfWidth = std::cos(std::numbers::pi / 6) + std::sin(std::numbers::pi / 6);
+  EXPECT_LE(glm::length(box.halfExtentsMeters - glm::dvec3(halfWidth, halfWidth, 1)), 1e-12);
+  EXPECT_LE(glm::length(box.centerMeters - glm::dvec3(10, 0, 0)), 1e-12);
+  expectFitError([] { axisAlignedBoxFit(Points{}); }, "axis-aligned box fit: no points to fit");
+}
+
+TEST(BoundingSphere, BoxCornersGiveTheHalfDiagonal) {
+  const Points corners = boxRoomPoints(kRoomLow, kRoomHigh, 2);
+  const SphereShape sphere = minimumEnclosingSphere(corners);
+  EXPECT_LE(glm::length(sphere.centerMeters - 0.5 * (kRoomLow + kRoomHigh)), 1e-9);
+  const double halfDiagonal = 0.5 * glm::length(kRoomHigh - kRoomLow);
+  EXPECT_NEAR(sphere.radiiMeters.x, halfDiagonal, 1e-9);
+  EXPECT_EQ(sphere.radiiMeters.x, sphere.radiiMeters.y);
+  EXPECT_EQ(sphere.radiiMeters.x, sphere.radiiMeters.z);
+  EXPECT_EQ(sphere.worldFromSphere, glm::dquat(1, 0, 0, 0));
+}
+
+TEST(BoundingSphere, ContainsEveryPointAndHandlesOnePoint) {
+  std::mt19937_64 rng(9);
+  std::normal_distribution<double> coordinate(0, 3);
+  Points points(5000);
+  for (glm::dvec3& p : points) p = glm::dvec3(coordinate(rng), coordinate(rng), coordinate(rng)) + glm::dvec3(1e4, 0, 0);
+  const SphereShape sphere = minimumEnclosingSphere(points);
+  for (const glm::dvec3& p : points) EXPECT_LE(glm::distance(p, sphere.centerMeters), sphere.radiiMeters.x);
+  const SphereShape point = minimumEnclosingSphere(Points{{1, 2, 3}});
+  EXPECT_EQ(point.centerMeters, glm::dvec3(1, 2, 3));
+  EXPECT_EQ(point.radiiMeters, glm::dvec3(0.0));
+  expectFitError([] { minimumEnclosingSphere(Points{}); }, "minimum enclosing sphere: no points to fit");
+}
+
+}  // namespace
+}  // namespace probeproxy
