@@ -39,7 +39,8 @@ SphereShape minimumEnclosingSphere(std::span<const glm::dvec3> points) {
   // The farthest point sets the radius: CGAL's is as large up to rounding, and a proxy must
   // contain what the probe sees.
   double radius = 0.0;
-  for (const glm::dvec3& p : points) radius = std::max(radius, glm::distance(p, sphere.centerMeters));
+  for (const glm::dvec3& p : points)
+    radius = std::max(radius, glm::distance(p, sphere.centerMeters));
   sphere.radiiMeters = glm::dvec3(radius);
   return sphere;
 }

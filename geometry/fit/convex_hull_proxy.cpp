@@ -75,12 +75,14 @@ std::vector<HullFacet> hullFacets(const fit::TriangleHull& hull) {
 // have any normal between the two walls', yet lie within the tolerance of both; a gently
 // curved wall does not. Only facets facing the seed's side (less than 90 degrees away) join:
 // across the rim of a slab thinner than the tolerance lies its other face, not the same wall.
-std::vector<std::uint32_t> wallOfFacet(const fit::TriangleHull& hull, const std::vector<HullFacet>& facets,
+std::vector<std::uint32_t> wallOfFacet(const fit::TriangleHull& hull,
+                                       const std::vector<HullFacet>& facets,
                                        double toleranceMeters) {
   std::vector<std::uint32_t> bySize(facets.size());
   std::iota(bySize.begin(), bySize.end(), 0u);
-  std::stable_sort(bySize.begin(), bySize.end(),
-                   [&](std::uint32_t a, std::uint32_t b) { return facets[a].area > facets[b].area; });
+  std::stable_sort(bySize.begin(), bySize.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return facets[a].area > facets[b].area;
+  });
 
   std::vector<std::uint32_t> wall(facets.size(), kNoWall);
   std::vector<std::uint32_t> queue;
@@ -133,7 +135,8 @@ ConvexProxy convexHullProxy(std::span<const glm::dvec3> points, double coplanarT
     largestCoordinate = std::max({largestCoordinate, std::abs(v.x), std::abs(v.y), std::abs(v.z)});
   }
   const double rounding = 64 * std::numeric_limits<double>::epsilon() * largestCoordinate;
-  const std::vector<std::uint32_t> wall = wallOfFacet(hull, facets, coplanarToleranceMeters + rounding);
+  const std::vector<std::uint32_t> wall =
+      wallOfFacet(hull, facets, coplanarToleranceMeters + rounding);
 
   const std::uint32_t wallCount = *std::max_element(wall.begin(), wall.end()) + 1;
   std::vector<glm::dvec3> wallAreaVector(wallCount, glm::dvec3(0.0));
@@ -156,8 +159,9 @@ ConvexProxy convexHullProxy(std::span<const glm::dvec3> points, double coplanarT
   }
   if (thinnestMeters <= coplanarToleranceMeters) {
     std::ostringstream message;
-    message << "convex hull proxy: " << countedPoints(points.size()) << " lie within " << thinnestMeters
-            << " m of one plane (tolerance " << coplanarToleranceMeters << " m): the probe sees one plane only";
+    message << "convex hull proxy: " << countedPoints(points.size()) << " lie within "
+            << thinnestMeters << " m of one plane (tolerance " << coplanarToleranceMeters
+            << " m): the probe sees one plane only";
     throw FitError(message.str());
   }
 
@@ -170,8 +174,9 @@ ConvexProxy convexHullProxy(std::span<const glm::dvec3> points, double coplanarT
   if (!isBounded(planes)) {
     std::ostringstream message;
     message << "convex hull proxy: " << countedPoints(points.size()) << " lie within a few times "
-            << coplanarToleranceMeters << " m of one plane or line: merged at that tolerance, their "
-            << planes.size() << " walls bound no volume";
+            << coplanarToleranceMeters
+            << " m of one plane or line: merged at that tolerance, their " << planes.size()
+            << " walls bound no volume";
     throw FitError(message.str());
   }
   glm::dvec3 centroid(0.0);

@@ -10,9 +10,12 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/convex_hull_3.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
+#include <numeric>
 #include <sstream>
+#include <tuple>
 #include <unordered_map>
 
 namespace probeproxy::fit {
@@ -40,7 +43,8 @@ struct PointBitsHash {
   }
 };
 PointBits bitsOf(double x, double y, double z) {
-  return {std::bit_cast<std::uint64_t>(x), std::bit_cast<std::uint64_t>(y), std::bit_cast<std::uint64_t>(z)};
+  return {std::bit_cast<std::uint64_t>(x), std::bit_cast<std::uint64_t>(y),
+          std::bit_cast<std::uint64_t>(z)};
 }
 
 }  // namespace
@@ -50,8 +54,8 @@ void requireFinite(std::span<const glm::dvec3> points, std::string_view what) {
     const glm::dvec3& p = points[i];
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
       std::ostringstream message;
-      message << what << ": point " << i << " of " << points.size() << " is not finite (" << p.x << ", "
-              << p.y << ", " << p.z << ")";
+      message << what << ": point " << i << " of " << points.size() << " is not finite (" << p.x
+              << ", " << p.y << ", " << p.z << ")";
       throw FitError(message.str());
     }
   }
@@ -111,21 +115,58 @@ TriangleHull convexHull3(std::span<const glm::dvec3> points, bool withSourceInde
     throw FitError(message.str());
   }
 
-  // convex_hull_3 builds a fresh mesh, so indices run 0..n-1 with no removed elements.
-  TriangleHull hull;
-  hull.vertices.resize(mesh.number_of_vertices());
+  // convex_hull_3 builds a fresh mesh, so indices run 0..n-1 with no removed elements. Their
+  // order follows heap addresses, though, and changes from call to call: sort corners by
+  // position and triangles by corners, so that the same points give the same hull, bit for bit
+  // (the facet merging sums areas in this order, the box polish takes the first of equals).
+  const std::size_t vertexCount = mesh.number_of_vertices();
+  std::vector<glm::dvec3> position(vertexCount);
   for (Mesh::Vertex_index v : mesh.vertices()) {
     const Point& p = mesh.point(v);
-    hull.vertices[v.idx()] = {p.x(), p.y(), p.z()};
+    position[v.idx()] = {p.x(), p.y(), p.z()};
   }
-  hull.triangles.resize(mesh.number_of_faces());
-  hull.neighbors.resize(mesh.number_of_faces());
+  std::vector<std::uint32_t> byPosition(vertexCount);
+  std::iota(byPosition.begin(), byPosition.end(), 0u);
+  std::sort(byPosition.begin(), byPosition.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return std::tie(position[a].x, position[a].y, position[a].z) <
+           std::tie(position[b].x, position[b].y, position[b].z);
+  });
+  std::vector<std::uint32_t> newVertex(vertexCount);
+  TriangleHull hull;
+  for (std::uint32_t i = 0; i < vertexCount; ++i) {
+    newVertex[byPosition[i]] = i;
+    hull.vertices.push_back(position[byPosition[i]]);
+  }
+
+  struct Face {
+    std::array<std::uint32_t, 3> corners;    // new vertex indices
+    std::array<std::uint32_t, 3> neighbors;  // old face indices, across edge e
+  };
+  const std::size_t faceCount = mesh.number_of_faces();
+  std::vector<Face> faces(faceCount);
   for (Mesh::Face_index f : mesh.faces()) {
+    Face& face = faces[f.idx()];
     Mesh::Halfedge_index h = mesh.halfedge(f);
     for (int e = 0; e < 3; ++e, h = mesh.next(h)) {
-      hull.triangles[f.idx()][e] = static_cast<std::uint32_t>(mesh.source(h).idx());
-      hull.neighbors[f.idx()][e] = static_cast<std::uint32_t>(mesh.face(mesh.opposite(h)).idx());
+      face.corners[e] = newVertex[mesh.source(h).idx()];
+      face.neighbors[e] = static_cast<std::uint32_t>(mesh.face(mesh.opposite(h)).idx());
     }
+    // Lowest corner first; the edges turn with the corners, so the winding stays.
+    const auto lowest =
+        std::min_element(face.corners.begin(), face.corners.end()) - face.corners.begin();
+    std::rotate(face.corners.begin(), face.corners.begin() + lowest, face.corners.end());
+    std::rotate(face.neighbors.begin(), face.neighbors.begin() + lowest, face.neighbors.end());
+  }
+  std::vector<std::uint32_t> byCorners(faceCount);
+  std::iota(byCorners.begin(), byCorners.end(), 0u);
+  std::sort(byCorners.begin(), byCorners.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return faces[a].corners < faces[b].corners; });
+  std::vector<std::uint32_t> newFace(faceCount);
+  for (std::uint32_t i = 0; i < faceCount; ++i) newFace[byCorners[i]] = i;
+  for (std::uint32_t old : byCorners) {
+    hull.triangles.push_back(faces[old].corners);
+    hull.neighbors.push_back({newFace[faces[old].neighbors[0]], newFace[faces[old].neighbors[1]],
+                              newFace[faces[old].neighbors[2]]});
   }
 
   if (withSourceIndex) {
@@ -135,7 +176,8 @@ TriangleHull convexHull3(std::span<const glm::dvec3> points, bool withSourceInde
       firstIndex.try_emplace(bitsOf(points[i].x, points[i].y, points[i].z), i);
     }
     hull.sourceIndex.reserve(hull.vertices.size());
-    for (const glm::dvec3& v : hull.vertices) hull.sourceIndex.push_back(firstIndex.at(bitsOf(v.x, v.y, v.z)));
+    for (const glm::dvec3& v : hull.vertices)
+      hull.sourceIndex.push_back(firstIndex.at(bitsOf(v.x, v.y, v.z)));
   }
   return hull;
 }

@@ -32,12 +32,12 @@ int orientationSign(glm::dvec3 a, glm::dvec3 b, glm::dvec3 c, glm::dvec3 d);
 
 // A closed convex triangle mesh.
 struct TriangleHull {
-  std::vector<glm::dvec3> vertices;        // hull corners, copies of input points
+  std::vector<glm::dvec3> vertices;                     // hull corners, copies of input points
   std::vector<std::array<std::uint32_t, 3>> triangles;  // counter-clockwise seen from outside
   // neighbors[t][e]: the triangle across edge e of triangle t, the edge from triangles[t][e]
   // to triangles[t][(e + 1) % 3].
   std::vector<std::array<std::uint32_t, 3>> neighbors;
-  std::vector<std::size_t> sourceIndex;    // input index of each vertex, if asked for
+  std::vector<std::size_t> sourceIndex;  // input index of each vertex, if asked for
 };
 
 // CGAL's convex_hull_3 (quickhull, exact predicates). Points must be finite and span a volume

@@ -68,9 +68,10 @@ BoxShape boxAlong(const Axes& axes, std::span<const glm::dvec3> points) {
 }
 
 glm::dvec3 anyPerpendicular(glm::dvec3 n) {
-  const glm::dvec3 away = std::abs(n.x) <= std::abs(n.y) && std::abs(n.x) <= std::abs(n.z) ? glm::dvec3(1, 0, 0)
-                          : std::abs(n.y) <= std::abs(n.z)                                ? glm::dvec3(0, 1, 0)
-                                                                                           : glm::dvec3(0, 0, 1);
+  const glm::dvec3 away = std::abs(n.x) <= std::abs(n.y) && std::abs(n.x) <= std::abs(n.z)
+                              ? glm::dvec3(1, 0, 0)
+                          : std::abs(n.y) <= std::abs(n.z) ? glm::dvec3(0, 1, 0)
+                                                           : glm::dvec3(0, 0, 1);
   return glm::normalize(glm::cross(n, away));
 }
 
@@ -195,7 +196,8 @@ Axes volumeAxes(std::span<const glm::dvec3> points) {
 // identity, the largest trace, so the same box always comes out the same.
 Axes canonical(Axes axes) {
   if (glm::determinant(axes) < 0) axes[2] = -axes[2];
-  static constexpr int kPermutations[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  static constexpr int kPermutations[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2},
+                                              {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
   Axes best = axes;
   double bestTrace = -std::numeric_limits<double>::infinity();
   for (const auto& perm : kPermutations) {
@@ -237,7 +239,8 @@ BoxShape orientedBoxFit(std::span<const glm::dvec3> points) {
   BoxShape box = boxAlong(canonical(axes), points);
   // An axis-aligned room should come out as an aabb, not as an obb turned by rounding.
   const glm::dquat q = box.worldFromBox;
-  if (2.0 * std::atan2(glm::length(glm::dvec3(q.x, q.y, q.z)), q.w) < 1e-9) box = boxAlong(Axes(1.0), points);
+  if (2.0 * std::atan2(glm::length(glm::dvec3(q.x, q.y, q.z)), q.w) < 1e-9)
+    box = boxAlong(Axes(1.0), points);
   return box;
 }
 

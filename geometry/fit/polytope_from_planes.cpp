@@ -18,7 +18,9 @@ namespace probeproxy {
 
 namespace {
 
-bool isFinite(glm::dvec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool isFinite(glm::dvec3 v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 std::string formatVec(glm::dvec3 v) {
   std::ostringstream s;
@@ -42,7 +44,8 @@ std::optional<glm::dvec3> openDirection(std::span<const glm::dvec3> normals) {
       const glm::dvec3 c = glm::cross(a, b);
       if (glm::length(c) > 0) return glm::normalize(c);
       const glm::dvec3 along = b - a;  // the line passes through the origin: any normal to it
-      const glm::dvec3 other = std::abs(along.x) < std::abs(along.z) ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 0, 1);
+      const glm::dvec3 other =
+          std::abs(along.x) < std::abs(along.z) ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 0, 1);
       return glm::normalize(glm::cross(along, other));
     }
     case 2: {  // normals on a plane dot(u, n) = e: -u when the plane misses the origin, else u
@@ -58,18 +61,21 @@ std::optional<glm::dvec3> openDirection(std::span<const glm::dvec3> normals) {
   const fit::TriangleHull hull = fit::convexHull3(normals);
   for (const auto& t : hull.triangles) {
     const glm::dvec3 a = hull.vertices[t[0]], b = hull.vertices[t[1]], c = hull.vertices[t[2]];
-    if (fit::orientationSign(a, b, c, glm::dvec3(0.0)) >= 0) return glm::normalize(glm::cross(b - a, c - a));
+    if (fit::orientationSign(a, b, c, glm::dvec3(0.0)) >= 0)
+      return glm::normalize(glm::cross(b - a, c - a));
   }
   return std::nullopt;
 }
 
 void checkPlanes(const std::vector<ProxyPlane>& planes, glm::dvec3 interior) {
   if (!isFinite(interior)) {
-    throw FitError("polytope from planes: the interior point " + formatVec(interior) + " is not finite");
+    throw FitError("polytope from planes: the interior point " + formatVec(interior) +
+                   " is not finite");
   }
   for (std::size_t i = 0; i < planes.size(); ++i) {
     const double length = glm::length(planes[i].normal);
-    if (!isFinite(planes[i].normal) || !std::isfinite(planes[i].offsetMeters) || std::abs(length - 1.0) > 1e-6) {
+    if (!isFinite(planes[i].normal) || !std::isfinite(planes[i].offsetMeters) ||
+        std::abs(length - 1.0) > 1e-6) {
       std::ostringstream message;
       message << "polytope from planes: plane " << i << " of " << planes.size() << " has normal "
               << formatVec(planes[i].normal) << " (length " << length << ") and offset "
@@ -151,17 +157,21 @@ ConvexProxy polytopeFromPlanes(std::vector<ProxyPlane> planes, glm::dvec3 interi
   double sizeMeters = 0.0;
   for (std::size_t t = 0; t < cornerCount; ++t) {
     const auto& tri = dual.triangles[t];
-    if (fit::orientationSign(dual.vertices[tri[0]], dual.vertices[tri[1]], dual.vertices[tri[2]], glm::dvec3(0.0)) >= 0) {
+    if (fit::orientationSign(dual.vertices[tri[0]], dual.vertices[tri[1]], dual.vertices[tri[2]],
+                             glm::dvec3(0.0)) >= 0) {
       std::ostringstream message;
       message << "polytope from planes: the " << planes.size()
-              << " planes bound no volume within rounding (their normals nearly leave a direction open)";
+              << " planes bound no volume within rounding (their normals nearly leave a direction "
+                 "open)";
       throw FitError(message.str());
     }
-    const std::size_t a = dual.sourceIndex[tri[0]], b = dual.sourceIndex[tri[1]], c = dual.sourceIndex[tri[2]];
+    const std::size_t a = dual.sourceIndex[tri[0]], b = dual.sourceIndex[tri[1]],
+                      c = dual.sourceIndex[tri[2]];
     const glm::dvec3 na = planes[a].normal, nb = planes[b].normal, nc = planes[c].normal;
     const double det = glm::dot(na, glm::cross(nb, nc));
     fromInterior[t] = (heights[a] * glm::cross(nb, nc) + heights[b] * glm::cross(nc, na) +
-                       heights[c] * glm::cross(na, nb)) / det;
+                       heights[c] * glm::cross(na, nb)) /
+                      det;
     conditioning[t] = std::abs(det);
     sizeMeters = std::max(sizeMeters, glm::length(fromInterior[t]));
   }
@@ -207,7 +217,8 @@ ConvexProxy polytopeFromPlanes(std::vector<ProxyPlane> planes, glm::dvec3 interi
       t = dual.neighbors[t][(k + 2) % 3];  // across the edge that ends at v
       if (t == ringStart[v]) break;
     }
-    while (facet.corners.size() > 1 && facet.corners.front() == facet.corners.back()) facet.corners.pop_back();
+    while (facet.corners.size() > 1 && facet.corners.front() == facet.corners.back())
+      facet.corners.pop_back();
     if (facet.corners.size() < 3) continue;  // the plane touches an edge or a corner only
 
     glm::dvec3 newell(0.0);
@@ -217,10 +228,12 @@ ConvexProxy polytopeFromPlanes(std::vector<ProxyPlane> planes, glm::dvec3 interi
       newell += glm::cross(p, q);
     }
     if (glm::length(newell) <= mergeMeters * mergeMeters) continue;
-    if (glm::dot(newell, planes[facet.plane].normal) < 0) std::reverse(facet.corners.begin(), facet.corners.end());
+    if (glm::dot(newell, planes[facet.plane].normal) < 0)
+      std::reverse(facet.corners.begin(), facet.corners.end());
     facets.push_back(std::move(facet));
   }
-  std::sort(facets.begin(), facets.end(), [](const Facet& a, const Facet& b) { return a.plane < b.plane; });
+  std::sort(facets.begin(), facets.end(),
+            [](const Facet& a, const Facet& b) { return a.plane < b.plane; });
 
   // Corners sorted by position, so the output does not depend on the hull's internal order.
   std::vector<std::uint32_t> used;

@@ -16,7 +16,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "probeproxy 0.1.0");
 
-  std::vector<cli::Verb> verbs = {cli::addDemoVerb(app), cli::addBuildVerb(app)};
+  std::vector<cli::Verb> verbs = {cli::addDemoVerb(app), cli::addBuildVerb(app),
+                                  cli::addExportVerb(app)};
   for (cli::Verb& pending : cli::addPendingVerbs(app)) verbs.push_back(std::move(pending));
 
   // CLI11 would only say "a subcommand is required"; name what was typed and what exists.

@@ -17,7 +17,8 @@ struct Verb {
 
 Verb addDemoVerb(CLI::App& app);
 Verb addBuildVerb(CLI::App& app);
-// validate, export, correct, blend, bench: present with their real options; each says which
+Verb addExportVerb(CLI::App& app);
+// validate, correct, blend, bench: present with their real options; each says which
 // issue brings it and exits 2 until that lands.
 std::vector<Verb> addPendingVerbs(CLI::App& app);
 

@@ -76,6 +76,11 @@ void printBuildTable(std::ostream& out, const std::vector<ProbeProxyBuild>& buil
         << "max" << std::setw(8) << "miss%" << std::setw(10) << "occl%" << "\n";
     for (std::size_t i = 0; i < b.candidates.size(); ++i) {
       const ProxyCandidate& c = b.candidates[i];
+      // The simplification gives a candidate per plane count; a person needs a few of them
+      // (--json lists all).
+      const int planes = planeCount(c.shape);
+      const bool everyStep = c.kind.rfind("convex_", 0) == 0;
+      if (everyStep && i != b.kept && planes != 4 && planes != 6 && planes != 8 && planes % 8 != 0) continue;
       out << (i == b.kept ? "* " : "  ") << std::left << std::setw(12) << c.kind << std::right
           << std::setw(7) << planeCount(c.shape) << std::setw(10) << figure(c.error.medianDeg, 3)
           << std::setw(10) << figure(c.error.p95Deg, 3) << std::setw(10)

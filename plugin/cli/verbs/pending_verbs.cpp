@@ -40,12 +40,6 @@ std::vector<Verb> addPendingVerbs(CLI::App& app) {
   validate->add_flag("--json", o.json, "print the findings as JSON on stdout");
   verbs.push_back(pendingVerb(validate, "validation of artist volumes", 5));
 
-  CLI::App* exportVerb = app.add_subcommand(
-      "export", "Write proxies.json and proxies.glb for the game runtime");
-  exportVerb->add_option("scene", o.scene, "scene file (*.scene.json)")->required();
-  exportVerb->add_option("--out", o.out, "output folder")->required();
-  verbs.push_back(pendingVerb(exportVerb, "runtime export", 3));
-
   CLI::App* correct = app.add_subcommand(
       "correct", "Write a parallax-corrected cubemap (EXR) for a probe, camera and reflection plane");
   correct->add_option("scene", o.scene, "scene file (*.scene.json)")->required();
