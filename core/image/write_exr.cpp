@@ -17,6 +17,9 @@ void writeExr(const std::filesystem::path& file, int width, int height,
     OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::FLOAT);
     spec.channelnames = channelNames;
     spec.attribute("compression", "zip");
+    // Same input, same bytes: OpenImageIO stamps EXRs with the time of writing unless told a
+    // fixed one, which then goes into the header as capDate.
+    spec.attribute("DateTime", "2000:01:01 00:00:00");
     std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(tmp.string());
     if (!out || !out->open(tmp.string(), spec) ||
         !out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) || !out->close()) {

@@ -15,7 +15,12 @@ ErrorFigures summarizeErrors(std::vector<double> errorsDeg, std::size_t occluded
                                      [](double e) { return !std::isnan(e); });
   const std::size_t hits = static_cast<std::size_t>(missed - errorsDeg.begin());
   const std::size_t visible = errorsDeg.size();
-  if (visible > 0) figures.missRate = static_cast<double>(visible - hits) / static_cast<double>(visible);
+  if (visible > 0) {
+    figures.missRate = static_cast<double>(visible - hits) / static_cast<double>(visible);
+    double sum = 180.0 * static_cast<double>(visible - hits);
+    for (std::size_t i = 0; i < hits; ++i) sum += errorsDeg[i];
+    figures.meanCostDeg = sum / static_cast<double>(visible);
+  }
   if (hits == 0) return figures;
 
   errorsDeg.resize(hits);

@@ -24,6 +24,10 @@ struct ConvexProxy {
 // How far x lies outside the proxy: max over planes of dot(n, x) - d (negative inside).
 double signedDistanceOutside(const std::vector<ProxyPlane>& planes, glm::dvec3 xMeters);
 
+// The boundary area on each plane (m^2), from the triangles: each triangle counts for the
+// plane it lies closest to. Planes without triangles get 0.
+std::vector<double> planeAreasSquareMeters(const ConvexProxy& proxy);
+
 // How far the proxy reaches from a point inside it: the largest exit distance over a fixed
 // set of `directions` spread evenly over the sphere (infinite if some direction never leaves).
 // A set of planes can be bounded in theory yet reach kilometres out along a direction no

@@ -14,6 +14,23 @@ double signedDistanceOutside(const std::vector<ProxyPlane>& planes, glm::dvec3 x
   return outside;
 }
 
+std::vector<double> planeAreasSquareMeters(const ConvexProxy& proxy) {
+  std::vector<double> areas(proxy.planes.size(), 0.0);
+  if (proxy.planes.empty()) return areas;
+  for (const glm::uvec3& t : proxy.triangles) {
+    const glm::dvec3 a = proxy.verticesMeters[t.x], b = proxy.verticesMeters[t.y], c = proxy.verticesMeters[t.z];
+    const glm::dvec3 centroid = (a + b + c) / 3.0;
+    std::size_t on = 0;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < proxy.planes.size(); ++i) {
+      const double d = std::abs(glm::dot(proxy.planes[i].normal, centroid) - proxy.planes[i].offsetMeters);
+      if (d < nearest) nearest = d, on = i;
+    }
+    areas[on] += 0.5 * glm::length(glm::cross(b - a, c - a));
+  }
+  return areas;
+}
+
 double farthestExitMeters(const std::vector<ProxyPlane>& planes, glm::dvec3 from, int directions) {
   double farthest = 0.0;
   for (int i = 0; i < directions; ++i) {

@@ -1,5 +1,6 @@
 #include "geometry/build/build_probe_proxy.h"
 
+#include "geometry/build/ieee_float_mode.h"
 #include "geometry/evaluation/evaluate_shape.h"
 #include "geometry/fit/bounding_sphere_fit.h"
 #include "geometry/fit/convex_hull_proxy.h"
@@ -15,6 +16,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <numeric>
 #include <cmath>
 #include <tuple>
 
@@ -73,22 +75,31 @@ std::size_t selectProxy(const std::vector<ProxyCandidate>& candidates, const Pro
     if (best == candidates.size() || complexity(i) < complexity(best)) best = i;
   }
   if (best != candidates.size()) return best;
-  // None does: the most accurate within the plane budget, misses first, then p95.
-  const auto accuracy = [&](std::size_t i) {
-    const ErrorFigures& e = candidates[i].error;
-    return std::make_tuple(e.missRate > o.maxMissRate, std::isfinite(e.p95Deg) ? e.p95Deg : 1e300,
-                           complexity(i));
+  // None does: the most accurate within the plane budget, by mean error (misses at 180
+  // degrees), sparing the planes that buy less than 5% of it: a concave room that no convex
+  // proxy models gets a simple proxy, not 30 planes for a hundredth of a degree.
+  const auto meanOf = [&](std::size_t i) {
+    const double m = candidates[i].error.meanCostDeg;
+    return std::isfinite(m) ? m : 1e300;
   };
+  std::size_t mostAccurate = candidates.size();
   for (std::size_t i = 0; i < candidates.size(); ++i) {
-    if (!generated(i)) continue;
-    if (best == candidates.size() || accuracy(i) < accuracy(best)) best = i;
+    if (!generated(i) || candidates[i].error.missRate > o.maxMissRate) continue;
+    if (mostAccurate == candidates.size() || meanOf(i) < meanOf(mostAccurate)) mostAccurate = i;
   }
-  return best == candidates.size() ? 0 : best;
+  if (mostAccurate == candidates.size()) return 0;  // nothing but misses: keep the first
+  const double goodEnough = 1.05 * meanOf(mostAccurate) + 0.01;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (!generated(i) || candidates[i].error.missRate > o.maxMissRate || meanOf(i) > goodEnough) continue;
+    if (best == candidates.size() || complexity(i) < complexity(best)) best = i;
+  }
+  return best;
 }
 
 ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
                                 const std::optional<ProxyShape>& authored,
                                 const ProxyBuildOptions& o) {
+  const IeeeFloatMode ieee;
   const auto start = Clock::now();
   ProbeProxyBuild build;
   build.probe = probe.name;
@@ -181,7 +192,16 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
     // (the inner walls of a concave room among them), down to a tetrahedron; error decides
     // which planes stay.
     t = Clock::now();
-    std::vector<ProxyPlane> planes = hull->planes;
+    // The hull has a thin bevel plane wherever two walls meet between texels; they cost no
+    // accuracy and only slow the simplification, so planes under 0.2% of the hull's area start
+    // out dropped (kept if the rest would not be bounded).
+    std::vector<ProxyPlane> planes;
+    const std::vector<double> areas = planeAreasSquareMeters(*hull);
+    const double totalArea = std::accumulate(areas.begin(), areas.end(), 0.0);
+    for (std::size_t i = 0; i < hull->planes.size(); ++i) {
+      if (areas[i] >= 0.002 * totalArea) planes.push_back(hull->planes[i]);
+    }
+    if (!isBounded(planes)) planes = hull->planes;
     for (const ProxyPlane& p : visibleSurfacePlanes(hits, capture, o.depthFaceSize, 10 * tolerance)) {
       const bool onHull = std::any_of(planes.begin(), planes.end(), [&](const ProxyPlane& q) {
         return glm::dot(p.normal, q.normal) > 0.9998 && std::abs(p.offsetMeters - q.offsetMeters) < 10 * tolerance;

@@ -15,7 +15,7 @@ namespace probeproxy {
 struct ProxyBuildOptions {
   double toleranceDeg = 0.25;   // keep the fewest planes whose mirror_floor p95 is under this
   int maxPlanes = 64;           // never keep more planes than this
-  double maxMissRate = 0.01;    // a kept proxy may miss at most this share of visible samples
+  double maxMissRate = 0.001;   // a kept proxy may miss at most this share of visible samples
   int depthFaceSize = 128;      // depth cube the candidates are fitted to
   bool regenerate = false;      // build a proxy even where the scene file has an authored one
   ReflectionSampleOptions samples;

@@ -2,15 +2,32 @@
 
 #include "geometry/build/authored_proxy_shape.h"
 
+#include "core/errors/input_error.h"
+
 #include <tbb/parallel_for.h>
 
 #include <mutex>
+#include <sstream>
 
 namespace probeproxy {
 
 std::vector<ProbeProxyBuild> buildSceneProxies(
     const Scene& scene, const LevelRayCaster& level, const ProxyBuildOptions& options,
     const std::function<void(std::size_t, std::size_t)>& onProbeDone) {
+  // A probe outside its own influence volume has no reflections to fit a proxy to (the samples
+  // live in the volume): bad input, said before any work. `validate` reports it as a finding.
+  for (std::size_t i = 0; i < scene.probes.size(); ++i) {
+    const Probe& probe = scene.probes[i];
+    if (!insideInfluence(probe.influence, probe.captureMeters)) {
+      std::ostringstream problem;
+      problem << "$.probes[" << i << "]: probe '" << probe.name << "' captures at ("
+              << probe.captureMeters.x << ", " << probe.captureMeters.y << ", "
+              << probe.captureMeters.z << ") m, outside its influence volume; move the capture "
+              << "point into the volume or the volume over it";
+      throw InputError(scene.file, problem.str());
+    }
+  }
+
   // Authored meshes are read first, on this thread: a bad one is reported before any work.
   std::vector<std::optional<ProxyShape>> authored;
   for (const Probe& probe : scene.probes) authored.push_back(authoredProxyShape(probe.proxy, scene));

@@ -104,6 +104,11 @@ TriangleHull convexHull3(std::span<const glm::dvec3> points, bool withSourceInde
   std::vector<Point> cgalPoints;
   cgalPoints.reserve(points.size());
   for (const glm::dvec3& p : points) cgalPoints.push_back(toCgal(p));
+  // Repeated points reach a use-after-free in CGAL 5.5's quickhull (CGAL issues #6543, #8625:
+  // the farthest point can be one of the three it starts from, and is erased twice). Sorted
+  // and unique, the input also has one canonical order, whatever order the caller had.
+  std::sort(cgalPoints.begin(), cgalPoints.end());
+  cgalPoints.erase(std::unique(cgalPoints.begin(), cgalPoints.end()), cgalPoints.end());
 
   Mesh mesh;
   CGAL::convex_hull_3(cgalPoints.begin(), cgalPoints.end(), mesh);
