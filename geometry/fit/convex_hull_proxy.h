@@ -18,6 +18,7 @@ namespace probeproxy {
 // Planes are sorted by normal (x, then y, then z) and offset; corners and triangles are
 // recomputed from the planes (polytopeFromPlanes, around the mean of the hull's corners), so
 // every triangle lies on its plane. A plane that ends up bounding no facet is left out.
+// The same point set gives the same proxy bit for bit, in any order and on any thread.
 //
 // Degenerate input is an error, never a thin proxy: FitError when there are fewer than 4
 // points, a coordinate is not finite, the tolerance is negative, or the points are all one

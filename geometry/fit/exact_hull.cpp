@@ -10,11 +10,16 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/convex_hull_3.h>
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <numeric>
 #include <sstream>
+#include <string>
+#include <utility>
 #include <tuple>
 #include <unordered_map>
 
@@ -24,6 +29,7 @@ namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
+using Point2 = Kernel::Point_2;
 using Mesh = CGAL::Surface_mesh<Point>;
 
 Point toCgal(glm::dvec3 p) { return Point(p.x, p.y, p.z); }
@@ -42,10 +48,98 @@ struct PointBitsHash {
     return static_cast<std::size_t>(h);
   }
 };
+using Triangle = std::array<std::uint32_t, 3>;
+
+bool lexicographicLess(const glm::dvec3& a, const glm::dvec3& b) {
+  return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+}
+
+struct FlatRegions {  // union-find over triangles
+  std::vector<std::uint32_t> parent;
+  explicit FlatRegions(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
+  std::uint32_t find(std::uint32_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  }
+  void unite(std::uint32_t a, std::uint32_t b) {
+    a = find(a), b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+};
+
+// The corners of a flat region of hull triangles (all in one plane): its convex polygon with
+// no corner on a side, counter-clockwise seen from outside like the triangles, starting at the
+// lowest corner by (x, y, z). Exact: the region is projected along a coordinate axis that its
+// plane is not parallel to, where exact 2D orientations decide.
+std::vector<std::uint32_t> flatRegionCorners(const std::vector<Triangle>& triangles,
+                                             const std::vector<std::uint32_t>& members,
+                                             const std::vector<glm::dvec3>& position) {
+  std::vector<std::uint32_t> corners;
+  for (std::uint32_t f : members)
+    corners.insert(corners.end(), triangles[f].begin(), triangles[f].end());
+  std::sort(corners.begin(), corners.end());
+  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+
+  const Triangle& t = triangles[members.front()];
+  const glm::dvec3 a = position[t[0]], b = position[t[1]], c = position[t[2]];
+  const glm::dvec3 normal = glm::cross(b - a, c - a);
+  std::array<int, 3> axes{0, 1, 2};
+  std::stable_sort(axes.begin(), axes.end(),
+                   [&](int i, int j) { return std::abs(normal[i]) > std::abs(normal[j]); });
+  int dropped = -1;
+  CGAL::Orientation winding = CGAL::COLLINEAR;
+  const auto project = [&](glm::dvec3 p) {
+    return Point2(p[(dropped + 1) % 3], p[(dropped + 2) % 3]);
+  };
+  for (int axis : axes) {
+    dropped = axis;
+    winding = CGAL::orientation(project(a), project(b), project(c));
+    if (winding != CGAL::COLLINEAR) break;
+  }
+  if (winding == CGAL::COLLINEAR) {
+    throw FitError("convex hull: a hull triangle has no area");  // exact predicates: never
+  }
+
+  // Andrew's monotone chain on the projections, dropping corners on a side.
+  std::vector<std::pair<Point2, std::uint32_t>> sorted;
+  sorted.reserve(corners.size());
+  for (std::uint32_t v : corners) sorted.emplace_back(project(position[v]), v);
+  std::sort(sorted.begin(), sorted.end(),
+            [](const auto& i, const auto& j) { return i.first < j.first; });
+  std::vector<std::size_t> chain;  // indices into sorted
+  for (int pass = 0; pass < 2; ++pass) {
+    const std::size_t start = chain.size();
+    for (std::size_t k = 0; k < sorted.size(); ++k) {
+      const std::size_t i = pass == 0 ? k : sorted.size() - 1 - k;
+      while (chain.size() >= start + 2 &&
+             CGAL::orientation(sorted[chain[chain.size() - 2]].first, sorted[chain.back()].first,
+                               sorted[i].first) != CGAL::LEFT_TURN) {
+        chain.pop_back();
+      }
+      chain.push_back(i);
+    }
+    chain.pop_back();  // the first corner of the other chain
+  }
+  std::vector<std::uint32_t> ring;
+  ring.reserve(chain.size());
+  for (std::size_t i : chain) ring.push_back(sorted[i].second);
+  if (winding == CGAL::RIGHT_TURN) std::reverse(ring.begin(), ring.end());
+  const auto lowest =
+      std::min_element(ring.begin(), ring.end(), [&](std::uint32_t i, std::uint32_t j) {
+        return lexicographicLess(position[i], position[j]);
+      });
+  std::rotate(ring.begin(), lowest, ring.end());
+  return ring;
+}
+
 PointBits bitsOf(double x, double y, double z) {
   return {std::bit_cast<std::uint64_t>(x), std::bit_cast<std::uint64_t>(y),
           std::bit_cast<std::uint64_t>(z)};
 }
+
+// -0 and +0 are one coordinate: + 0.0 makes both +0, so that of two copies of a point which
+// differ in the sign of a zero, the hull keeps the same bits whichever comes first.
+glm::dvec3 withoutNegativeZero(glm::dvec3 p) { return {p.x + 0.0, p.y + 0.0, p.z + 0.0}; }
 
 }  // namespace
 
@@ -103,7 +197,7 @@ TriangleHull convexHull3(std::span<const glm::dvec3> points, bool withSourceInde
   requireFinite(points, "convex hull");
   std::vector<Point> cgalPoints;
   cgalPoints.reserve(points.size());
-  for (const glm::dvec3& p : points) cgalPoints.push_back(toCgal(p));
+  for (const glm::dvec3& p : points) cgalPoints.push_back(toCgal(withoutNegativeZero(p)));
   // Repeated points reach a use-after-free in CGAL 5.5's quickhull (CGAL issues #6543, #8625:
   // the farthest point can be one of the three it starts from, and is erased twice). Sorted
   // and unique, the input also has one canonical order, whatever order the caller had.
@@ -120,65 +214,134 @@ TriangleHull convexHull3(std::span<const glm::dvec3> points, bool withSourceInde
     throw FitError(message.str());
   }
 
-  // convex_hull_3 builds a fresh mesh, so indices run 0..n-1 with no removed elements. Their
-  // order follows heap addresses, though, and changes from call to call: sort corners by
-  // position and triangles by corners, so that the same points give the same hull, bit for bit
-  // (the facet merging sums areas in this order, the box polish takes the first of equals).
-  const std::size_t vertexCount = mesh.number_of_vertices();
-  std::vector<glm::dvec3> position(vertexCount);
+  // convex_hull_3 builds a fresh mesh, so indices run 0..n-1 with no removed elements.
+  const std::size_t meshVertexCount = mesh.number_of_vertices();
+  std::vector<glm::dvec3> position(meshVertexCount);
   for (Mesh::Vertex_index v : mesh.vertices()) {
     const Point& p = mesh.point(v);
     position[v.idx()] = {p.x(), p.y(), p.z()};
   }
-  std::vector<std::uint32_t> byPosition(vertexCount);
-  std::iota(byPosition.begin(), byPosition.end(), 0u);
-  std::sort(byPosition.begin(), byPosition.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return std::tie(position[a].x, position[a].y, position[a].z) <
-           std::tie(position[b].x, position[b].y, position[b].z);
-  });
-  std::vector<std::uint32_t> newVertex(vertexCount);
-  TriangleHull hull;
-  for (std::uint32_t i = 0; i < vertexCount; ++i) {
-    newVertex[byPosition[i]] = i;
-    hull.vertices.push_back(position[byPosition[i]]);
-  }
-
-  struct Face {
-    std::array<std::uint32_t, 3> corners;    // new vertex indices
-    std::array<std::uint32_t, 3> neighbors;  // old face indices, across edge e
-  };
-  const std::size_t faceCount = mesh.number_of_faces();
-  std::vector<Face> faces(faceCount);
+  const std::size_t meshFaceCount = mesh.number_of_faces();
+  std::vector<Triangle> meshTriangles(meshFaceCount), across(meshFaceCount);
   for (Mesh::Face_index f : mesh.faces()) {
-    Face& face = faces[f.idx()];
     Mesh::Halfedge_index h = mesh.halfedge(f);
     for (int e = 0; e < 3; ++e, h = mesh.next(h)) {
-      face.corners[e] = newVertex[mesh.source(h).idx()];
-      face.neighbors[e] = static_cast<std::uint32_t>(mesh.face(mesh.opposite(h)).idx());
+      meshTriangles[f.idx()][e] = static_cast<std::uint32_t>(mesh.source(h).idx());
+      across[f.idx()][e] = static_cast<std::uint32_t>(mesh.face(mesh.opposite(h)).idx());
     }
-    // Lowest corner first; the edges turn with the corners, so the winding stays.
-    const auto lowest =
-        std::min_element(face.corners.begin(), face.corners.end()) - face.corners.begin();
-    std::rotate(face.corners.begin(), face.corners.begin() + lowest, face.corners.end());
-    std::rotate(face.neighbors.begin(), face.neighbors.begin() + lowest, face.neighbors.end());
   }
-  std::vector<std::uint32_t> byCorners(faceCount);
-  std::iota(byCorners.begin(), byCorners.end(), 0u);
-  std::sort(byCorners.begin(), byCorners.end(),
-            [&](std::uint32_t a, std::uint32_t b) { return faces[a].corners < faces[b].corners; });
-  std::vector<std::uint32_t> newFace(faceCount);
-  for (std::uint32_t i = 0; i < faceCount; ++i) newFace[byCorners[i]] = i;
-  for (std::uint32_t old : byCorners) {
-    hull.triangles.push_back(faces[old].corners);
-    hull.neighbors.push_back({newFace[faces[old].neighbors[0]], newFace[faces[old].neighbors[1]],
-                              newFace[faces[old].neighbors[2]]});
+
+  // Which triangles CGAL makes of a flat region, and in which order, follow heap addresses
+  // (its quickhull keys a map by vertex address), so they change from call to call and from
+  // thread to thread (each has its own malloc arena). Keep only what the point set decides:
+  // the flat regions (neighbouring triangles in one plane, exactly) and their corners (none on
+  // a side or inside, should CGAL keep one), each region fanned from its lowest corner. Then
+  // sort corners by position and triangles by corners, so that the same points give the same
+  // hull, bit for bit (the facet merging sums areas in this order, the box polish takes the
+  // first of equals, the polytope of planes solves corners from these triangles).
+  FlatRegions regions(meshFaceCount);
+  bool anyFlat = false;
+  for (std::uint32_t f = 0; f < meshFaceCount; ++f) {
+    const Triangle& t = meshTriangles[f];
+    for (int e = 0; e < 3; ++e) {
+      const std::uint32_t u = across[f][e];
+      if (u < f) continue;
+      const std::uint32_t from = t[e], to = t[(e + 1) % 3];
+      std::uint32_t apex = meshTriangles[u][0];
+      for (std::uint32_t v : meshTriangles[u]) {
+        if (v != from && v != to) apex = v;
+      }
+      if (CGAL::orientation(toCgal(position[t[0]]), toCgal(position[t[1]]),
+                            toCgal(position[t[2]]), toCgal(position[apex])) == CGAL::COPLANAR) {
+        regions.unite(f, u);
+        anyFlat = true;
+      }
+    }
   }
+  std::vector<Triangle> triangles;
+  if (!anyFlat) {
+    // No flat region, so no corner on a rim or inside one either: CGAL's triangles are the
+    // hull's facets.
+    triangles = std::move(meshTriangles);
+  } else {
+    std::vector<std::uint32_t> byRegion(meshFaceCount);
+    std::iota(byRegion.begin(), byRegion.end(), 0u);
+    std::vector<std::uint32_t> region(meshFaceCount);
+    for (std::uint32_t f = 0; f < meshFaceCount; ++f) region[f] = regions.find(f);
+    std::sort(byRegion.begin(), byRegion.end(), [&](std::uint32_t a, std::uint32_t b) {
+      return std::tie(region[a], a) < std::tie(region[b], b);
+    });
+    std::vector<std::uint32_t> members;
+    for (std::size_t i = 0; i < byRegion.size();) {
+      std::size_t j = i;
+      while (j < byRegion.size() && region[byRegion[j]] == region[byRegion[i]]) ++j;
+      if (j - i == 1) {
+        triangles.push_back(meshTriangles[byRegion[i]]);
+      } else {
+        members.assign(byRegion.begin() + static_cast<std::ptrdiff_t>(i),
+                       byRegion.begin() + static_cast<std::ptrdiff_t>(j));
+        const std::vector<std::uint32_t> polygon =
+            flatRegionCorners(meshTriangles, members, position);
+        for (std::size_t k = 1; k + 1 < polygon.size(); ++k)
+          triangles.push_back({polygon[0], polygon[k], polygon[k + 1]});
+      }
+      i = j;
+    }
+  }
+
+  std::vector<std::uint32_t> kept;
+  kept.reserve(meshVertexCount);
+  for (const Triangle& t : triangles) kept.insert(kept.end(), t.begin(), t.end());
+  std::sort(kept.begin(), kept.end());
+  kept.erase(std::unique(kept.begin(), kept.end()), kept.end());
+  std::sort(kept.begin(), kept.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return lexicographicLess(position[a], position[b]);
+  });
+  std::vector<std::uint32_t> newVertex(meshVertexCount, UINT32_MAX);
+  TriangleHull hull;
+  hull.vertices.reserve(kept.size());
+  for (std::uint32_t i = 0; i < kept.size(); ++i) {
+    newVertex[kept[i]] = i;
+    hull.vertices.push_back(position[kept[i]]);
+  }
+  for (Triangle& t : triangles) {
+    for (std::uint32_t& v : t) v = newVertex[v];
+    // Lowest corner first, keeping the winding.
+    const auto lowest = std::min_element(t.begin(), t.end()) - t.begin();
+    std::rotate(t.begin(), t.begin() + lowest, t.end());
+  }
+  std::sort(triangles.begin(), triangles.end());
+
+  // Neighbours from the edges: each directed edge meets its reverse in one other triangle.
+  const std::uint64_t vertexCount = hull.vertices.size();
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> edges;  // (from * n + to, triangle)
+  edges.reserve(3 * triangles.size());
+  for (std::uint32_t i = 0; i < triangles.size(); ++i) {
+    for (int e = 0; e < 3; ++e)
+      edges.emplace_back(triangles[i][e] * vertexCount + triangles[i][(e + 1) % 3], i);
+  }
+  std::sort(edges.begin(), edges.end());
+  hull.neighbors.resize(triangles.size());
+  for (std::uint32_t i = 0; i < triangles.size(); ++i) {
+    for (int e = 0; e < 3; ++e) {
+      const std::uint64_t reverse = triangles[i][(e + 1) % 3] * vertexCount + triangles[i][e];
+      const auto it = std::lower_bound(edges.begin(), edges.end(),
+                                       std::pair<std::uint64_t, std::uint32_t>(reverse, 0u));
+      if (it == edges.end() || it->first != reverse) {
+        throw FitError("convex hull: the hull of the " + std::to_string(points.size()) +
+                       " points is not closed after merging its flat regions");
+      }
+      hull.neighbors[i][e] = it->second;
+    }
+  }
+  hull.triangles = std::move(triangles);
 
   if (withSourceIndex) {
     std::unordered_map<PointBits, std::size_t, PointBitsHash> firstIndex;
     firstIndex.reserve(points.size());
     for (std::size_t i = 0; i < points.size(); ++i) {
-      firstIndex.try_emplace(bitsOf(points[i].x, points[i].y, points[i].z), i);
+      const glm::dvec3 p = withoutNegativeZero(points[i]);
+      firstIndex.try_emplace(bitsOf(p.x, p.y, p.z), i);
     }
     hull.sourceIndex.reserve(hull.vertices.size());
     for (const glm::dvec3& v : hull.vertices)

@@ -32,7 +32,7 @@ int orientationSign(glm::dvec3 a, glm::dvec3 b, glm::dvec3 c, glm::dvec3 d);
 
 // A closed convex triangle mesh.
 struct TriangleHull {
-  std::vector<glm::dvec3> vertices;                     // hull corners, copies of input points
+  std::vector<glm::dvec3> vertices;  // hull corners, copies of input points (with -0 as +0)
   std::vector<std::array<std::uint32_t, 3>> triangles;  // counter-clockwise seen from outside
   // neighbors[t][e]: the triangle across edge e of triangle t, the edge from triangles[t][e]
   // to triangles[t][(e + 1) % 3].
@@ -44,6 +44,11 @@ struct TriangleHull {
 // (affineSpan(points).dimension == 3), else FitError. Points inside or on the boundary but not
 // at a corner are left out. `withSourceIndex` costs a hash map over the input: ask for it on
 // small inputs only.
+// The result depends on the point set only, not on its order nor on the heap (CGAL's own
+// triangles of a flat region, and the order it makes them in, follow heap addresses): corners
+// are sorted by (x, y, z); a flat region (hull triangles in one plane, exactly) becomes a fan
+// from its lowest corner over its polygon's corners, counter-clockwise; triangles start at
+// their lowest corner and are sorted by corners.
 TriangleHull convexHull3(std::span<const glm::dvec3> points, bool withSourceIndex = false);
 
 }  // namespace probeproxy::fit

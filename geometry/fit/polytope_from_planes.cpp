@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -98,6 +99,94 @@ struct UnionFind {
   }
 };
 
+using Triple = std::array<std::size_t, 3>;
+
+// Solves corners from three planes each, in an order that depends on the planes' values, not
+// on their indices, so that a corner has the same bits whichever dual triangle asks for it and
+// whatever order the planes came in.
+class CornerSolver {
+ public:
+  CornerSolver(const std::vector<ProxyPlane>& planes, const std::vector<double>& heights)
+      : planes_(planes), heights_(heights), rank_(planes.size()) {
+    std::vector<std::size_t> byValue(planes.size());
+    std::iota(byValue.begin(), byValue.end(), std::size_t{0});
+    std::stable_sort(byValue.begin(), byValue.end(), [&](std::size_t i, std::size_t j) {
+      const ProxyPlane &a = planes[i], &b = planes[j];
+      return std::tie(a.normal.x, a.normal.y, a.normal.z, a.offsetMeters) <
+             std::tie(b.normal.x, b.normal.y, b.normal.z, b.offsetMeters);
+    });
+    for (std::size_t r = 0; r < byValue.size(); ++r) rank_[byValue[r]] = r;
+  }
+
+  // Planes in value order (equal planes: in index order, and they give the same bits).
+  void sort(std::vector<std::size_t>& indices) const {
+    std::sort(indices.begin(), indices.end(),
+              [&](std::size_t i, std::size_t j) { return rank_[i] < rank_[j]; });
+  }
+
+  // The point where three planes meet, relative to the interior point.
+  glm::dvec3 corner(std::size_t i, std::size_t j, std::size_t k) const {
+    Triple t{i, j, k};
+    std::sort(t.begin(), t.end(),
+              [&](std::size_t a, std::size_t b) { return rank_[a] < rank_[b]; });
+    return solve(t);
+  }
+
+  // Of the planes that meet at a corner (in value order, no repeats), the three whose normals
+  // are the farthest from dependent, the first such on ties; the corner they give. Every
+  // triple up to 40 planes; beyond, the first plane, the one most across it, and the one most
+  // across both.
+  glm::dvec3 corner(const std::vector<std::size_t>& at) const {
+    const std::size_t n = at.size();
+    Triple best{0, 1, 2};  // positions in `at`
+    double bestConditioning = conditioning(at, best);
+    if (n <= 40) {
+      for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t j = i + 1; j < n; ++j) {
+          for (std::size_t k = j + 1; k < n; ++k) {
+            const double c = conditioning(at, {i, j, k});
+            if (c > bestConditioning) best = {i, j, k}, bestConditioning = c;
+          }
+        }
+      }
+    } else {
+      const glm::dvec3 first = planes_[at[0]].normal;
+      const auto across = [&](std::size_t i) {
+        return glm::length(glm::cross(first, planes_[at[i]].normal));
+      };
+      std::size_t b = 1;
+      for (std::size_t i = 2; i < n; ++i) {
+        if (across(i) > across(b)) b = i;
+      }
+      std::size_t c = b == 1 ? 2 : 1;
+      for (std::size_t i = 1; i < n; ++i) {
+        if (i != b && conditioning(at, {0, b, i}) > conditioning(at, {0, b, c})) c = i;
+      }
+      best = {0, std::min(b, c), std::max(b, c)};
+    }
+    return solve({at[best[0]], at[best[1]], at[best[2]]});
+  }
+
+ private:
+  double conditioning(const std::vector<std::size_t>& at, const Triple& t) const {
+    return std::abs(glm::dot(planes_[at[t[0]]].normal,
+                             glm::cross(planes_[at[t[1]]].normal, planes_[at[t[2]]].normal)));
+  }
+
+  glm::dvec3 solve(const Triple& t) const {
+    const glm::dvec3 na = planes_[t[0]].normal, nb = planes_[t[1]].normal,
+                     nc = planes_[t[2]].normal;
+    const double det = glm::dot(na, glm::cross(nb, nc));
+    return (heights_[t[0]] * glm::cross(nb, nc) + heights_[t[1]] * glm::cross(nc, na) +
+            heights_[t[2]] * glm::cross(na, nb)) /
+           det;
+  }
+
+  const std::vector<ProxyPlane>& planes_;
+  const std::vector<double>& heights_;
+  std::vector<std::size_t> rank_;
+};
+
 }  // namespace
 
 bool isBounded(const std::vector<ProxyPlane>& planes) {
@@ -151,9 +240,9 @@ ConvexProxy polytopeFromPlanes(std::vector<ProxyPlane> planes, glm::dvec3 interi
   for (std::size_t i = 0; i < planes.size(); ++i) dualPoints[i] = planes[i].normal / heights[i];
   const fit::TriangleHull dual = fit::convexHull3(dualPoints, /*withSourceIndex=*/true);
 
+  const CornerSolver solver(planes, heights);
   const std::size_t cornerCount = dual.triangles.size();
-  std::vector<glm::dvec3> fromInterior(cornerCount);  // corner - interior point
-  std::vector<double> conditioning(cornerCount);
+  std::vector<glm::dvec3> fromInterior(cornerCount);  // corner - interior point, per dual facet
   double sizeMeters = 0.0;
   for (std::size_t t = 0; t < cornerCount; ++t) {
     const auto& tri = dual.triangles[t];
@@ -165,20 +254,15 @@ ConvexProxy polytopeFromPlanes(std::vector<ProxyPlane> planes, glm::dvec3 interi
                  "open)";
       throw FitError(message.str());
     }
-    const std::size_t a = dual.sourceIndex[tri[0]], b = dual.sourceIndex[tri[1]],
-                      c = dual.sourceIndex[tri[2]];
-    const glm::dvec3 na = planes[a].normal, nb = planes[b].normal, nc = planes[c].normal;
-    const double det = glm::dot(na, glm::cross(nb, nc));
-    fromInterior[t] = (heights[a] * glm::cross(nb, nc) + heights[b] * glm::cross(nc, na) +
-                       heights[c] * glm::cross(na, nb)) /
-                      det;
-    conditioning[t] = std::abs(det);
+    fromInterior[t] = solver.corner(dual.sourceIndex[tri[0]], dual.sourceIndex[tri[1]],
+                                    dual.sourceIndex[tri[2]]);
     sizeMeters = std::max(sizeMeters, glm::length(fromInterior[t]));
   }
 
   // Where more than three planes meet, the dual facet is split into triangles that give the
   // same corner up to rounding: merge corners that neighbouring dual facets put within
-  // `mergeMeters`, and place each at its best conditioned solve.
+  // `mergeMeters`, and place each at the best conditioned solve of three of the planes that
+  // meet there (whichever triangles the dual hull made of them).
   const double mergeMeters = 1e-9 * sizeMeters;
   UnionFind corners(cornerCount);
   for (std::size_t t = 0; t < cornerCount; ++t) {
@@ -188,10 +272,19 @@ ConvexProxy polytopeFromPlanes(std::vector<ProxyPlane> planes, glm::dvec3 interi
       }
     }
   }
-  std::vector<std::uint32_t> best(cornerCount);
+  std::vector<std::vector<std::size_t>> planesAt(cornerCount);  // by root
   for (std::uint32_t t = 0; t < cornerCount; ++t) {
-    const std::uint32_t root = corners.find(t);
-    if (t == root || conditioning[t] > conditioning[best[root]]) best[root] = t;
+    auto& at = planesAt[corners.find(t)];
+    for (std::uint32_t v : dual.triangles[t]) at.push_back(dual.sourceIndex[v]);
+  }
+  std::vector<glm::dvec3> cornerFromInterior(cornerCount);  // by root
+  for (std::uint32_t t = 0; t < cornerCount; ++t) {
+    auto& at = planesAt[t];
+    if (at.empty()) continue;
+    std::sort(at.begin(), at.end());
+    at.erase(std::unique(at.begin(), at.end()), at.end());
+    solver.sort(at);
+    cornerFromInterior[t] = at.size() == 3 ? fromInterior[t] : solver.corner(at);
   }
 
   // Each dual corner's ring of dual facets is its plane's facet polygon.
@@ -223,8 +316,8 @@ ConvexProxy polytopeFromPlanes(std::vector<ProxyPlane> planes, glm::dvec3 interi
 
     glm::dvec3 newell(0.0);
     for (std::size_t j = 0; j < facet.corners.size(); ++j) {
-      const glm::dvec3 p = fromInterior[best[facet.corners[j]]];
-      const glm::dvec3 q = fromInterior[best[facet.corners[(j + 1) % facet.corners.size()]]];
+      const glm::dvec3 p = cornerFromInterior[facet.corners[j]];
+      const glm::dvec3 q = cornerFromInterior[facet.corners[(j + 1) % facet.corners.size()]];
       newell += glm::cross(p, q);
     }
     if (glm::length(newell) <= mergeMeters * mergeMeters) continue;
@@ -240,7 +333,7 @@ ConvexProxy polytopeFromPlanes(std::vector<ProxyPlane> planes, glm::dvec3 interi
   for (const Facet& f : facets) used.insert(used.end(), f.corners.begin(), f.corners.end());
   std::sort(used.begin(), used.end());
   used.erase(std::unique(used.begin(), used.end()), used.end());
-  const auto position = [&](std::uint32_t root) { return interior + fromInterior[best[root]]; };
+  const auto position = [&](std::uint32_t root) { return interior + cornerFromInterior[root]; };
   std::sort(used.begin(), used.end(), [&](std::uint32_t a, std::uint32_t b) {
     const glm::dvec3 pa = position(a), pb = position(b);
     return std::tie(pa.x, pa.y, pa.z) < std::tie(pb.x, pb.y, pb.z);

@@ -14,14 +14,18 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <functional>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <random>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -165,6 +169,78 @@ auto twiceWithTheHeapMoved(const Call& call) {
   return std::make_pair(first, second);
 }
 
+// What a depth cube sees from `eye` inside the box room [low, high]: one point per texel of
+// six faceSize x faceSize cube faces, at the distance a float depth buffer stores.
+Points depthCubePoints(glm::dvec3 low, glm::dvec3 high, glm::dvec3 eye, int faceSize) {
+  Points points;
+  for (int axis = 0; axis < 3; ++axis) {
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    for (double sign : {-1.0, 1.0}) {
+      for (int i = 0; i < faceSize; ++i) {
+        for (int j = 0; j < faceSize; ++j) {
+          glm::dvec3 d;
+          d[axis] = sign, d[u] = (2.0 * i + 1) / faceSize - 1, d[v] = (2.0 * j + 1) / faceSize - 1;
+          d = glm::normalize(d);
+          double t = std::numeric_limits<double>::infinity();
+          for (int k = 0; k < 3; ++k) {
+            if (d[k] != 0) t = std::min(t, ((d[k] > 0 ? high[k] : low[k]) - eye[k]) / d[k]);
+          }
+          points.push_back(eye + d * static_cast<double>(static_cast<float>(t)));
+        }
+      }
+    }
+  }
+  return points;
+}
+
+// A proxy as the bits of all its numbers, so that two proxies compare bit for bit.
+std::vector<std::uint64_t> proxyBits(const ConvexProxy& proxy) {
+  std::vector<std::uint64_t> bits;
+  const auto add = [&](glm::dvec3 v) {
+    for (int k = 0; k < 3; ++k) bits.push_back(std::bit_cast<std::uint64_t>(v[k]));
+  };
+  bits.push_back(proxy.planes.size());
+  for (const ProxyPlane& p : proxy.planes) {
+    add(p.normal);
+    bits.push_back(std::bit_cast<std::uint64_t>(p.offsetMeters));
+  }
+  bits.push_back(proxy.verticesMeters.size());
+  for (const glm::dvec3& v : proxy.verticesMeters) add(v);
+  bits.push_back(proxy.triangles.size());
+  for (const glm::uvec3& t : proxy.triangles) bits.insert(bits.end(), {t.x, t.y, t.z});
+  return bits;
+}
+
+// `call` on this thread, then twice on each of three threads at once, each thread with its own
+// malloc arena and holes of its own in it (so that CGAL's hull lands at other addresses, in
+// another order), all bit for bit the same.
+template <class Call>
+void expectSameBitsOnEveryThread(const Call& call) {
+  const std::vector<std::uint64_t> here = proxyBits(call());
+  std::vector<std::vector<std::uint64_t>> there(6);
+  {
+    std::vector<std::jthread> threads;
+    for (std::size_t i = 0; i < there.size(); i += 2) {
+      threads.emplace_back([&, i] {
+        std::mt19937_64 rng(i);
+        std::uniform_int_distribution<std::size_t> size(8, 3000);
+        for (std::size_t round = 0; round < 2; ++round) {
+          std::vector<std::vector<char>> blocks(4000);
+          for (auto& block : blocks) block.resize(size(rng));
+          for (std::size_t k = round; k < blocks.size(); k += 2) blocks[k] = {};
+          there[i + round] = proxyBits(call());
+        }
+      });
+    }
+  }
+  for (std::size_t i = 0; i < there.size(); ++i)
+    EXPECT_TRUE(there[i] == here) << "thread " << i / 2 << ", call " << i % 2
+                                  << " differs from the main thread at "
+                                  << (std::mismatch(here.begin(), here.end(), there[i].begin(),
+                                                    there[i].end()).first - here.begin())
+                                  << " of " << here.size();
+}
+
 const glm::dvec3 kRoomLow{-3.0, -2.0, 0.0};
 const glm::dvec3 kRoomHigh{7.0, 4.0, 3.0};  // 10 x 6 x 3 m
 
@@ -259,6 +335,26 @@ TEST(ConvexHullProxy, NoisyWallsMergeIntoSixPlanes) {
   }
   EXPECT_EQ(first.verticesMeters, second.verticesMeters);
   EXPECT_EQ(first.triangles, second.triangles);
+}
+
+// Found in the build: proxies.json changed with --threads, because CGAL's hull triangulates
+// flat regions, and orders them, by heap address, and each thread allocates from its own arena.
+TEST(ConvexHullProxy, SameBitsOnEveryThread) {
+  // A depth cube from inside an 18 x 3 x 3 m corridor, at the pipeline's tolerance.
+  const glm::dvec3 low(-4.0, -1.0, 0.0), high(14.0, 2.0, 3.0);
+  const Points points = depthCubePoints(low, high, {0.3, 0.2, 1.6}, 64);
+  const double tolerance = 1e-4 * 14.0 + 1e-4;
+  const ConvexProxy proxy = convexHullProxy(points, tolerance);
+  EXPECT_GE(proxy.planes.size(), 6u);
+  expectContains(proxy, points, 1e-9);
+  expectSameBitsOnEveryThread([&] { return convexHullProxy(points, tolerance); });
+  Points shuffled = points;
+  std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937_64(17));
+  EXPECT_TRUE(proxyBits(convexHullProxy(shuffled, tolerance)) == proxyBits(proxy))
+      << "the same points in another order give another proxy";
+  // Exact walls, where every wall is one flat region of many hull triangles.
+  const Points exact = boxRoomPoints(low, high, 40);
+  expectSameBitsOnEveryThread([&] { return convexHullProxy(exact, 1e-4); });
 }
 
 TEST(ConvexHullProxy, RoomTenKilometresFromTheOrigin) {
@@ -416,6 +512,56 @@ TEST(PolytopeFromPlanes, FourPlanesThroughOneCornerGiveOneCorner) {
   EXPECT_EQ(proxy.verticesMeters.size(), 5u);
   EXPECT_EQ(proxy.triangles.size(), 6u);
   expectConsistent(proxy, 1e-12);
+}
+
+TEST(PolytopeFromPlanes, CornersWhereManyPlanesMeetHaveTheSameBitsOnEveryThread) {
+  // Six cones of 32 planes each, with their apexes at +-x, +-y, +-z and the interior point at
+  // the origin: the dual point n / dot(n, apex) of every plane through the apex at +z has
+  // z = 1 exactly (and so on), so each apex is a flat dual facet of up to 32 corners, which a
+  // hull may triangulate in many ways.
+  std::vector<ProxyPlane> cones;
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> jitter(-0.2, 0.2), tilt(0.25, 0.35);
+  for (int axis = 0; axis < 3; ++axis) {
+    for (double sign : {-1.0, 1.0}) {
+      glm::dvec3 apex(0.0);
+      apex[axis] = sign;
+      for (int k = 0; k < 32; ++k) {
+        const double angle = 2 * std::numbers::pi * (k + jitter(rng)) / 32, r = tilt(rng);
+        glm::dvec3 n;
+        n[axis] = sign;
+        n[(axis + 1) % 3] = r * std::cos(angle), n[(axis + 2) % 3] = r * std::sin(angle);
+        n = glm::normalize(n);
+        cones.push_back({n, glm::dot(n, apex)});
+      }
+    }
+  }
+  // A cube with its (1, 1, 1) corner cut off through the three corners next to it, where four
+  // planes meet each time, and a copy of a box plane.
+  std::vector<ProxyPlane> bevelled = boxPlanes({-1, -1, -1}, {1, 1, 1});
+  const glm::dvec3 bevel = glm::normalize(glm::dvec3(1, 1, 1));
+  bevelled.push_back({bevel, glm::dot(bevel, glm::dvec3(1, 1, -1))});
+  bevelled.push_back(bevelled[0]);
+  for (const std::vector<ProxyPlane>& planes : {cones, bevelled}) {
+    const ConvexProxy proxy = polytopeFromPlanes(planes, glm::dvec3(0.0));
+    expectConsistent(proxy, 1e-12);
+    expectSameBitsOnEveryThread([&] { return polytopeFromPlanes(planes, glm::dvec3(0.0)); });
+  }
+  const ConvexProxy star = polytopeFromPlanes(cones, glm::dvec3(0.0));
+  // The same planes in another order give the same corners, bit for bit.
+  std::vector<ProxyPlane> shuffled = cones;
+  std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937_64(29));
+  const ConvexProxy again = polytopeFromPlanes(shuffled, glm::dvec3(0.0));
+  EXPECT_TRUE(proxyBits({{}, again.verticesMeters, {}}) ==
+              proxyBits({{}, star.verticesMeters, {}}));
+  EXPECT_EQ(again.triangles.size(), star.triangles.size());
+  for (const glm::dvec3 apex : {glm::dvec3(1, 0, 0), glm::dvec3(0, -1, 0), glm::dvec3(0, 0, 1)}) {
+    EXPECT_EQ(std::count_if(star.verticesMeters.begin(), star.verticesMeters.end(),
+                            [&](glm::dvec3 v) { return glm::distance(v, apex) <= 1e-12; }),
+              1)
+        << "apex (" << apex.x << ", " << apex.y << ", " << apex.z << ")";
+  }
+  EXPECT_EQ(polytopeFromPlanes(bevelled, glm::dvec3(0.0)).verticesMeters.size(), 7u);
 }
 
 TEST(PolytopeFromPlanes, UnboundedPlanesAreAFitError) {
