@@ -9,7 +9,8 @@ namespace probeproxy {
 std::filesystem::path cubeFacePath(const std::string& pattern, CubeFace face) {
   const std::string token = "{face}";
   const std::size_t at = pattern.find(token);
-  if (at == std::string::npos) throw std::invalid_argument("cube file pattern lacks {face}: " + pattern);
+  if (at == std::string::npos)
+    throw std::invalid_argument("cube file pattern lacks {face}: " + pattern);
   std::string path = pattern;
   path.replace(at, token.size(), cubeFaceName(face));
   return path;

@@ -15,9 +15,7 @@ inline constexpr int kExitBadInput = 2;
 class InputError : public std::runtime_error {
  public:
   InputError(const std::filesystem::path& file, const std::string& problem)
-      : std::runtime_error(file.string() + ": " + problem),
-        file_(file),
-        problem_(problem) {}
+      : std::runtime_error(file.string() + ": " + problem), file_(file), problem_(problem) {}
 
   const std::filesystem::path& file() const { return file_; }
   const std::string& problem() const { return problem_; }

@@ -2,9 +2,9 @@
 
 #include "core/errors/input_error.h"
 
+#include <unistd.h>
 #include <fstream>
 #include <system_error>
-#include <unistd.h>
 
 namespace probeproxy {
 

@@ -11,8 +11,8 @@ ErrorFigures summarizeErrors(std::vector<double> errorsDeg, std::size_t occluded
   if (figures.samples == 0) return figures;
   figures.occludedRate = static_cast<double>(occluded) / static_cast<double>(figures.samples);
 
-  const auto missed = std::partition(errorsDeg.begin(), errorsDeg.end(),
-                                     [](double e) { return !std::isnan(e); });
+  const auto missed =
+      std::partition(errorsDeg.begin(), errorsDeg.end(), [](double e) { return !std::isnan(e); });
   const std::size_t hits = static_cast<std::size_t>(missed - errorsDeg.begin());
   const std::size_t visible = errorsDeg.size();
   if (visible > 0) {

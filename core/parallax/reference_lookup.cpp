@@ -17,7 +17,8 @@ std::optional<double> exitConvex(const ConvexProxy& proxy, glm::dvec3 x, glm::dv
     const double towards = glm::dot(p.normal, r);
     // Only planes the ray moves towards can be where it leaves; max(0, ...) keeps points that
     // sit a hair outside a plane (within the tolerance) on that plane.
-    if (towards > 0) t = std::min(t, std::max(0.0, p.offsetMeters - glm::dot(p.normal, x)) / towards);
+    if (towards > 0)
+      t = std::min(t, std::max(0.0, p.offsetMeters - glm::dot(p.normal, x)) / towards);
   }
   if (!std::isfinite(t)) return std::nullopt;
   return t;
@@ -43,7 +44,8 @@ std::optional<double> exitSphere(const SphereShape& sphere, glm::dvec3 x, glm::d
   const glm::dquat sphereFromWorld = glm::conjugate(sphere.worldFromSphere);
   const glm::dvec3 p = (sphereFromWorld * (x - sphere.centerMeters)) / sphere.radiiMeters;
   const glm::dvec3 d = (sphereFromWorld * r) / sphere.radiiMeters;
-  const double scale = std::max(sphere.radiiMeters.x, std::max(sphere.radiiMeters.y, sphere.radiiMeters.z));
+  const double scale =
+      std::max(sphere.radiiMeters.x, std::max(sphere.radiiMeters.y, sphere.radiiMeters.z));
   if (glm::length(p) > 1.0 + kInsideToleranceMeters / scale) return std::nullopt;
   const double a = glm::dot(d, d);
   if (a == 0.0) return std::nullopt;
@@ -65,8 +67,8 @@ std::optional<double> exitDistance(const ProxyShape& shape, glm::dvec3 x, glm::d
   return std::nullopt;
 }
 
-std::optional<glm::dvec3> referenceLookup(const ProxyShape& shape, glm::dvec3 capture,
-                                          glm::dvec3 x, glm::dvec3 r) {
+std::optional<glm::dvec3> referenceLookup(const ProxyShape& shape, glm::dvec3 capture, glm::dvec3 x,
+                                          glm::dvec3 r) {
   if (r == glm::dvec3(0.0)) return std::nullopt;
   if (std::holds_alternative<InfiniteShape>(shape)) return r;
   if (const auto* cheap = std::get_if<CheapKShape>(&shape)) {

@@ -10,7 +10,8 @@ namespace probeproxy {
 
 double signedDistanceOutside(const std::vector<ProxyPlane>& planes, glm::dvec3 x) {
   double outside = -std::numeric_limits<double>::infinity();
-  for (const ProxyPlane& p : planes) outside = std::max(outside, glm::dot(p.normal, x) - p.offsetMeters);
+  for (const ProxyPlane& p : planes)
+    outside = std::max(outside, glm::dot(p.normal, x) - p.offsetMeters);
   return outside;
 }
 
@@ -18,12 +19,14 @@ std::vector<double> planeAreasSquareMeters(const ConvexProxy& proxy) {
   std::vector<double> areas(proxy.planes.size(), 0.0);
   if (proxy.planes.empty()) return areas;
   for (const glm::uvec3& t : proxy.triangles) {
-    const glm::dvec3 a = proxy.verticesMeters[t.x], b = proxy.verticesMeters[t.y], c = proxy.verticesMeters[t.z];
+    const glm::dvec3 a = proxy.verticesMeters[t.x], b = proxy.verticesMeters[t.y],
+                     c = proxy.verticesMeters[t.z];
     const glm::dvec3 centroid = (a + b + c) / 3.0;
     std::size_t on = 0;
     double nearest = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < proxy.planes.size(); ++i) {
-      const double d = std::abs(glm::dot(proxy.planes[i].normal, centroid) - proxy.planes[i].offsetMeters);
+      const double d =
+          std::abs(glm::dot(proxy.planes[i].normal, centroid) - proxy.planes[i].offsetMeters);
       if (d < nearest) nearest = d, on = i;
     }
     areas[on] += 0.5 * glm::length(glm::cross(b - a, c - a));
@@ -64,15 +67,20 @@ std::string_view methodId(const ProxyShape& shape) {
 
 int planeCount(const ProxyShape& shape) {
   if (std::holds_alternative<BoxShape>(shape)) return 6;
-  if (const auto* convex = std::get_if<ConvexProxy>(&shape)) return static_cast<int>(convex->planes.size());
+  if (const auto* convex = std::get_if<ConvexProxy>(&shape))
+    return static_cast<int>(convex->planes.size());
   return 0;
 }
 
 bool strictlyContains(const ProxyShape& shape, glm::dvec3 p) {
-  if (const auto* box = std::get_if<BoxShape>(&shape)) return signedDistanceOutside(convexFromBox(*box).planes, p) < 0;
-  if (const auto* convex = std::get_if<ConvexProxy>(&shape)) return signedDistanceOutside(convex->planes, p) < 0;
+  if (const auto* box = std::get_if<BoxShape>(&shape))
+    return signedDistanceOutside(convexFromBox(*box).planes, p) < 0;
+  if (const auto* convex = std::get_if<ConvexProxy>(&shape))
+    return signedDistanceOutside(convex->planes, p) < 0;
   if (const auto* sphere = std::get_if<SphereShape>(&shape)) {
-    const glm::dvec3 local = (glm::conjugate(sphere->worldFromSphere) * (p - sphere->centerMeters)) / sphere->radiiMeters;
+    const glm::dvec3 local =
+        (glm::conjugate(sphere->worldFromSphere) * (p - sphere->centerMeters)) /
+        sphere->radiiMeters;
     return glm::dot(local, local) < 1.0;
   }
   return true;

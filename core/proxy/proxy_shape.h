@@ -20,7 +20,7 @@ struct CheapKShape {  // seed 000's approximation: lookup = normalize(k * (x - C
 
 struct SphereShape {  // seed 001's lighting-space sphere (an ellipsoid when radii differ)
   glm::dvec3 centerMeters{0.0};
-  glm::dvec3 radiiMeters{1.0};        // along the sphere's own axes
+  glm::dvec3 radiiMeters{1.0};  // along the sphere's own axes
   glm::dquat worldFromSphere{1, 0, 0, 0};
 };
 

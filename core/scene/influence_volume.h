@@ -32,6 +32,7 @@ namespace probeproxy {
 bool insideInfluence(const InfluenceVolume& influence, glm::dvec3 pointMeters);
 
 // The axis-aligned bounds of the outer range, world frame.
-void influenceBounds(const InfluenceVolume& influence, glm::dvec3& minMeters, glm::dvec3& maxMeters);
+void influenceBounds(const InfluenceVolume& influence, glm::dvec3& minMeters,
+                     glm::dvec3& maxMeters);
 
 }  // namespace probeproxy

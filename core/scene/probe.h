@@ -18,11 +18,11 @@ struct ReflectionPlane {  // a planar receiver, e.g. a mirror floor
 };
 
 struct Probe {
-  std::string name;                      // unique within the scene, non-empty
-  glm::dvec3 captureMeters{0.0};         // the cubemap's centre
+  std::string name;               // unique within the scene, non-empty
+  glm::dvec3 captureMeters{0.0};  // the cubemap's centre
   InfluenceVolume influence;
   ProxySpec proxy;
-  std::optional<std::string> cubemap;    // pattern as written, `{face}` = px nx py ny pz nz
+  std::optional<std::string> cubemap;  // pattern as written, `{face}` = px nx py ny pz nz
   std::vector<ReflectionPlane> reflectionPlanes;
 };
 

@@ -30,11 +30,11 @@ struct AuthoredSphere {
 };
 
 struct AuthoredConvexMesh {
-  std::filesystem::path mesh;  // absolute, resolved against the scene file's folder
+  std::filesystem::path mesh;           // absolute, resolved against the scene file's folder
   std::filesystem::path meshAsWritten;  // as the scene file spells it, for writing back
 };
 
-using ProxySpec = std::variant<AutoProxy, InfiniteProxy, AuthoredBox, AuthoredObb,
-                               AuthoredSphere, AuthoredConvexMesh>;
+using ProxySpec = std::variant<AutoProxy, InfiniteProxy, AuthoredBox, AuthoredObb, AuthoredSphere,
+                               AuthoredConvexMesh>;
 
 }  // namespace probeproxy

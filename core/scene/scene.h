@@ -12,10 +12,10 @@
 namespace probeproxy {
 
 struct LevelMeshRef {
-  std::filesystem::path path;         // absolute, resolved against the scene file's folder
+  std::filesystem::path path;  // absolute, resolved against the scene file's folder
   std::filesystem::path pathAsWritten;
-  UpAxis up = UpAxis::Z;              // the mesh file's own up axis
-  bool upWasExplicit = false;         // written back only when the file said it
+  UpAxis up = UpAxis::Z;       // the mesh file's own up axis
+  bool upWasExplicit = false;  // written back only when the file said it
 };
 
 struct Scene {

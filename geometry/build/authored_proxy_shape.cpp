@@ -18,10 +18,11 @@ ConvexProxy convexFromMesh(std::vector<glm::dvec3> vertices, std::vector<glm::uv
     const glm::dvec3 n = glm::cross(vertices[t.y] - vertices[t.x], vertices[t.z] - vertices[t.x]);
     if (glm::length(n) == 0.0) continue;
     const ProxyPlane plane{glm::normalize(n), glm::dot(glm::normalize(n), vertices[t.x])};
-    const bool known = std::any_of(convex.planes.begin(), convex.planes.end(), [&](const ProxyPlane& p) {
-      return glm::dot(p.normal, plane.normal) > 1.0 - 1e-9 &&
-             std::abs(p.offsetMeters - plane.offsetMeters) < offsetTolerance;
-    });
+    const bool known =
+        std::any_of(convex.planes.begin(), convex.planes.end(), [&](const ProxyPlane& p) {
+          return glm::dot(p.normal, plane.normal) > 1.0 - 1e-9 &&
+                 std::abs(p.offsetMeters - plane.offsetMeters) < offsetTolerance;
+        });
     if (!known) convex.planes.push_back(plane);
   }
   convex.verticesMeters = std::move(vertices);
@@ -39,7 +40,8 @@ std::optional<ProxyShape> authoredProxyShape(const ProxySpec& spec, const Scene&
     return BoxShape{obb->centerMeters, obb->halfExtentsMeters, obb->worldFromBox};
   }
   if (const auto* sphere = std::get_if<AuthoredSphere>(&spec)) {
-    return SphereShape{sphere->centerMeters, glm::dvec3(sphere->radiusMeters), glm::dquat(1, 0, 0, 0)};
+    return SphereShape{sphere->centerMeters, glm::dvec3(sphere->radiusMeters),
+                       glm::dquat(1, 0, 0, 0)};
   }
   const auto& mesh = std::get<AuthoredConvexMesh>(spec);
   const std::string ext = mesh.mesh.extension().string();

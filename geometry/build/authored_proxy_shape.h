@@ -14,6 +14,7 @@ namespace probeproxy {
 std::optional<ProxyShape> authoredProxyShape(const ProxySpec& spec, const Scene& scene);
 
 // Planes of a triangle mesh wound counter-clockwise from outside, near-duplicates merged.
-ConvexProxy convexFromMesh(std::vector<glm::dvec3> verticesMeters, std::vector<glm::uvec3> triangles);
+ConvexProxy convexFromMesh(std::vector<glm::dvec3> verticesMeters,
+                           std::vector<glm::uvec3> triangles);
 
 }  // namespace probeproxy

@@ -16,8 +16,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <numeric>
 #include <cmath>
+#include <numeric>
 #include <tuple>
 
 namespace probeproxy {
@@ -39,7 +39,8 @@ std::vector<glm::dvec3> seenPoints(const DepthCube& cube) {
         const float t = cube.at(CubeFace(f), col, row);
         if (std::isfinite(t)) {
           points.push_back(cube.captureMeters +
-                           double(t) * glm::dvec3(texelDirection(CubeFace(f), col, row, cube.faceSize)));
+                           double(t) *
+                               glm::dvec3(texelDirection(CubeFace(f), col, row, cube.faceSize)));
         }
       }
     }
@@ -50,7 +51,8 @@ std::vector<glm::dvec3> seenPoints(const DepthCube& cube) {
 // Shaders pay per plane; among equal plane counts the simpler test wins.
 int methodRank(const ProxyShape& shape) {
   const std::string_view id = methodId(shape);
-  static constexpr std::string_view order[] = {"infinite", "cheap_k", "sphere", "aabb", "obb", "convex"};
+  static constexpr std::string_view order[] = {"infinite", "cheap_k", "sphere",
+                                               "aabb",     "obb",     "convex"};
   return static_cast<int>(std::find(std::begin(order), std::end(order), id) - std::begin(order));
 }
 
@@ -90,7 +92,8 @@ std::size_t selectProxy(const std::vector<ProxyCandidate>& candidates, const Pro
   if (mostAccurate == candidates.size()) return 0;  // nothing but misses: keep the first
   const double goodEnough = 1.05 * meanOf(mostAccurate) + 0.01;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
-    if (!generated(i) || candidates[i].error.missRate > o.maxMissRate || meanOf(i) > goodEnough) continue;
+    if (!generated(i) || candidates[i].error.missRate > o.maxMissRate || meanOf(i) > goodEnough)
+      continue;
     if (best == candidates.size() || complexity(i) < complexity(best)) best = i;
   }
   return best;
@@ -107,9 +110,11 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
 
   auto t = Clock::now();
   const std::vector<RayHit> hits = castDepthCubeRays(level, capture, o.depthFaceSize);
-  const std::vector<glm::dvec3> points = seenPoints(depthCubeFromHits(hits, capture, o.depthFaceSize));
+  const std::vector<glm::dvec3> points =
+      seenPoints(depthCubeFromHits(hits, capture, o.depthFaceSize));
   build.depthMs = msSince(t);
-  const double skyShare = 1.0 - static_cast<double>(points.size()) / static_cast<double>(hits.size());
+  const double skyShare =
+      1.0 - static_cast<double>(points.size()) / static_cast<double>(hits.size());
   if (skyShare > 0.5) {
     build.findings.push_back("the capture point sees no level in " +
                              std::to_string(static_cast<int>(std::round(100 * skyShare))) +
@@ -127,11 +132,14 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
   // would drop walls that floor reflections happen not to reach.
   std::vector<ReflectionSample> fitSamples =
       buildReflectionSamples(level, probe, SampleSet::MirrorFloor, fitOptions);
-  for (const ReflectionSample& s : buildReflectionSamples(level, probe, SampleSet::AllSurfaces, fitOptions)) {
+  for (const ReflectionSample& s :
+       buildReflectionSamples(level, probe, SampleSet::AllSurfaces, fitOptions)) {
     fitSamples.push_back(s);
   }
-  const auto floorSamples = buildReflectionSamples(level, probe, SampleSet::MirrorFloor, reportOptions);
-  const auto allSamples = buildReflectionSamples(level, probe, SampleSet::AllSurfaces, reportOptions);
+  const auto floorSamples =
+      buildReflectionSamples(level, probe, SampleSet::MirrorFloor, reportOptions);
+  const auto allSamples =
+      buildReflectionSamples(level, probe, SampleSet::AllSurfaces, reportOptions);
   build.samplingMs = msSince(t);
 
   std::vector<ProxyCandidate> candidates;
@@ -165,7 +173,8 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
     build.findings.push_back(std::string("no convex proxy: ") + e.what());
   }
   const std::span<const glm::dvec3> corners =
-      hull ? std::span<const glm::dvec3>(hull->verticesMeters) : std::span<const glm::dvec3>(points);
+      hull ? std::span<const glm::dvec3>(hull->verticesMeters)
+           : std::span<const glm::dvec3>(points);
 
   t = Clock::now();
   add("infinite", InfiniteShape{}, 0.0);
@@ -173,7 +182,8 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
   std::vector<ReflectionSample> sparseFitSamples;
   for (std::size_t i = 0; i < fitSamples.size(); i += 4) sparseFitSamples.push_back(fitSamples[i]);
   auto fitStart = Clock::now();
-  add("cheap_k", fitCheapK(capture, sparseFitSamples, 0.5 * (nearest + farthest)), msSince(fitStart));
+  add("cheap_k", fitCheapK(capture, sparseFitSamples, 0.5 * (nearest + farthest)),
+      msSince(fitStart));
   fitStart = Clock::now();
   add("sphere", fitCaptureSphere(capture, sparseFitSamples, nearest, farthest), msSince(fitStart));
   if (!corners.empty()) {
@@ -202,9 +212,11 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
       if (areas[i] >= 0.002 * totalArea) planes.push_back(hull->planes[i]);
     }
     if (!isBounded(planes)) planes = hull->planes;
-    for (const ProxyPlane& p : visibleSurfacePlanes(hits, capture, o.depthFaceSize, 10 * tolerance)) {
+    for (const ProxyPlane& p :
+         visibleSurfacePlanes(hits, capture, o.depthFaceSize, 10 * tolerance)) {
       const bool onHull = std::any_of(planes.begin(), planes.end(), [&](const ProxyPlane& q) {
-        return glm::dot(p.normal, q.normal) > 0.9998 && std::abs(p.offsetMeters - q.offsetMeters) < 10 * tolerance;
+        return glm::dot(p.normal, q.normal) > 0.9998 &&
+               std::abs(p.offsetMeters - q.offsetMeters) < 10 * tolerance;
       });
       if (!onHull) planes.push_back(p);
     }
@@ -220,7 +232,8 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
     for (std::size_t s = 1; s < steps.size(); ++s) {
       ConvexProxy simplified;
       simplified.planes = steps[s].planes;
-      add("convex_" + std::to_string(steps[s].planes.size()), std::move(simplified), perStepMs * double(s));
+      add("convex_" + std::to_string(steps[s].planes.size()), std::move(simplified),
+          perStepMs * double(s));
     }
   }
 

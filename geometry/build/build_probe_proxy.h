@@ -13,11 +13,11 @@
 namespace probeproxy {
 
 struct ProxyBuildOptions {
-  double toleranceDeg = 0.25;   // keep the fewest planes whose mirror_floor p95 is under this
-  int maxPlanes = 64;           // never keep more planes than this
-  double maxMissRate = 0.001;   // a kept proxy may miss at most this share of visible samples
-  int depthFaceSize = 128;      // depth cube the candidates are fitted to
-  bool regenerate = false;      // build a proxy even where the scene file has an authored one
+  double toleranceDeg = 0.25;  // keep the fewest planes whose mirror_floor p95 is under this
+  int maxPlanes = 64;          // never keep more planes than this
+  double maxMissRate = 0.001;  // a kept proxy may miss at most this share of visible samples
+  int depthFaceSize = 128;     // depth cube the candidates are fitted to
+  bool regenerate = false;     // build a proxy even where the scene file has an authored one
   ReflectionSampleOptions samples;
 };
 
@@ -30,6 +30,7 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
                                 const ProxyBuildOptions& options);
 
 // Index of the candidate to keep (see ProxyBuildOptions), given candidates built as above.
-std::size_t selectProxy(const std::vector<ProxyCandidate>& candidates, const ProxyBuildOptions& options);
+std::size_t selectProxy(const std::vector<ProxyCandidate>& candidates,
+                        const ProxyBuildOptions& options);
 
 }  // namespace probeproxy

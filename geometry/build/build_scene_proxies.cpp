@@ -30,7 +30,8 @@ std::vector<ProbeProxyBuild> buildSceneProxies(
 
   // Authored meshes are read first, on this thread: a bad one is reported before any work.
   std::vector<std::optional<ProxyShape>> authored;
-  for (const Probe& probe : scene.probes) authored.push_back(authoredProxyShape(probe.proxy, scene));
+  for (const Probe& probe : scene.probes)
+    authored.push_back(authoredProxyShape(probe.proxy, scene));
 
   std::vector<ProbeProxyBuild> builds(scene.probes.size());
   std::mutex progress;

@@ -13,7 +13,9 @@ namespace probeproxy {
 class IeeeFloatMode {
  public:
 #if defined(__SSE__)
-  IeeeFloatMode() : saved_(_mm_getcsr()) { _mm_setcsr(saved_ & ~(kFlushToZero | kDenormalsAreZero)); }
+  IeeeFloatMode() : saved_(_mm_getcsr()) {
+    _mm_setcsr(saved_ & ~(kFlushToZero | kDenormalsAreZero));
+  }
   ~IeeeFloatMode() { _mm_setcsr(saved_); }
 #else
   IeeeFloatMode() = default;

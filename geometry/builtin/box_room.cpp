@@ -10,7 +10,8 @@ namespace probeproxy {
 LevelMesh boxRoom(glm::vec3 lo, glm::vec3 hi, const std::string& name) {
   LevelMesh room;
   for (int i = 0; i < 8; ++i) {
-    room.positionsMeters.emplace_back(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
+    room.positionsMeters.emplace_back(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y,
+                                      i & 4 ? hi.z : lo.z);
   }
   // Corner i has bit 0 = x, bit 1 = y, bit 2 = z. Each quad is listed counter-clockwise as seen
   // from inside the room, so the counter-clockwise normal points inwards.

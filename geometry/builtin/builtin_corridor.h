@@ -11,7 +11,7 @@
 namespace probeproxy {
 
 struct BuiltinLevel {
-  Scene scene;      // level[] names `meshFileName`, relative to where the scene is written
+  Scene scene;  // level[] names `meshFileName`, relative to where the scene is written
   LevelMesh level;
   std::string meshFileName;
 };

@@ -12,7 +12,8 @@ namespace probeproxy {
 
 // angle(d, d*) in degrees for one visible sample; NaN for a miss. d* is H - C, or r when the
 // ray leaves to the sky.
-double angularErrorDeg(const ProxyShape& shape, glm::dvec3 captureMeters, const ReflectionSample& s);
+double angularErrorDeg(const ProxyShape& shape, glm::dvec3 captureMeters,
+                       const ReflectionSample& s);
 
 // One entry per sample that is not occluded, in sample order.
 std::vector<double> angularErrorsDeg(const ProxyShape& shape, glm::dvec3 captureMeters,

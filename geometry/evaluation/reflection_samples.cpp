@@ -37,8 +37,9 @@ glm::dvec3 playerFloorDirection(std::mt19937& rng) {
   constexpr double kMinDepressionTan = 0.035;  // 2 degrees
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const bool lookingDown = unit(rng) < 0.25;
-  const double tanDepression = lookingDown ? std::tan((45.0 + 44.0 * unit(rng)) * M_PI / 180.0)
-                                           : kMinDepressionTan + (1.0 - kMinDepressionTan) * unit(rng);
+  const double tanDepression = lookingDown
+                                   ? std::tan((45.0 + 44.0 * unit(rng)) * M_PI / 180.0)
+                                   : kMinDepressionTan + (1.0 - kMinDepressionTan) * unit(rng);
   const double phi = 2.0 * M_PI * unit(rng);
   return glm::normalize(glm::dvec3(std::cos(phi), std::sin(phi), -tanDepression));
 }
@@ -88,7 +89,8 @@ std::vector<glm::dvec3> reflectionCameras(const LevelRayCaster& level, const Pro
       if (!floor.hit() || floor.geometricNormal.z == 0.0f) continue;
       glm::dvec3 eye = column - glm::dvec3(0, 0, floor.t) + glm::dvec3(0, 0, o.eyeHeightMeters);
       // Under a low ceiling (an attic's eaves, a closet) the eye goes halfway up instead.
-      const RayHit ceiling = castDouble(level, column - glm::dvec3(0, 0, floor.t - 1e-3), {0, 0, 1});
+      const RayHit ceiling =
+          castDouble(level, column - glm::dvec3(0, 0, floor.t - 1e-3), {0, 0, 1});
       if (ceiling.hit() && ceiling.t < o.eyeHeightMeters + 0.1) {
         eye.z = column.z - floor.t + 0.5 * ceiling.t;
       }
@@ -112,7 +114,8 @@ std::vector<ReflectionSample> buildReflectionSamples(const LevelRayCaster& level
   std::vector<Ray> rays(batch);
   std::vector<RayHit> hits(batch);
   std::size_t attempts = 0;
-  const std::size_t maxAttempts = o.targetSamples * static_cast<std::size_t>(o.maxAttemptsPerSample);
+  const std::size_t maxAttempts =
+      o.targetSamples * static_cast<std::size_t>(o.maxAttemptsPerSample);
   while (samples.size() < o.targetSamples && attempts < maxAttempts) {
     // Cameras take turns, so every part of the volume is seen even when the target is small.
     for (std::size_t i = 0; i < batch; ++i) {

@@ -13,10 +13,10 @@ namespace probeproxy {
 struct ReflectionSampleOptions {
   std::size_t targetSamples = 2048;  // stops here, or after maxAttemptsPerSample x this rays
   int maxAttemptsPerSample = 16;
-  double eyeHeightMeters = 1.7;      // camera height above the floor under it
-  int camerasAcross = 8;             // grid cells along the influence volume's longer side
+  double eyeHeightMeters = 1.7;  // camera height above the floor under it
+  int camerasAcross = 8;         // grid cells along the influence volume's longer side
   double minCameraSpacingMeters = 0.25;
-  double upwardCosine = 0.9;         // mirror_floor: normal.z at least this (about 25 degrees)
+  double upwardCosine = 0.9;  // mirror_floor: normal.z at least this (about 25 degrees)
   std::uint32_t seed = 1;
 };
 

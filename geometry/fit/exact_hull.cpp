@@ -19,9 +19,9 @@
 #include <numeric>
 #include <sstream>
 #include <string>
-#include <utility>
 #include <tuple>
 #include <unordered_map>
+#include <utility>
 
 namespace probeproxy::fit {
 
@@ -251,8 +251,8 @@ TriangleHull convexHull3(std::span<const glm::dvec3> points, bool withSourceInde
       for (std::uint32_t v : meshTriangles[u]) {
         if (v != from && v != to) apex = v;
       }
-      if (CGAL::orientation(toCgal(position[t[0]]), toCgal(position[t[1]]),
-                            toCgal(position[t[2]]), toCgal(position[apex])) == CGAL::COPLANAR) {
+      if (CGAL::orientation(toCgal(position[t[0]]), toCgal(position[t[1]]), toCgal(position[t[2]]),
+                            toCgal(position[apex])) == CGAL::COPLANAR) {
         regions.unite(f, u);
         anyFlat = true;
       }

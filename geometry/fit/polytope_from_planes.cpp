@@ -254,8 +254,8 @@ ConvexProxy polytopeFromPlanes(std::vector<ProxyPlane> planes, glm::dvec3 interi
                  "open)";
       throw FitError(message.str());
     }
-    fromInterior[t] = solver.corner(dual.sourceIndex[tri[0]], dual.sourceIndex[tri[1]],
-                                    dual.sourceIndex[tri[2]]);
+    fromInterior[t] =
+        solver.corner(dual.sourceIndex[tri[0]], dual.sourceIndex[tri[1]], dual.sourceIndex[tri[2]]);
     sizeMeters = std::max(sizeMeters, glm::length(fromInterior[t]));
   }
 

@@ -2,11 +2,11 @@
 
 #include "core/errors/input_error.h"
 
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
 #include <assimp/DefaultLogger.hpp>
 #include <assimp/Importer.hpp>
 #include <assimp/LogStream.hpp>
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
 
 #include <algorithm>
 #include <cmath>
@@ -19,7 +19,8 @@ namespace {
 
 std::string lowerExtension(const std::filesystem::path& file) {
   std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   return ext;
 }
 
@@ -27,8 +28,8 @@ void requireReadableMeshFile(const std::filesystem::path& file) {
   static const char* const kFormats[] = {".glb", ".gltf", ".obj", ".ply", ".off"};
   const std::string ext = lowerExtension(file);
   if (std::find(std::begin(kFormats), std::end(kFormats), ext) == std::end(kFormats)) {
-    throw InputError(file, "unsupported mesh format '" + ext +
-                               "' (expected .glb, .gltf, .obj, .ply or .off)");
+    throw InputError(
+        file, "unsupported mesh format '" + ext + "' (expected .glb, .gltf, .obj, .ply or .off)");
   }
   std::error_code ec;
   if (!std::filesystem::exists(file, ec)) throw InputError(file, "mesh file not found");
@@ -89,8 +90,8 @@ void appendNode(const aiScene& scene, const aiNode& node, const aiMatrix4x4& fil
   for (unsigned i = 0; i < node.mNumMeshes; ++i) {
     const aiMesh& mesh = *scene.mMeshes[node.mMeshes[i]];
     // Artists look for the object's name (the node); the mesh data's name is a fallback.
-    std::string name = node.mName.length > 0 && &node != scene.mRootNode ? node.mName.C_Str()
-                                                                        : mesh.mName.C_Str();
+    std::string name =
+        node.mName.length > 0 && &node != scene.mRootNode ? node.mName.C_Str() : mesh.mName.C_Str();
     if (name.empty()) name = "mesh" + std::to_string(out.parts.size());
     appendAssimpMesh(mesh, fileFromNode, name, file, fileUp, metersPerUnit, out);
   }
@@ -150,7 +151,8 @@ LevelMesh loadLevelMeshFile(const std::filesystem::path& file, UpAxis fileUp,
     if (reason.empty()) reason = "not a readable mesh";
     throw InputError(file, "malformed mesh: " + reason);
   }
-  if (!errors.firstError().empty()) throw InputError(file, "malformed mesh: " + errors.firstError());
+  if (!errors.firstError().empty())
+    throw InputError(file, "malformed mesh: " + errors.firstError());
 
   LevelMesh level;
   if (scene->mRootNode != nullptr) {

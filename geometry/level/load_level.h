@@ -11,8 +11,7 @@
 namespace probeproxy {
 
 // One mesh file. `fileUp` and `metersPerUnit` say how the file's coordinates map to the world.
-LevelMesh loadLevelMeshFile(const std::filesystem::path& file, UpAxis fileUp,
-                            double metersPerUnit);
+LevelMesh loadLevelMeshFile(const std::filesystem::path& file, UpAxis fileUp, double metersPerUnit);
 
 // Every mesh of the scene's level, in scene order. Throws if the level has no triangles.
 LevelMesh loadLevel(const Scene& scene);

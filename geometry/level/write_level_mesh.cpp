@@ -3,8 +3,8 @@
 #include "core/errors/input_error.h"
 #include "core/io/atomic_write.h"
 
-#include <assimp/Exporter.hpp>
 #include <assimp/scene.h>
+#include <assimp/Exporter.hpp>
 
 #include <algorithm>
 #include <fstream>
@@ -29,7 +29,7 @@ std::unique_ptr<aiScene> toAssimpScene(const LevelMesh& level, UpAxis fileUp) {
   auto scene = std::make_unique<aiScene>();
   scene->mRootNode = new aiNode("root");
   scene->mNumMaterials = 1;
-  scene->mMaterials = new aiMaterial*[1]{new aiMaterial()};
+  scene->mMaterials = new aiMaterial* [1] { new aiMaterial() };
   scene->mNumMeshes = static_cast<unsigned>(parts.size());
   scene->mMeshes = new aiMesh*[parts.size()];
   // One node per part, named like it: readers (Blender, ours) name objects after nodes.
@@ -43,7 +43,8 @@ std::unique_ptr<aiScene> toAssimpScene(const LevelMesh& level, UpAxis fileUp) {
     for (std::uint32_t t = 0; t < parts[p].triangleCount; ++t) {
       const glm::uvec3& tri = level.triangles[parts[p].firstTriangle + t];
       for (int k = 0; k < 3; ++k) {
-        if (local.emplace(tri[k], static_cast<unsigned>(used.size())).second) used.push_back(tri[k]);
+        if (local.emplace(tri[k], static_cast<unsigned>(used.size())).second)
+          used.push_back(tri[k]);
       }
     }
     auto* mesh = new aiMesh();
@@ -82,7 +83,8 @@ void writeOff(const LevelMesh& level, const std::filesystem::path& file, UpAxis 
     const glm::vec3 q = toFileFrame(p, fileUp);
     out << q.x << ' ' << q.y << ' ' << q.z << '\n';
   }
-  for (const glm::uvec3& t : level.triangles) out << "3 " << t.x << ' ' << t.y << ' ' << t.z << '\n';
+  for (const glm::uvec3& t : level.triangles)
+    out << "3 " << t.x << ' ' << t.y << ' ' << t.z << '\n';
   out.close();
   if (!out) throw InputError(file, "cannot write");
 }
@@ -91,14 +93,16 @@ void writeOff(const LevelMesh& level, const std::filesystem::path& file, UpAxis 
 
 void writeLevelMeshFile(const LevelMesh& level, const std::filesystem::path& file, UpAxis fileUp) {
   std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   static const std::map<std::string, std::string> kAssimpFormat = {
       {".glb", "glb2"}, {".obj", "objnomtl"}, {".ply", "plyb"}};
 
   writeFileAtomically(file, [&](const std::filesystem::path& tmp) {
     if (ext == ".off") return writeOff(level, tmp, fileUp);
     const auto format = kAssimpFormat.find(ext);
-    if (format == kAssimpFormat.end()) throw InputError(file, "cannot write mesh format '" + ext + "'");
+    if (format == kAssimpFormat.end())
+      throw InputError(file, "cannot write mesh format '" + ext + "'");
     const std::unique_ptr<aiScene> scene = toAssimpScene(level, fileUp);
     Assimp::Exporter exporter;
     if (exporter.Export(scene.get(), format->second, tmp.string()) != AI_SUCCESS) {

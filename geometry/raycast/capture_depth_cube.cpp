@@ -40,7 +40,8 @@ DepthCube depthCubeFromHits(std::span<const RayHit> hits, glm::dvec3 captureMete
 }
 
 DepthCube captureDepthCube(const LevelRayCaster& level, glm::dvec3 captureMeters, int faceSize) {
-  return depthCubeFromHits(castDepthCubeRays(level, captureMeters, faceSize), captureMeters, faceSize);
+  return depthCubeFromHits(castDepthCubeRays(level, captureMeters, faceSize), captureMeters,
+                           faceSize);
 }
 
 }  // namespace probeproxy

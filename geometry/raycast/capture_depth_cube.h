@@ -12,7 +12,8 @@ DepthCube captureDepthCube(const LevelRayCaster& level, glm::dvec3 captureMeters
 std::vector<Ray> depthCubeRays(glm::dvec3 captureMeters, int faceSize);
 
 // Their hits, in the same order (t in metres: the rays are unit length).
-std::vector<RayHit> castDepthCubeRays(const LevelRayCaster& level, glm::dvec3 captureMeters, int faceSize);
+std::vector<RayHit> castDepthCubeRays(const LevelRayCaster& level, glm::dvec3 captureMeters,
+                                      int faceSize);
 
 // The depth cube those hits make.
 DepthCube depthCubeFromHits(std::span<const RayHit> hits, glm::dvec3 captureMeters, int faceSize);

@@ -1,10 +1,10 @@
 #include "geometry/raycast/level_ray_caster.h"
 
 #include <embree3/rtcore.h>
-#include <glm/common.hpp>
-#include <glm/geometric.hpp>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 #include <limits>
 #include <stdexcept>
@@ -65,8 +65,10 @@ constexpr std::size_t kBatch = 256;
 }  // namespace
 
 LevelRayCaster::LevelRayCaster(const LevelMesh& level) : embree_(std::make_unique<Embree>()) {
-  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-  for (const glm::vec3& p : level.positionsMeters) lo = glm::min(lo, glm::dvec3(p)), hi = glm::max(hi, glm::dvec3(p));
+  glm::dvec3 lo(std::numeric_limits<double>::infinity()),
+      hi(-std::numeric_limits<double>::infinity());
+  for (const glm::vec3& p : level.positionsMeters)
+    lo = glm::min(lo, glm::dvec3(p)), hi = glm::max(hi, glm::dvec3(p));
   if (!level.positionsMeters.empty()) embree_->originMeters = 0.5 * (lo + hi);
 
   embree_->device = rtcNewDevice(nullptr);
@@ -78,18 +80,18 @@ LevelRayCaster::LevelRayCaster(const LevelMesh& level) : embree_(std::make_uniqu
 
   RTCGeometry geometry = rtcNewGeometry(embree_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
   // Embree reads 16 bytes per vertex: the buffer gets one float of padding.
-  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-      level.positionsMeters.size() + 1));
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                               RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                                                               level.positionsMeters.size() + 1));
   for (std::size_t i = 0; i < level.positionsMeters.size(); ++i) {
     const glm::vec3 local(glm::dvec3(level.positionsMeters[i]) - embree_->originMeters);
     vertices[3 * i + 0] = local.x;
     vertices[3 * i + 1] = local.y;
     vertices[3 * i + 2] = local.z;
   }
-  auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-      geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
-      level.triangles.size()));
+  auto* indices = static_cast<unsigned*>(
+      rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                              3 * sizeof(unsigned), level.triangles.size()));
   for (std::size_t i = 0; i < level.triangles.size(); ++i) {
     indices[3 * i + 0] = level.triangles[i].x;
     indices[3 * i + 1] = level.triangles[i].y;
@@ -122,13 +124,14 @@ void LevelRayCaster::firstHits(std::span<const Ray> rays, std::span<RayHit> hits
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, batches), [&](const auto& range) {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    context.flags = coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
-                             : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+    context.flags =
+        coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
     RTCRayHit stream[kBatch];
     for (std::size_t b = range.begin(); b != range.end(); ++b) {
       const std::size_t first = b * kBatch;
       const std::size_t count = std::min(kBatch, rays.size() - first);
-      for (std::size_t i = 0; i < count; ++i) stream[i] = toEmbree(rays[first + i], embree_->originMeters);
+      for (std::size_t i = 0; i < count; ++i)
+        stream[i] = toEmbree(rays[first + i], embree_->originMeters);
       rtcIntersect1M(embree_->scene, &context, stream, static_cast<unsigned>(count),
                      sizeof(RTCRayHit));
       for (std::size_t i = 0; i < count; ++i) hits[first + i] = fromEmbree(stream[i]);

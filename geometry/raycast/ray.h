@@ -21,8 +21,8 @@ inline constexpr std::uint32_t kNoTriangle = 0xffffffffu;
 
 struct RayHit {
   float t = std::numeric_limits<float>::infinity();  // hit = origin + t * direction; inf: none
-  std::uint32_t triangle = kNoTriangle;               // index into LevelMesh::triangles
-  glm::vec3 geometricNormal{0.0f};                    // unit, world, as wound (not flipped)
+  std::uint32_t triangle = kNoTriangle;              // index into LevelMesh::triangles
+  glm::vec3 geometricNormal{0.0f};                   // unit, world, as wound (not flipped)
 
   bool hit() const { return triangle != kNoTriangle; }
 };

@@ -125,13 +125,13 @@ class RemovalState {
   std::vector<bool> active_;
   std::vector<Sample> samples_;
   glm::dvec3 capture_{0.0};
-  std::vector<double> exitT_;   // [sample][plane]: where the ray crosses the plane; inf if never
-  std::vector<char> outside_;   // [sample][plane]: x beyond the plane
+  std::vector<double> exitT_;  // [sample][plane]: where the ray crosses the plane; inf if never
+  std::vector<char> outside_;  // [sample][plane]: x beyond the plane
 };
 
 // The planes still active, less `skip` (pass planes.size() to skip none).
-std::vector<ProxyPlane> activePlanes(const std::vector<ProxyPlane>& planes, const RemovalState& state,
-                                     std::size_t skip) {
+std::vector<ProxyPlane> activePlanes(const std::vector<ProxyPlane>& planes,
+                                     const RemovalState& state, std::size_t skip) {
   std::vector<ProxyPlane> kept;
   for (std::size_t j = 0; j < planes.size(); ++j) {
     if (state.isActive(j) && j != skip) kept.push_back(planes[j]);
@@ -149,7 +149,8 @@ std::vector<PlaneRemovalStep> greedyPlaneRemoval(
   const double perSample = 1.0 / std::max<std::size_t>(1, state.sampleCount());
   std::vector<PlaneRemovalStep> steps = {{planes, state.totalCost() * perSample}};
 
-  for (std::size_t count = planes.size(); count > static_cast<std::size_t>(std::max(minPlanes, 4)); --count) {
+  for (std::size_t count = planes.size(); count > static_cast<std::size_t>(std::max(minPlanes, 4));
+       --count) {
     // Cheapest removal first; the acceptability test (an exact boundedness test, and the
     // caller's own) runs only until one passes.
     std::vector<std::pair<double, std::size_t>> order;

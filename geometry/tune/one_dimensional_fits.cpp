@@ -10,7 +10,8 @@ namespace probeproxy {
 
 namespace {
 
-double meanCost(const ProxyShape& shape, glm::dvec3 capture, std::span<const ReflectionSample> samples) {
+double meanCost(const ProxyShape& shape, glm::dvec3 capture,
+                std::span<const ReflectionSample> samples) {
   const std::vector<double> errors = angularErrorsDeg(shape, capture, samples);
   double sum = 0.0;
   for (double e : errors) sum += sampleCostDeg(e);
@@ -48,8 +49,9 @@ double minimize(const std::function<double(double)>& cost, double lo, double hi)
 CheapKShape fitCheapK(glm::dvec3 capture, std::span<const ReflectionSample> samples,
                       double typicalDistanceMeters) {
   const double hi = 4.0 / std::max(typicalDistanceMeters, 1e-3);
-  const double k = minimize(
-      [&](double kPerMeter) { return meanCost(CheapKShape{kPerMeter}, capture, samples); }, 0.0, hi);
+  const double k =
+      minimize([&](double kPerMeter) { return meanCost(CheapKShape{kPerMeter}, capture, samples); },
+               0.0, hi);
   return CheapKShape{k};
 }
 
@@ -58,9 +60,9 @@ SphereShape fitCaptureSphere(glm::dvec3 capture, std::span<const ReflectionSampl
   const auto sphere = [&](double radius) {
     return SphereShape{capture, glm::dvec3(radius), glm::dquat(1, 0, 0, 0)};
   };
-  const double radius = minimize(
-      [&](double r) { return meanCost(sphere(r), capture, samples); },
-      std::max(nearestMeters, 1e-3), std::max(farthestMeters, nearestMeters + 1e-3));
+  const double radius =
+      minimize([&](double r) { return meanCost(sphere(r), capture, samples); },
+               std::max(nearestMeters, 1e-3), std::max(farthestMeters, nearestMeters + 1e-3));
   return sphere(radius);
 }
 

@@ -9,6 +9,8 @@ namespace probeproxy {
 
 inline constexpr double kMissCostDeg = 180.0;  // as bad as the worst possible error
 
-inline double sampleCostDeg(double errorDeg) { return std::isnan(errorDeg) ? kMissCostDeg : errorDeg; }
+inline double sampleCostDeg(double errorDeg) {
+  return std::isnan(errorDeg) ? kMissCostDeg : errorDeg;
+}
 
 }  // namespace probeproxy

@@ -31,9 +31,10 @@ std::vector<ProxyPlane> visibleSurfacePlanes(std::span<const RayHit> hits, glm::
   for (std::size_t i = 0; i < hits.size(); ++i) {
     if (!hits[i].hit()) continue;
     const int face = static_cast<int>(i / perFace);
-    const int row = static_cast<int>((i % perFace) / faceSize), col = static_cast<int>(i % faceSize);
-    const glm::dvec3 point = capture + double(hits[i].t) *
-                                           glm::dvec3(texelDirection(CubeFace(face), col, row, faceSize));
+    const int row = static_cast<int>((i % perFace) / faceSize),
+              col = static_cast<int>(i % faceSize);
+    const glm::dvec3 point = capture + double(hits[i].t) * glm::dvec3(texelDirection(
+                                                               CubeFace(face), col, row, faceSize));
     glm::dvec3 n(hits[i].geometricNormal);
     // The half-space keeps the capture point: its outward normal points away from it.
     if (glm::dot(n, point - capture) < 0) n = -n;

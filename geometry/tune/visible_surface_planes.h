@@ -19,7 +19,7 @@ namespace probeproxy {
 // through the capture point is skipped (it cannot keep the capture point strictly inside).
 std::vector<ProxyPlane> visibleSurfacePlanes(std::span<const RayHit> hits, glm::dvec3 captureMeters,
                                              int faceSize, double offsetToleranceMeters,
-                                             double angleToleranceDeg = 1.0, double minShare = 0.002,
-                                             std::size_t maxPlanes = 48);
+                                             double angleToleranceDeg = 1.0,
+                                             double minShare = 0.002, std::size_t maxPlanes = 48);
 
 }  // namespace probeproxy

@@ -86,14 +86,17 @@ void requireValid(const ProxyMeshCheckOptions& o) {
   check(o.planeToleranceRelative, "planeToleranceRelative");
 }
 
-bool isFinite(glm::dvec3 p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+bool isFinite(glm::dvec3 p) {
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
 
 // Checks indices and coordinates; returns the referenced vertices in index order.
 std::vector<std::uint32_t> referencedVertices(const std::vector<glm::dvec3>& vertices,
                                               const std::vector<glm::uvec3>& triangles,
                                               glm::dvec3 capture) {
   if (!isFinite(capture)) {
-    throw std::invalid_argument("checkProxyMesh: capture point " + point(capture) + " is not finite");
+    throw std::invalid_argument("checkProxyMesh: capture point " + point(capture) +
+                                " is not finite");
   }
   std::vector<char> used(vertices.size(), 0);
   for (std::size_t t = 0; t < triangles.size(); ++t) {
@@ -119,7 +122,8 @@ std::vector<std::uint32_t> referencedVertices(const std::vector<glm::dvec3>& ver
 }
 
 // The bounding-box diagonal of the referenced vertices: what every tolerance is relative to.
-double meshSize(const std::vector<glm::dvec3>& vertices, const std::vector<std::uint32_t>& referenced) {
+double meshSize(const std::vector<glm::dvec3>& vertices,
+                const std::vector<std::uint32_t>& referenced) {
   if (referenced.empty()) return 0.0;
   glm::dvec3 lo = vertices[referenced[0]], hi = lo;
   for (std::uint32_t v : referenced) {
@@ -149,18 +153,19 @@ EdgeKey edgeKey(std::uint32_t a, std::uint32_t b) { return {std::min(a, b), std:
 
 class ProxyMeshChecker {
  public:
-  ProxyMeshChecker(const std::vector<glm::dvec3>& vertices, const std::vector<glm::uvec3>& triangles,
-                   glm::dvec3 capture, const ProxyMeshCheckOptions& options)
+  ProxyMeshChecker(const std::vector<glm::dvec3>& vertices,
+                   const std::vector<glm::uvec3>& triangles, glm::dvec3 capture,
+                   const ProxyMeshCheckOptions& options)
       : V_(vertices), T_(triangles), capture_(capture), options_(options) {}
 
   std::vector<ProxyMeshFinding> run() {
     requireValid(options_);
     const std::vector<std::uint32_t> referenced = referencedVertices(V_, T_, capture_);
     if (T_.empty()) {
-      out_.push_back(finding("proxy_empty", "error", 0.0, 1.0,
-                             "the proxy mesh has no triangles (" +
-                                 plural(V_.size(), "vertex", "vertices") + ")",
-                             "give the probe a closed convex mesh, or a box proxy"));
+      out_.push_back(finding(
+          "proxy_empty", "error", 0.0, 1.0,
+          "the proxy mesh has no triangles (" + plural(V_.size(), "vertex", "vertices") + ")",
+          "give the probe a closed convex mesh, or a box proxy"));
       return out_;
     }
     size_ = meshSize(V_, referenced);
@@ -202,7 +207,8 @@ class ProxyMeshChecker {
     for (std::uint32_t v : referenced) positions.push_back(V_[v]);
     const std::vector<std::uint32_t> local = weldPositions(positions, weldTolerance_);
     weldedTo_.assign(V_.size(), kNone);
-    for (std::size_t i = 0; i < referenced.size(); ++i) weldedTo_[referenced[i]] = referenced[local[i]];
+    for (std::size_t i = 0; i < referenced.size(); ++i)
+      weldedTo_[referenced[i]] = referenced[local[i]];
   }
 
   void classifyFaces() {
@@ -219,7 +225,8 @@ class ProxyMeshChecker {
       const glm::dvec3 pa = V_[a], pb = V_[b], pc = V_[c];
       const glm::dvec3 areaVector = glm::cross(pb - pa, pc - pa);  // 2 * area * normal
       const double twiceArea = glm::length(areaVector);
-      const double longest = std::max({glm::distance(pa, pb), glm::distance(pb, pc), glm::distance(pc, pa)});
+      const double longest =
+          std::max({glm::distance(pa, pb), glm::distance(pb, pc), glm::distance(pc, pa)});
       face.degenerate = !(twiceArea > heightTolerance_ * longest) || twiceArea == 0.0;
       if (!face.degenerate) face.normal = areaVector / twiceArea;
     }
@@ -272,8 +279,8 @@ class ProxyMeshChecker {
         for (std::uint32_t f : piece) oneSided_[f] = true;
         continue;
       }
-      const auto odd = static_cast<std::size_t>(
-          std::count_if(piece.begin(), piece.end(), [&](std::uint32_t f) { return parity[f] == 1; }));
+      const auto odd = static_cast<std::size_t>(std::count_if(
+          piece.begin(), piece.end(), [&](std::uint32_t f) { return parity[f] == 1; }));
       const int right = odd > piece.size() - odd ? 1 : 0;
       for (std::uint32_t f : piece) flipped_[f] = parity[f] != right;
     }
@@ -346,7 +353,8 @@ class ProxyMeshChecker {
     }
     for (int k = 0; k < 3; ++k) {
       if (!mesh_.is_boundary(h[k])) {
-        return "its " + vertexName(c[k]) + " already has a closed fan of faces (pieces touch there)";
+        return "its " + vertexName(c[k]) +
+               " already has a closed fan of faces (pieces touch there)";
       }
     }
     const OpenMesh::FaceHandle fh = mesh_.add_face(h[0], h[1], h[2]);
@@ -363,12 +371,13 @@ class ProxyMeshChecker {
       if (faces_[f].degenerate) list.push_back(f);
     }
     if (list.empty()) return;
-    out_.push_back(finding(
-        "proxy_degenerate_face", "warning", static_cast<double>(list.size()), 0.0,
-        plural(list.size(), "face has", "faces have") + " zero area (height under " +
-            number(heightTolerance_) + " m): " + faceList(list) + "; the first is " +
-            faceName(list[0]),
-        "delete zero-area faces or merge their corners (Blender: Mesh > Clean Up > Degenerate Dissolve)"));
+    out_.push_back(finding("proxy_degenerate_face", "warning", static_cast<double>(list.size()),
+                           0.0,
+                           plural(list.size(), "face has", "faces have") +
+                               " zero area (height under " + number(heightTolerance_) +
+                               " m): " + faceList(list) + "; the first is " + faceName(list[0]),
+                           "delete zero-area faces or merge their corners (Blender: Mesh > Clean "
+                           "Up > Degenerate Dissolve)"));
   }
 
   void reportNotManifold() {
@@ -427,19 +436,19 @@ class ProxyMeshChecker {
         "wind every face counter-clockwise seen from outside (Blender: Mesh > Normals > "
         "Recalculate Outside)";
     if (!flippedList.empty()) {
-      out_.push_back(finding(
-          "proxy_not_oriented", "error", static_cast<double>(flippedList.size()), 0.0,
-          plural(flippedList.size(), "face is", "faces are") + " wound against " +
-              (flippedList.size() == 1 ? "its" : "their") + " neighbours: " + faceList(flippedList) +
-              "; the first is " + faceName(flippedList[0]),
-          hint));
+      out_.push_back(
+          finding("proxy_not_oriented", "error", static_cast<double>(flippedList.size()), 0.0,
+                  plural(flippedList.size(), "face is", "faces are") + " wound against " +
+                      (flippedList.size() == 1 ? "its" : "their") + " neighbours: " +
+                      faceList(flippedList) + "; the first is " + faceName(flippedList[0]),
+                  hint));
     }
     if (!oneSidedList.empty()) {
-      out_.push_back(finding(
-          "proxy_not_oriented", "error", static_cast<double>(oneSidedList.size()), 0.0,
-          "the surface through " + faceList(oneSidedList) +
-              " is one-sided (like a Moebius strip): no winding makes all neighbours agree",
-          "rebuild that part as a closed two-sided surface; " + hint));
+      out_.push_back(
+          finding("proxy_not_oriented", "error", static_cast<double>(oneSidedList.size()), 0.0,
+                  "the surface through " + faceList(oneSidedList) +
+                      " is one-sided (like a Moebius strip): no winding makes all neighbours agree",
+                  "rebuild that part as a closed two-sided surface; " + hint));
     }
   }
 
@@ -450,13 +459,14 @@ class ProxyMeshChecker {
   // check geometrically.
   bool checkVolume() {
     std::size_t withArea = 0;
-    for (const auto fh : mesh_.faces()) withArea += faces_[mesh_.property(inputFace_, fh)].degenerate ? 0 : 1;
+    for (const auto fh : mesh_.faces())
+      withArea += faces_[mesh_.property(inputFace_, fh)].degenerate ? 0 : 1;
     if (withArea == 0) {
-      out_.push_back(finding(
-          "proxy_empty", "error", 0.0, 1.0,
-          "none of the proxy mesh's " + plural(T_.size(), "triangle", "triangles") +
-              " has an area and joins the surface",
-          "give the probe a closed convex mesh, or a box proxy"));
+      out_.push_back(finding("proxy_empty", "error", 0.0, 1.0,
+                             "none of the proxy mesh's " +
+                                 plural(T_.size(), "triangle", "triangles") +
+                                 " has an area and joins the surface",
+                             "give the probe a closed convex mesh, or a box proxy"));
       return false;
     }
     glm::dvec3 centroid(0.0);
@@ -470,8 +480,8 @@ class ProxyMeshChecker {
     double volume = 0.0;
     for (const auto fh : mesh_.faces()) {
       const auto c = woundCorners(mesh_.property(inputFace_, fh));
-      const double term = glm::dot(V_[c[0]] - centroid,
-                                   glm::cross(V_[c[1]] - centroid, V_[c[2]] - centroid)) / 6.0;
+      const double term =
+          glm::dot(V_[c[0]] - centroid, glm::cross(V_[c[1]] - centroid, V_[c[2]] - centroid)) / 6.0;
       volume += term;
     }
     // A slab thinner than the plane tolerance across the whole mesh.
@@ -485,11 +495,11 @@ class ProxyMeshChecker {
     }
     outward_ = volume > 0.0 ? 1.0 : -1.0;
     if (volume < 0.0) {
-      out_.push_back(finding(
-          "proxy_inward_faces", "error", volume, 0.0,
-          "faces point inwards: the signed volume is " + number(volume) +
-              " m^3 (faces wound clockwise seen from outside)",
-          "flip every face (Blender: Mesh > Normals > Flip, or Recalculate Outside)"));
+      out_.push_back(
+          finding("proxy_inward_faces", "error", volume, 0.0,
+                  "faces point inwards: the signed volume is " + number(volume) +
+                      " m^3 (faces wound clockwise seen from outside)",
+                  "flip every face (Blender: Mesh > Normals > Flip, or Recalculate Outside)"));
     }
     return true;
   }
@@ -584,8 +594,8 @@ class ProxyMeshChecker {
       }
     }
     // Bends within the angle tolerance let a far vertex sit a little outside a face's plane.
-    const double tolerance =
-        planeTolerance_ + size_ * std::sin(options_.convexToleranceDegrees * std::numbers::pi / 180.0);
+    const double tolerance = planeTolerance_ + size_ * std::sin(options_.convexToleranceDegrees *
+                                                                std::numbers::pi / 180.0);
     if (worst <= tolerance) return;
     out_.push_back(finding(
         "proxy_not_convex", "error", worst, tolerance,
@@ -644,10 +654,11 @@ class ProxyMeshChecker {
     const std::string where = "the capture point " + point(capture_);
     out_.push_back(finding(
         "proxy_misses_capture", "error", worst, -planeTolerance_,
-        onBoundary ? where + " lies on the boundary of the proxy, " + number(std::abs(worst)) +
-                         " m from the plane of " + faceName(worstFace) + "; it must be strictly inside"
-                   : where + " lies " + number(worst) + " m outside the proxy, beyond the plane of " +
-                         faceName(worstFace),
+        onBoundary
+            ? where + " lies on the boundary of the proxy, " + number(std::abs(worst)) +
+                  " m from the plane of " + faceName(worstFace) + "; it must be strictly inside"
+            : where + " lies " + number(worst) + " m outside the proxy, beyond the plane of " +
+                  faceName(worstFace),
         onBoundary ? "move the capture point into the proxy, away from its faces"
                    : "move the capture point inside the proxy, or grow the proxy around it"));
   }
@@ -661,16 +672,16 @@ class ProxyMeshChecker {
   double weldTolerance_ = 0.0, heightTolerance_ = 0.0, planeTolerance_ = 0.0;
   double outward_ = 1.0;  // -1 when the surface's winding points inwards
   std::size_t pieces_ = 0;
-  std::vector<std::uint32_t> weldedTo_;                // input vertex -> welded vertex id
-  std::vector<Face> faces_;                            // per input triangle
-  std::map<EdgeKey, std::vector<EdgeUse>> edges_;      // ordered: reports are deterministic
-  std::vector<bool> flipped_, oneSided_;               // per input triangle
-  std::vector<std::uint32_t> order_;                   // faces in orientation-walk order
-  std::vector<Refusal> refused_;                       // faces left out of the surface
+  std::vector<std::uint32_t> weldedTo_;            // input vertex -> welded vertex id
+  std::vector<Face> faces_;                        // per input triangle
+  std::map<EdgeKey, std::vector<EdgeUse>> edges_;  // ordered: reports are deterministic
+  std::vector<bool> flipped_, oneSided_;           // per input triangle
+  std::vector<std::uint32_t> order_;               // faces in orientation-walk order
+  std::vector<Refusal> refused_;                   // faces left out of the surface
   TriMesh mesh_;
   OpenMesh::FPropHandleT<std::uint32_t> inputFace_;
-  std::vector<OpenMesh::VertexHandle> handleOf_;       // welded vertex id -> OpenMesh vertex
-  std::vector<std::uint32_t> idOf_;                    // OpenMesh vertex index -> welded vertex id
+  std::vector<OpenMesh::VertexHandle> handleOf_;  // welded vertex id -> OpenMesh vertex
+  std::vector<std::uint32_t> idOf_;               // OpenMesh vertex index -> welded vertex id
   std::vector<ProxyMeshFinding> out_;
 };
 
@@ -695,7 +706,8 @@ std::vector<ProxyMeshFinding> checkConvexProxy(const ConvexProxy& proxy, glm::dv
       checkProxyMesh(proxy.verticesMeters, proxy.triangles, captureMeters, options);
   if (proxy.triangles.empty()) return out;
   const std::vector<glm::dvec3>& V = proxy.verticesMeters;
-  const std::vector<std::uint32_t> referenced = referencedVertices(V, proxy.triangles, captureMeters);
+  const std::vector<std::uint32_t> referenced =
+      referencedVertices(V, proxy.triangles, captureMeters);
   const double tolerance = options.planeToleranceRelative * meshSize(V, referenced);
   const std::string rebuildHint =
       "rebuild the triangles from the planes (the runtime intersects rays with the planes and "
@@ -704,7 +716,8 @@ std::vector<ProxyMeshFinding> checkConvexProxy(const ConvexProxy& proxy, glm::dv
   // Planes, made unit for the comparisons below; unusable ones are reported and skipped.
   if (proxy.planes.empty()) {
     out.push_back(finding("proxy_bad_plane", "error", 0.0, 1.0,
-                          "the proxy has " + plural(proxy.triangles.size(), "triangle", "triangles") +
+                          "the proxy has " +
+                              plural(proxy.triangles.size(), "triangle", "triangles") +
                               " but no planes",
                           rebuildHint));
     return out;
@@ -716,12 +729,12 @@ std::vector<ProxyMeshFinding> checkConvexProxy(const ConvexProxy& proxy, glm::dv
     const double length = glm::length(plane.normal);
     const bool finite = isFinite(plane.normal) && std::isfinite(plane.offsetMeters);
     if (!finite || std::abs(length - 1.0) > 1e-6) {
-      out.push_back(finding(
-          "proxy_bad_plane", "error", finite ? length : 0.0, 1.0,
-          "plane " + std::to_string(p) + " has the normal " + point(plane.normal) + " (length " +
-              number(length) + ") and offset " + number(plane.offsetMeters) +
-              " m; normals must be unit vectors pointing out of the proxy",
-          "normalize the plane: divide its normal and offset by the normal's length"));
+      out.push_back(
+          finding("proxy_bad_plane", "error", finite ? length : 0.0, 1.0,
+                  "plane " + std::to_string(p) + " has the normal " + point(plane.normal) +
+                      " (length " + number(length) + ") and offset " + number(plane.offsetMeters) +
+                      " m; normals must be unit vectors pointing out of the proxy",
+                  "normalize the plane: divide its normal and offset by the normal's length"));
     }
     if (!finite || !(length > 0.0)) continue;
     planes.push_back({plane.normal / length, plane.offsetMeters / length});
@@ -730,8 +743,9 @@ std::vector<ProxyMeshFinding> checkConvexProxy(const ConvexProxy& proxy, glm::dv
   if (planes.empty()) return out;
 
   const auto planeName = [&](std::size_t i) {
-    return "plane " + std::to_string(planeIndex[i]) + " (normal " + point(proxy.planes[planeIndex[i]].normal) +
-           ", offset " + number(proxy.planes[planeIndex[i]].offsetMeters) + " m)";
+    return "plane " + std::to_string(planeIndex[i]) + " (normal " +
+           point(proxy.planes[planeIndex[i]].normal) + ", offset " +
+           number(proxy.planes[planeIndex[i]].offsetMeters) + " m)";
   };
 
   // Every triangle on a plane: its corners' largest distance from the nearest plane.
@@ -744,7 +758,8 @@ std::vector<ProxyMeshFinding> checkConvexProxy(const ConvexProxy& proxy, glm::dv
     for (std::size_t p = 0; p < planes.size(); ++p) {
       double off = 0.0;
       for (int k = 0; k < 3; ++k) {
-        off = std::max(off, std::abs(glm::dot(planes[p].normal, V[proxy.triangles[f][k]]) - planes[p].offsetMeters));
+        off = std::max(off, std::abs(glm::dot(planes[p].normal, V[proxy.triangles[f][k]]) -
+                                     planes[p].offsetMeters));
       }
       if (off < nearest) {
         nearest = off;
@@ -761,14 +776,14 @@ std::vector<ProxyMeshFinding> checkConvexProxy(const ConvexProxy& proxy, glm::dv
   }
   if (offFaces > 0) {
     const glm::uvec3& t = proxy.triangles[worstFace];
-    out.push_back(finding(
-        "proxy_face_off_planes", "error", worstOff, tolerance,
-        plural(offFaces, "triangle lies", "triangles lie") + " on none of the proxy's " +
-            plural(proxy.planes.size(), "plane", "planes") + "; the worst, face " +
-            std::to_string(worstFace) + " (vertices " + std::to_string(t[0]) + ", " +
-            std::to_string(t[1]) + ", " + std::to_string(t[2]) + "), is " + number(worstOff) +
-            " m from the nearest, " + planeName(worstFacePlane),
-        rebuildHint));
+    out.push_back(
+        finding("proxy_face_off_planes", "error", worstOff, tolerance,
+                plural(offFaces, "triangle lies", "triangles lie") + " on none of the proxy's " +
+                    plural(proxy.planes.size(), "plane", "planes") + "; the worst, face " +
+                    std::to_string(worstFace) + " (vertices " + std::to_string(t[0]) + ", " +
+                    std::to_string(t[1]) + ", " + std::to_string(t[2]) + "), is " +
+                    number(worstOff) + " m from the nearest, " + planeName(worstFacePlane),
+                rebuildHint));
   }
 
   // Every vertex inside every plane.
@@ -795,12 +810,12 @@ std::vector<ProxyMeshFinding> checkConvexProxy(const ConvexProxy& proxy, glm::dv
     }
   }
   if (outsideVertices > 0) {
-    out.push_back(finding(
-        "proxy_vertex_outside_planes", "error", worstOutside, tolerance,
-        plural(outsideVertices, "vertex lies", "vertices lie") + " outside the proxy's planes; the worst, vertex " +
-            std::to_string(worstVertex) + " " + point(V[worstVertex]) + ", is " + number(worstOutside) +
-            " m outside " + planeName(worstVertexPlane),
-        rebuildHint));
+    out.push_back(finding("proxy_vertex_outside_planes", "error", worstOutside, tolerance,
+                          plural(outsideVertices, "vertex lies", "vertices lie") +
+                              " outside the proxy's planes; the worst, vertex " +
+                              std::to_string(worstVertex) + " " + point(V[worstVertex]) + ", is " +
+                              number(worstOutside) + " m outside " + planeName(worstVertexPlane),
+                          rebuildHint));
   }
   return out;
 }

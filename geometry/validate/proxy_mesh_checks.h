@@ -29,8 +29,9 @@ struct ProxyMeshFinding {
 // Rules, in the order findings are returned (value / limit); proxy_empty also ends the list
 // when no triangle with an area is left:
 //   proxy_empty            error    no triangles, or none with an area: usable triangles / 1
-//   proxy_degenerate_face  warning  zero-area faces (kept for closedness, skipped for angles): count / 0
-//   proxy_not_manifold     error    faces that do not fit one 2-manifold surface (an edge already
+//   proxy_degenerate_face  warning  zero-area faces (kept for closedness, skipped for angles):
+//   count / 0 proxy_not_manifold     error    faces that do not fit one 2-manifold surface (an edge
+//   already
 //                                   shared by two faces, a vertex whose fan is closed); they are
 //                                   left out of the later checks: count / 0
 //   proxy_not_closed       error    edges used by one face only: count / 0
@@ -39,10 +40,12 @@ struct ProxyMeshFinding {
 //   proxy_separate_pieces  error    the surface is several pieces sharing no edge: pieces / 1
 //   proxy_flat             error    encloses no volume: |volume| m^3 / tolerance m^3
 //   proxy_inward_faces     error    signed volume negative: volume m^3 / 0
-//   proxy_concave_edge     error    worst inward bend between two faces: degrees / tolerance degrees
-//   proxy_not_convex       error    every edge bends outwards, yet the surface overlaps itself:
+//   proxy_concave_edge     error    worst inward bend between two faces: degrees / tolerance
+//   degrees proxy_not_convex       error    every edge bends outwards, yet the surface overlaps
+//   itself:
 //                                   the farthest a vertex lies outside a face's plane, metres /
-//                                   tolerance metres (plane tolerance + size * sin(angle tolerance))
+//                                   tolerance metres (plane tolerance + size * sin(angle
+//                                   tolerance))
 //   proxy_misses_capture   error    capture point outside or on the boundary: signed metres
 //                                   outside the worst face plane (negative inside) / -tolerance
 // checkConvexProxy adds:

@@ -39,9 +39,12 @@ void buildEveryProbe(benchmark::State& state) {
   }
   const double probes = static_cast<double>(state.iterations() * w.scene.probes.size());
   state.counters["ms_per_probe"] = total / probes;
-  for (const auto& [name, ms] : {std::pair{"depth_share", depth}, {"sampling_share", sampling},
-                                 {"hull_share", hull}, {"simplify_share", simplify},
-                                 {"fits_share", fits}, {"evaluation_share", evaluation}}) {
+  for (const auto& [name, ms] : {std::pair{"depth_share", depth},
+                                 {"sampling_share", sampling},
+                                 {"hull_share", hull},
+                                 {"simplify_share", simplify},
+                                 {"fits_share", fits},
+                                 {"evaluation_share", evaluation}}) {
     state.counters[name] = ms / total;
   }
 }
@@ -80,9 +83,11 @@ int main(int argc, char** argv) {
     return 2;
   }
   benchmark::RegisterBenchmark(
-      ("build_proxy_every_probe/" + w.name + "/" + std::to_string(w.options.depthFaceSize) + "px").c_str(),
+      ("build_proxy_every_probe/" + w.name + "/" + std::to_string(w.options.depthFaceSize) + "px")
+          .c_str(),
       buildEveryProbe)
-      ->Unit(benchmark::kMillisecond)->UseRealTime();
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

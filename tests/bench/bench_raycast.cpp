@@ -13,8 +13,8 @@
 #include <benchmark/benchmark.h>
 
 #include <cstring>
-#include <map>
 #include <iostream>
+#include <map>
 
 namespace probeproxy {
 namespace {
@@ -56,7 +56,8 @@ class MedianReporter : public benchmark::ConsoleReporter {
     for (const Run& run : runs) {
       if (run.run_type == Run::RT_Aggregate && run.aggregate_name == "median") {
         medianSeconds[run.run_name.function_name] = run.GetAdjustedRealTime();
-      } else if (run.run_type == Run::RT_Iteration && !medianSeconds.count(run.run_name.function_name)) {
+      } else if (run.run_type == Run::RT_Iteration &&
+                 !medianSeconds.count(run.run_name.function_name)) {
         medianSeconds[run.run_name.function_name] = run.GetAdjustedRealTime();  // one repetition
       }
     }
@@ -65,8 +66,9 @@ class MedianReporter : public benchmark::ConsoleReporter {
 };
 
 void setRaysPerSecond(benchmark::State& state, std::size_t rays) {
-  state.counters["rays_per_s"] = benchmark::Counter(
-      static_cast<double>(rays) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["rays_per_s"] =
+      benchmark::Counter(static_cast<double>(rays) * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate);
 }
 
 }  // namespace
@@ -108,7 +110,8 @@ int main(int argc, char** argv) {
                                  }
                                  setRaysPerSecond(state, w.rays.size());
                                })
-      ->Unit(benchmark::kMillisecond)->UseRealTime();
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime();
   benchmark::RegisterBenchmark(("depth_cubes_batched_all_cores" + suffix).c_str(),
                                [](benchmark::State& state) {
                                  std::vector<RayHit> hits(w.rays.size());
@@ -118,7 +121,8 @@ int main(int argc, char** argv) {
                                  }
                                  setRaysPerSecond(state, w.rays.size());
                                })
-      ->Unit(benchmark::kMillisecond)->UseRealTime();
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime();
   MedianReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
   benchmark::Shutdown();
@@ -127,8 +131,8 @@ int main(int argc, char** argv) {
   if (baseline > 0 && batched > 0) {
     std::cout << "rays per depth-cube set: " << w.rays.size() << "; median rays/s: one by one "
               << w.rays.size() / (baseline * 1e-3) / 1e6 << " M, batched "
-              << w.rays.size() / (batched * 1e-3) / 1e6 << " M; batched / one-by-one speed-up: "
-              << baseline / batched << "x\n";
+              << w.rays.size() / (batched * 1e-3) / 1e6
+              << " M; batched / one-by-one speed-up: " << baseline / batched << "x\n";
   }
   return 0;
 }

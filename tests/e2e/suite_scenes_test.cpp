@@ -7,13 +7,13 @@
 #include "geometry/build/build_scene_proxies.h"
 #include "geometry/export/runtime_export.h"
 #include "geometry/level/load_level.h"
-#include "geometry/validate/proxy_mesh_checks.h"
 #include "geometry/raycast/capture_depth_cube.h"
 #include "geometry/scene/scene_file.h"
+#include "geometry/validate/proxy_mesh_checks.h"
 
 #include <OpenImageIO/imageio.h>
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <filesystem>
@@ -23,9 +23,9 @@ namespace {
 
 const std::filesystem::path kSuite = PROBEPROXY_SUITE_DIR;
 
-const std::vector<std::string> kLevels = {"corridor",   "l_room",    "u_corridors",
-                                          "hall_pillars", "attic",   "round_room",
-                                          "courtyard",  "tiny_closet", "hangar"};
+const std::vector<std::string> kLevels = {"corridor",     "l_room",      "u_corridors",
+                                          "hall_pillars", "attic",       "round_room",
+                                          "courtyard",    "tiny_closet", "hangar"};
 
 struct Image {
   int width = 0, height = 0, channels = 0;
@@ -63,9 +63,9 @@ TEST_P(SuiteLevel, SceneAndLevelLoad) {
       const Image image = readImage(face);
       EXPECT_EQ(image.width, image.height) << face;
       EXPECT_GE(image.channels, 3) << face;
-      EXPECT_TRUE(std::all_of(image.pixels.begin(), image.pixels.end(),
-                              [](float v) { return std::isfinite(v) && v >= 0.0f; }))
-          << face;
+      EXPECT_TRUE(std::all_of(image.pixels.begin(), image.pixels.end(), [](float v) {
+        return std::isfinite(v) && v >= 0.0f;
+      })) << face;
     }
   }
 }
@@ -78,12 +78,14 @@ TEST_P(SuiteLevel, BlenderCubesUseTheCoreFaceConvention) {
     std::size_t sky = 0, skyAgreed = 0;
     for (int f = 0; f < kCubeFaceCount; ++f) {
       const std::string pattern = "cubemaps/" + probe.name + "_position_{face}.exr";
-      const Image blender = readImage(scene.file.parent_path() / cubeFacePath(pattern, CubeFace(f)));
+      const Image blender =
+          readImage(scene.file.parent_path() / cubeFacePath(pattern, CubeFace(f)));
       const int n = blender.width;
       const DepthCube cube = captureDepthCube(caster, probe.captureMeters, n);
       for (int row = 0; row < n; ++row) {
         for (int col = 0; col < n; ++col) {
-          const float* p = &blender.pixels[(static_cast<std::size_t>(row) * n + col) * blender.channels];
+          const float* p =
+              &blender.pixels[(static_cast<std::size_t>(row) * n + col) * blender.channels];
           const float t = cube.at(CubeFace(f), col, row);
           if (std::isinf(t)) {
             ++sky;
@@ -104,7 +106,8 @@ TEST_P(SuiteLevel, BlenderCubesUseTheCoreFaceConvention) {
     const double p99 = errors[errors.size() * 99 / 100];
     EXPECT_LT(median, 1e-3) << probe.name;
     EXPECT_LT(p99, 0.05) << probe.name;
-    EXPECT_GE(skyAgreed, sky * 95 / 100) << probe.name << ": sky texels that Blender saw a surface in";
+    EXPECT_GE(skyAgreed, sky * 95 / 100)
+        << probe.name << ": sky texels that Blender saw a surface in";
   }
 }
 
@@ -127,12 +130,13 @@ TEST_P(SuiteLevel, BuiltProxiesAreValidAndAccurate) {
     const glm::dvec3 capture = scene.probes[i].captureMeters;
     EXPECT_TRUE(b.findings.empty()) << b.probe << ": " << (b.findings.empty() ? "" : b.findings[0]);
     EXPECT_TRUE(strictlyContains(kept.shape, capture)) << b.probe;
-    const ConvexProxy convex = std::holds_alternative<BoxShape>(kept.shape)
-                                   ? convexFromBox(std::get<BoxShape>(kept.shape))
-                                   : std::get_if<ConvexProxy>(&kept.shape) ? std::get<ConvexProxy>(kept.shape)
-                                                                           : ConvexProxy{};
+    const ConvexProxy convex =
+        std::holds_alternative<BoxShape>(kept.shape) ? convexFromBox(std::get<BoxShape>(kept.shape))
+        : std::get_if<ConvexProxy>(&kept.shape)      ? std::get<ConvexProxy>(kept.shape)
+                                                     : ConvexProxy{};
     if (!convex.planes.empty()) {
-      for (const ProxyMeshFinding& f : checkConvexProxy(convex, capture)) ADD_FAILURE() << b.probe << ": " << f.message;
+      for (const ProxyMeshFinding& f : checkConvexProxy(convex, capture))
+        ADD_FAILURE() << b.probe << ": " << f.message;
     }
     EXPECT_EQ(kept.error.missRate, 0.0) << b.probe;
     if (convexRoom) {
@@ -147,7 +151,8 @@ TEST_P(SuiteLevel, BuiltProxiesAreValidAndAccurate) {
     }
   }
 
-  const std::filesystem::path out = std::filesystem::temp_directory_path() / "probeproxy-suite-export" / GetParam();
+  const std::filesystem::path out =
+      std::filesystem::temp_directory_path() / "probeproxy-suite-export" / GetParam();
   std::filesystem::remove_all(out);
   writeRuntimeExport(scene, builds, out);
   const RuntimeExport back = readRuntimeExport(out / "proxies.json");

@@ -60,7 +60,8 @@ LevelMesh lRoom() {
 TEST(BuildProbeProxy, BoxRoomKeepsAnExactSixPlaneProxy) {
   const glm::dvec3 lo(-4, -2, 0), hi(6, 3, 3);
   const LevelRayCaster level(boxRoom(glm::vec3(lo), glm::vec3(hi)));
-  const ProbeProxyBuild b = buildProbeProxy(level, probeAt({1, 0.5, 1.6}, lo, hi), std::nullopt, fastOptions());
+  const ProbeProxyBuild b =
+      buildProbeProxy(level, probeAt({1, 0.5, 1.6}, lo, hi), std::nullopt, fastOptions());
   EXPECT_LE(planeCount(kept(b).shape), 6);
   EXPECT_LT(kept(b).error.p95Deg, 0.25);
   EXPECT_EQ(kept(b).error.missRate, 0.0);
@@ -72,7 +73,8 @@ TEST(BuildProbeProxy, KeptConvexProxiesContainTheCaptureAndPassTheMeshChecks) {
   const glm::dvec3 capture(1.5, 1.5, 1.6);
   ProxyBuildOptions o = fastOptions();
   o.toleranceDeg = 0.01;  // force a convex proxy
-  const ProbeProxyBuild b = buildProbeProxy(level, probeAt(capture, {0, 0, 0}, {8, 3, 3}), std::nullopt, o);
+  const ProbeProxyBuild b =
+      buildProbeProxy(level, probeAt(capture, {0, 0, 0}, {8, 3, 3}), std::nullopt, o);
   const auto* convex = std::get_if<ConvexProxy>(&kept(b).shape);
   ASSERT_NE(convex, nullptr) << kept(b).kind;
   EXPECT_LT(signedDistanceOutside(convex->planes, capture), 0.0);
@@ -81,13 +83,13 @@ TEST(BuildProbeProxy, KeptConvexProxiesContainTheCaptureAndPassTheMeshChecks) {
 
 TEST(BuildProbeProxy, LRoomBeatsItsBoundingBoxByHalf) {
   const LevelRayCaster level(lRoom());
-  const ProbeProxyBuild b = buildProbeProxy(
-      level, probeAt({6.5, 1.5, 1.6}, {3, 0, 0}, {8, 3, 3}),
-      BoxShape{{4, 4, 1.5}, {4, 4, 1.5}, glm::dquat(1, 0, 0, 0)}, [] {
-        ProxyBuildOptions o = fastOptions();
-        o.regenerate = true;
-        return o;
-      }());
+  const ProbeProxyBuild b =
+      buildProbeProxy(level, probeAt({6.5, 1.5, 1.6}, {3, 0, 0}, {8, 3, 3}),
+                      BoxShape{{4, 4, 1.5}, {4, 4, 1.5}, glm::dquat(1, 0, 0, 0)}, [] {
+                        ProxyBuildOptions o = fastOptions();
+                        o.regenerate = true;
+                        return o;
+                      }());
   ASSERT_EQ(b.candidates.front().kind, "authored");
   EXPECT_NE(b.kept, 0u);
   // Most reflections land on walls both proxies model exactly, so medians sit at the numeric
@@ -103,7 +105,8 @@ TEST(BuildProbeProxy, AuthoredProxyIsKeptAndMeasured) {
   const glm::dvec3 lo(0, 0, 0), hi(4, 4, 3);
   const LevelRayCaster level(boxRoom(glm::vec3(lo), glm::vec3(hi)));
   const BoxShape tooSmall{{2, 2, 1.5}, {1, 1, 1.5}, glm::dquat(1, 0, 0, 0)};
-  const ProbeProxyBuild b = buildProbeProxy(level, probeAt({2, 2, 1.6}, lo, hi), tooSmall, fastOptions());
+  const ProbeProxyBuild b =
+      buildProbeProxy(level, probeAt({2, 2, 1.6}, lo, hi), tooSmall, fastOptions());
   EXPECT_EQ(b.kept, 0u);
   EXPECT_EQ(kept(b).kind, "authored");
   EXPECT_GT(kept(b).error.missRate, 0.2);  // floor points outside the small box are misses
@@ -114,8 +117,8 @@ TEST(BuildProbeProxy, ProbeSeeingOnlyAFloorGetsAFindingNotACrash) {
   floor.triangles = {floor.triangles[8], floor.triangles[9]};  // keep the floor only
   floor.parts[0].triangleCount = 2;
   const LevelRayCaster level(floor);
-  const ProbeProxyBuild b =
-      buildProbeProxy(level, probeAt({0, 0, 1.6}, {-5, -5, 0}, {5, 5, 3}), std::nullopt, fastOptions());
+  const ProbeProxyBuild b = buildProbeProxy(level, probeAt({0, 0, 1.6}, {-5, -5, 0}, {5, 5, 3}),
+                                            std::nullopt, fastOptions());
   EXPECT_FALSE(b.candidates.empty());
   EXPECT_FALSE(b.findings.empty());
 }
@@ -123,8 +126,8 @@ TEST(BuildProbeProxy, ProbeSeeingOnlyAFloorGetsAFindingNotACrash) {
 TEST(BuildProbeProxy, ProbeOutsideTheLevelGetsAFinding) {
   const glm::dvec3 lo(0, 0, 0), hi(4, 4, 3);
   const LevelRayCaster level(boxRoom(glm::vec3(lo), glm::vec3(hi)));
-  const ProbeProxyBuild b =
-      buildProbeProxy(level, probeAt({10, 2, 1.6}, {8, 0, 0}, {12, 4, 3}), std::nullopt, fastOptions());
+  const ProbeProxyBuild b = buildProbeProxy(level, probeAt({10, 2, 1.6}, {8, 0, 0}, {12, 4, 3}),
+                                            std::nullopt, fastOptions());
   ASSERT_FALSE(b.findings.empty());
   EXPECT_NE(b.findings.front().find("outside"), std::string::npos) << b.findings.front();
 }
@@ -133,8 +136,8 @@ TEST(BuildProbeProxy, TenCentimetreClosetAndTenKilometresOut) {
   for (const glm::dvec3 offset : {glm::dvec3(0.0), glm::dvec3(10000.0, -10000.0, 0.0)}) {
     const glm::dvec3 lo = offset, hi = offset + glm::dvec3(0.1, 0.8, 2.2);
     const LevelRayCaster level(boxRoom(glm::vec3(lo), glm::vec3(hi)));
-    const ProbeProxyBuild b =
-        buildProbeProxy(level, probeAt(offset + glm::dvec3(0.05, 0.4, 1.6), lo, hi), std::nullopt, fastOptions());
+    const ProbeProxyBuild b = buildProbeProxy(
+        level, probeAt(offset + glm::dvec3(0.05, 0.4, 1.6), lo, hi), std::nullopt, fastOptions());
     EXPECT_LE(planeCount(kept(b).shape), 6) << offset.x;
     EXPECT_LT(kept(b).error.p95Deg, 0.5) << offset.x;
     EXPECT_LE(kept(b).error.missRate, 0.01) << offset.x;

@@ -7,11 +7,11 @@
 #include "geometry/tune/one_dimensional_fits.h"
 
 #include <gtest/gtest.h>
-#include <glm/geometric.hpp>
 #include <tbb/global_control.h>
+#include <glm/geometric.hpp>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 namespace probeproxy {
@@ -131,8 +131,8 @@ TEST_F(BoxRoomEvaluation, GreedyRemovalDropsPlanesNobodyNeedsFirst) {
   const auto samples = buildReflectionSamples(caster, probe, SampleSet::MirrorFloor);
   // The room's six planes plus four far-away planes that cut nothing.
   std::vector<ProxyPlane> planes = convexFromBox(kRoomBox).planes;
-  for (const glm::dvec3 n : {glm::dvec3(1, 1, 0), glm::dvec3(-1, 1, 0), glm::dvec3(1, -1, 0),
-                             glm::dvec3(-1, -1, 1)}) {
+  for (const glm::dvec3 n :
+       {glm::dvec3(1, 1, 0), glm::dvec3(-1, 1, 0), glm::dvec3(1, -1, 0), glm::dvec3(-1, -1, 1)}) {
     planes.push_back({glm::normalize(n), 100.0});
   }
   // Bounded: every direction leaves through some plane. The planes here are axis-aligned or
@@ -158,7 +158,8 @@ TEST_F(BoxRoomEvaluation, GreedyRemovalDropsPlanesNobodyNeedsFirst) {
   ASSERT_GE(steps.size(), 5u);
   EXPECT_NEAR(steps[4].meanCostDeg, steps[0].meanCostDeg, 1e-12);
   ASSERT_EQ(steps[4].planes.size(), 6u);
-  for (std::size_t i = 0; i < 6; ++i) EXPECT_EQ(steps[4].planes[i].offsetMeters, planes[i].offsetMeters);
+  for (std::size_t i = 0; i < 6; ++i)
+    EXPECT_EQ(steps[4].planes[i].offsetMeters, planes[i].offsetMeters);
   for (const PlaneRemovalStep& step : steps) EXPECT_TRUE(bounded(step.planes));
 }
 

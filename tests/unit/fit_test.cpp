@@ -234,11 +234,11 @@ void expectSameBitsOnEveryThread(const Call& call) {
     }
   }
   for (std::size_t i = 0; i < there.size(); ++i)
-    EXPECT_TRUE(there[i] == here) << "thread " << i / 2 << ", call " << i % 2
-                                  << " differs from the main thread at "
-                                  << (std::mismatch(here.begin(), here.end(), there[i].begin(),
-                                                    there[i].end()).first - here.begin())
-                                  << " of " << here.size();
+    EXPECT_TRUE(there[i] == here)
+        << "thread " << i / 2 << ", call " << i % 2 << " differs from the main thread at "
+        << (std::mismatch(here.begin(), here.end(), there[i].begin(), there[i].end()).first -
+            here.begin())
+        << " of " << here.size();
 }
 
 const glm::dvec3 kRoomLow{-3.0, -2.0, 0.0};

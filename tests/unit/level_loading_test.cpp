@@ -19,8 +19,10 @@ LevelMesh messyLevel() {
   level.triangles.pop_back();  // a hole in the ceiling
   level.parts[0].triangleCount -= 1;
   LevelMesh fin;
-  fin.positionsMeters = {{0.1f, 0.2f, 0.3f}, {1.7f, 0.2f, 0.3f}, {0.1f, 1.3f, 2.9f},
-                         {0.1f, 0.2f, 0.3f},  // duplicate of vertex 0
+  fin.positionsMeters = {{0.1f, 0.2f, 0.3f},
+                         {1.7f, 0.2f, 0.3f},
+                         {0.1f, 1.3f, 2.9f},
+                         {0.1f, 0.2f, 0.3f},   // duplicate of vertex 0
                          {0.9f, 0.2f, 0.3f}};  // on the edge 0-1: collinear triangle below
   fin.triangles = {{0, 1, 2}, {3, 1, 2}, {0, 0, 2}, {0, 4, 1}};  // 0-1-2 and 3-1-2 overlap
   fin.parts = {{"fin", {}, 0, 4}};
@@ -48,10 +50,12 @@ TEST_P(LevelRoundTrip, MessyLevelReadsBackBitExact) {
   for (UpAxis up : {UpAxis::Z, UpAxis::Y}) {
     writeLevelMeshFile(written, file, up);
     const LevelMesh read = loadLevelMeshFile(file, up, 1.0);
-    const std::vector<glm::vec3> expected = triangleCorners(written), actual = triangleCorners(read);
+    const std::vector<glm::vec3> expected = triangleCorners(written),
+                                 actual = triangleCorners(read);
     ASSERT_EQ(actual.size(), expected.size()) << GetParam();
     for (std::size_t i = 0; i < expected.size(); ++i) {
-      ASSERT_EQ(actual[i], expected[i]) << GetParam() << " corner " << i << " of triangle " << i / 3;
+      ASSERT_EQ(actual[i], expected[i])
+          << GetParam() << " corner " << i << " of triangle " << i / 3;
     }
     EXPECT_EQ(measureLevelMesh(read).degenerateTriangles, 2u);  // nothing was dropped or fixed
   }
@@ -83,8 +87,7 @@ TEST_F(LevelLoading, GltfIsReadAsYUp) {
   })";
   const LevelMesh read = loadLevelMeshFile(write("tri.gltf", gltf), UpAxis::Y, 1.0);
   ASSERT_EQ(read.triangles.size(), 1u);
-  EXPECT_EQ(triangleCorners(read),
-            (std::vector<glm::vec3>{{0, 0, 0}, {1, 0, 0}, {0, 3, 2}}));
+  EXPECT_EQ(triangleCorners(read), (std::vector<glm::vec3>{{0, 0, 0}, {1, 0, 0}, {0, 3, 2}}));
 }
 
 TEST_F(LevelLoading, MetersPerUnitScalesALevelInCentimetres) {
@@ -94,7 +97,8 @@ TEST_F(LevelLoading, MetersPerUnitScalesALevelInCentimetres) {
 }
 
 TEST_F(LevelLoading, QuadsAndPolygonsAreTriangulated) {
-  const auto file = write("quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0.5 1.5 0\nf 1 2 3 5 4\n");
+  const auto file =
+      write("quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0.5 1.5 0\nf 1 2 3 5 4\n");
   EXPECT_EQ(loadLevelMeshFile(file, UpAxis::Z, 1.0).triangles.size(), 3u);
 }
 
@@ -131,7 +135,8 @@ INSTANTIATE_TEST_SUITE_P(
                 "end_header\n0 0 0\n1 0 0\n0 inf 0\n3 0 1 2\n",
                 "has a non-finite coordinate"},
         BadMesh{"out_of_range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n", "malformed mesh"},
-        BadMesh{"garbage.obj", "this is not a mesh\n\x01\x02\x03 at all\n", "mesh has no triangles"},
+        BadMesh{"garbage.obj", "this is not a mesh\n\x01\x02\x03 at all\n",
+                "mesh has no triangles"},
         BadMesh{"index_past_end.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n", "malformed mesh"},
         BadMesh{"lines_only.obj", "v 0 0 0\nv 1 0 0\nl 1 2\n", "mesh has no triangles"},
         BadMesh{"empty.glb", "", "mesh file is empty"},

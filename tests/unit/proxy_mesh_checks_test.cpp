@@ -51,7 +51,8 @@ Mesh prism(const std::vector<glm::dvec2>& polygon, double height) {
 Mesh unitCube() { return prism({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 1.0); }
 
 // As OBJ and glTF exporters write flat-shaded meshes: every face its own corners. Each copy is
-// moved by up to `jitter` (as printing and parsing floats does), so only a tolerant weld joins them.
+// moved by up to `jitter` (as printing and parsing floats does), so only a tolerant weld joins
+// them.
 Mesh splitPerFace(const Mesh& in, double jitter) {
   Mesh out;
   for (const glm::uvec3& t : in.triangles) {
@@ -106,7 +107,8 @@ TEST(ProxyMeshChecks, SplitVerticesAreWelded) {
   const std::vector<ProxyMeshFinding> unwelded = check(split, kCentre, exactOnly);
   ASSERT_THAT(rules(unwelded), ElementsAre("proxy_not_closed", "proxy_separate_pieces"));
   EXPECT_EQ(unwelded[0].value, 36.0);
-  EXPECT_THAT(unwelded[0].message, HasSubstr("36 open edges (used by one face only) around 12 holes"));
+  EXPECT_THAT(unwelded[0].message,
+              HasSubstr("36 open edges (used by one face only) around 12 holes"));
   EXPECT_EQ(unwelded[1].value, 12.0);
 }
 
@@ -166,16 +168,17 @@ TEST(ProxyMeshChecks, FarAwayAndSmallCubesHaveNoFindings) {
     SCOPED_TRACE(::testing::Message() << "scale " << c.scale << " offset " << c.offset.x);
     const Mesh box = splitPerFace(transformed(unitCube(), c.scale, turn, c.offset), 1e-9 * c.scale);
     // 1 mm inside the x = 1 face (faces 6 and 7), far from the tolerance of either size.
-    const glm::dvec3 inside = c.offset + turn * (c.scale * glm::dvec3(1.0, 0.5, 0.5) -
-                                                 glm::dvec3(0.001, 0.0, 0.0));
+    const glm::dvec3 inside =
+        c.offset + turn * (c.scale * glm::dvec3(1.0, 0.5, 0.5) - glm::dvec3(0.001, 0.0, 0.0));
     EXPECT_THAT(rules(check(box, inside)), IsEmpty());
-    const glm::dvec3 outside = c.offset + turn * (c.scale * glm::dvec3(1.0, 0.5, 0.5) +
-                                                  glm::dvec3(0.001, 0.0, 0.0));
+    const glm::dvec3 outside =
+        c.offset + turn * (c.scale * glm::dvec3(1.0, 0.5, 0.5) + glm::dvec3(0.001, 0.0, 0.0));
     const std::vector<ProxyMeshFinding> missed = check(box, outside);
     ASSERT_THAT(rules(missed), ElementsAre("proxy_misses_capture"));
     EXPECT_NEAR(missed[0].value, 0.001, 1e-9);
     // Faces 6 and 7 are both on that side; rounding picks one.
-    EXPECT_THAT(missed[0].message, ContainsRegex(" m outside the proxy, beyond the plane of face [67] "));
+    EXPECT_THAT(missed[0].message,
+                ContainsRegex(" m outside the proxy, beyond the plane of face [67] "));
   }
 }
 
@@ -217,8 +220,9 @@ TEST(ProxyMeshChecks, FlippedFaceIsWoundAgainstItsNeighbours) {
   const std::vector<ProxyMeshFinding> findings = check(m, kCentre);
   ASSERT_THAT(rules(findings), ElementsAre("proxy_not_oriented"));
   EXPECT_EQ(findings[0].value, 1.0);
-  EXPECT_EQ(findings[0].message,
-            "1 face is wound against its neighbours: face 7; the first is face 7 (vertices 1, 5, 6)");
+  EXPECT_EQ(
+      findings[0].message,
+      "1 face is wound against its neighbours: face 7; the first is face 7 (vertices 1, 5, 6)");
 }
 
 TEST(ProxyMeshChecks, AllFacesFlippedPointInwards) {
@@ -239,9 +243,10 @@ TEST(ProxyMeshChecks, LShapedPrismHasConcaveEdge) {
   ASSERT_THAT(rules(findings), ElementsAre("proxy_concave_edge"));
   EXPECT_NEAR(findings[0].value, 90.0, 1e-9);
   EXPECT_EQ(findings[0].limit, 0.5);
-  EXPECT_EQ(findings[0].message,
-            "1 edge bends inwards; the worst, from vertex 3 (1, 1, 0) to vertex 9 (1, 1, 1) between "
-            "faces 12 and 15, bends inwards by 90 degrees");
+  EXPECT_EQ(
+      findings[0].message,
+      "1 edge bends inwards; the worst, from vertex 3 (1, 1, 0) to vertex 9 (1, 1, 1) between "
+      "faces 12 and 15, bends inwards by 90 degrees");
 }
 
 TEST(ProxyMeshChecks, ShallowBendWithinToleranceIsConvex) {
@@ -331,8 +336,9 @@ TEST(ProxyMeshChecks, SeparatePiecesAreReported) {
   const std::vector<ProxyMeshFinding> findings = check(m, kCentre);
   ASSERT_THAT(rules(findings), ElementsAre("proxy_separate_pieces", "proxy_misses_capture"));
   EXPECT_EQ(findings[0].value, 2.0);
-  EXPECT_EQ(findings[0].message,
-            "the mesh is 2 separate pieces that share no edge; the first face of each: faces 0 and 12");
+  EXPECT_EQ(
+      findings[0].message,
+      "the mesh is 2 separate pieces that share no edge; the first face of each: faces 0 and 12");
   EXPECT_EQ(findings[1].value, 2.5);  // beyond the second cube's x = 3 face
 }
 
@@ -352,7 +358,8 @@ TEST(ProxyMeshChecks, OpenSpiralIsNotConvex) {
   }
   const std::vector<ProxyMeshFinding> findings = check(m, {0.0, 0.0, 0.5});
   ASSERT_THAT(rules(findings), ElementsAre("proxy_not_closed", "proxy_not_convex"));
-  EXPECT_THAT(findings[1].message, HasSubstr("every edge bends outwards, yet the surface overlaps itself: vertex "));
+  EXPECT_THAT(findings[1].message,
+              HasSubstr("every edge bends outwards, yet the surface overlaps itself: vertex "));
 }
 
 TEST(ProxyMeshChecks, FlatMeshEnclosesNoVolume) {
@@ -367,9 +374,10 @@ TEST(ProxyMeshChecks, CaptureOutsideGivesTheDistance) {
   const std::vector<ProxyMeshFinding> findings = check(unitCube(), {2.0, 0.5, 0.5});
   ASSERT_THAT(rules(findings), ElementsAre("proxy_misses_capture"));
   EXPECT_EQ(findings[0].value, 1.0);
-  EXPECT_EQ(findings[0].message,
-            "the capture point (2, 0.5, 0.5) lies 1 m outside the proxy, beyond the plane of face 6 "
-            "(vertices 1, 2, 6)");
+  EXPECT_EQ(
+      findings[0].message,
+      "the capture point (2, 0.5, 0.5) lies 1 m outside the proxy, beyond the plane of face 6 "
+      "(vertices 1, 2, 6)");
 }
 
 TEST(ProxyMeshChecks, CaptureOnAFaceIsOnTheBoundary) {
@@ -382,7 +390,8 @@ TEST(ProxyMeshChecks, CaptureOnAFaceIsOnTheBoundary) {
             "of face 6 (vertices 1, 2, 6); it must be strictly inside");
   // Just inside the tolerance (1e-6 of the 1.73 m diagonal) is still on the boundary; beyond it
   // is inside.
-  EXPECT_THAT(rules(check(unitCube(), {1.0 - 1e-6, 0.5, 0.5})), ElementsAre("proxy_misses_capture"));
+  EXPECT_THAT(rules(check(unitCube(), {1.0 - 1e-6, 0.5, 0.5})),
+              ElementsAre("proxy_misses_capture"));
   EXPECT_THAT(rules(check(unitCube(), {1.0 - 1e-5, 0.5, 0.5})), IsEmpty());
 }
 
@@ -426,7 +435,8 @@ TEST(ProxyMeshChecks, ConvexProxyPlaneMovedInLeavesVerticesOutside) {
   const std::vector<ProxyMeshFinding> findings = checkConvexProxy(proxy, {3.0, -2.0, 1.5});
   ASSERT_THAT(rules(findings), ElementsAre("proxy_face_off_planes", "proxy_vertex_outside_planes"));
   EXPECT_NEAR(findings[1].value, 0.25, 1e-12);
-  EXPECT_THAT(findings[1].message, HasSubstr("4 vertices lie outside the proxy's planes; the worst, vertex "));
+  EXPECT_THAT(findings[1].message,
+              HasSubstr("4 vertices lie outside the proxy's planes; the worst, vertex "));
   EXPECT_THAT(findings[1].message, HasSubstr(" m outside plane 0 (normal "));
 }
 

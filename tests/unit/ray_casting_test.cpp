@@ -3,8 +3,8 @@
 #include "geometry/raycast/level_ray_caster.h"
 
 #include <gtest/gtest.h>
-#include <glm/geometric.hpp>
 #include <tbb/global_control.h>
+#include <glm/geometric.hpp>
 
 #include <cmath>
 #include <cstring>

@@ -8,10 +8,10 @@
 
 #include <tbb/global_control.h>
 
+#include <unistd.h>
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <unistd.h>
 
 namespace probeproxy::cli {
 
@@ -36,21 +36,24 @@ int runBuild(const BuildOptions& o) {
   const LevelRayCaster rayCaster(level);
 
   const bool terminal = ::isatty(STDERR_FILENO) != 0;
-  const std::vector<ProbeProxyBuild> builds = buildSceneProxies(
-      scene, rayCaster, o.proxy, [&](std::size_t done, std::size_t total) {
-        if (terminal) std::cerr << "\rprobeproxy build: " << done << "/" << total << " probes" << std::flush;
+  const std::vector<ProbeProxyBuild> builds =
+      buildSceneProxies(scene, rayCaster, o.proxy, [&](std::size_t done, std::size_t total) {
+        if (terminal)
+          std::cerr << "\rprobeproxy build: " << done << "/" << total << " probes" << std::flush;
       });
   if (terminal) std::cerr << "\n";
 
   writeRuntimeExport(scene, builds, o.out);
   for (const ProbeProxyBuild& b : builds) {
-    for (const std::string& finding : b.findings) std::cerr << "probe " << b.probe << ": " << finding << "\n";
+    for (const std::string& finding : b.findings)
+      std::cerr << "probe " << b.probe << ": " << finding << "\n";
   }
   if (o.json) {
     std::cout << buildReportJson(builds);
   } else {
     if (o.report) printBuildTable(std::cout, builds);
-    std::cout << "wrote " << (std::filesystem::path(o.out) / "proxies.json").string() << " and proxies.glb\n";
+    std::cout << "wrote " << (std::filesystem::path(o.out) / "proxies.json").string()
+              << " and proxies.glb\n";
   }
   return 0;
 }
@@ -61,20 +64,26 @@ void addProxyOptions(CLI::App* verb, BuildOptions& o) {
   verb->add_flag("--json", o.json, "print the build report as JSON on stdout");
   verb->add_option("--tolerance-deg", o.proxy.toleranceDeg,
                    "keep the fewest planes whose mirror_floor p95 angular error is under this")
-      ->capture_default_str()->check(CLI::PositiveNumber);
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   verb->add_option("--max-planes", o.proxy.maxPlanes, "never keep more planes than this")
-      ->capture_default_str()->check(CLI::Range(4, 256));
+      ->capture_default_str()
+      ->check(CLI::Range(4, 256));
   verb->add_option("--max-miss-rate", o.proxy.maxMissRate,
                    "share of visible samples a kept proxy may miss")
-      ->capture_default_str()->check(CLI::Range(0.0, 1.0));
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
   verb->add_option("--face-size", o.proxy.depthFaceSize, "depth cube face size in texels")
-      ->capture_default_str()->check(CLI::Range(8, 2048));
+      ->capture_default_str()
+      ->check(CLI::Range(8, 2048));
   verb->add_option("--samples", o.proxy.samples.targetSamples, "reflection samples per set")
-      ->capture_default_str()->check(CLI::Range(64, 1000000));
+      ->capture_default_str()
+      ->check(CLI::Range(64, 1000000));
   verb->add_flag("--regenerate", o.proxy.regenerate,
                  "generate a proxy also where the scene authors one (which is measured beside)");
   verb->add_option("--threads", o.threads, "worker threads (0: all cores)")
-      ->capture_default_str()->check(CLI::NonNegativeNumber);
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
 }
 
 }  // namespace
@@ -91,8 +100,9 @@ Verb addExportVerb(CLI::App& app) {
   auto o = std::make_shared<BuildOptions>();
   o->report = false;
   CLI::App* exportVerb = app.add_subcommand(
-      "export", "Write proxies.json and proxies.glb for the game runtime: authored proxies as "
-                "they are, `auto` ones generated");
+      "export",
+      "Write proxies.json and proxies.glb for the game runtime: authored proxies as "
+      "they are, `auto` ones generated");
   addProxyOptions(exportVerb, *o);
   return {exportVerb, [o] { return runBuild(*o); }};
 }

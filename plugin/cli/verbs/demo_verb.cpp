@@ -4,8 +4,8 @@
 #include "core/cube/write_depth_cube.h"
 #include "geometry/build/build_scene_proxies.h"
 #include "geometry/builtin/box_room.h"
-#include "geometry/export/runtime_export.h"
 #include "geometry/builtin/builtin_corridor.h"
+#include "geometry/export/runtime_export.h"
 #include "geometry/level/load_level.h"
 #include "geometry/level/write_level_mesh.h"
 #include "geometry/raycast/capture_depth_cube.h"
@@ -92,8 +92,8 @@ int runDemo(const DemoOptions& o) {
   const std::vector<ProbeProxyBuild> builds = buildSceneProxies(scene, rayCaster, options);
   printBuildTable(std::cout, builds);
   writeRuntimeExport(scene, builds, out / "export");
-  std::cout << "exported the proxies for the runtime: " << (out / "export" / "proxies.json").string()
-            << " and proxies.glb\n";
+  std::cout << "exported the proxies for the runtime: "
+            << (out / "export" / "proxies.json").string() << " and proxies.glb\n";
 
   std::cout << "not yet in the demo: correction methods (issue 4), blending and validation "
                "(issue 5), benchmark charts (issue 6)\n"
@@ -109,7 +109,8 @@ Verb addDemoVerb(CLI::App& app) {
       "demo", "Run the main job end to end on the built-in level and say what it did");
   demo->add_option("--out", o->out, "output folder")->capture_default_str();
   demo->add_option("--face-size", o->faceSize, "depth cube face size in texels")
-      ->capture_default_str()->check(CLI::Range(8, 2048));
+      ->capture_default_str()
+      ->check(CLI::Range(8, 2048));
   return {demo, [o] { return runDemo(*o); }};
 }
 

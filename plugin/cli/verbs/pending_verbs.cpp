@@ -33,15 +33,17 @@ std::vector<Verb> addPendingVerbs(CLI::App& app) {
   static PendingOptions o;
   std::vector<Verb> verbs;
 
-  CLI::App* validate = app.add_subcommand(
-      "validate", "Check authored proxies and influence volumes against the level "
-                  "(exit 0 clean, 1 findings, 2 bad input)");
+  CLI::App* validate =
+      app.add_subcommand("validate",
+                         "Check authored proxies and influence volumes against the level "
+                         "(exit 0 clean, 1 findings, 2 bad input)");
   validate->add_option("scene", o.scene, "scene file (*.scene.json)")->required();
   validate->add_flag("--json", o.json, "print the findings as JSON on stdout");
   verbs.push_back(pendingVerb(validate, "validation of artist volumes", 5));
 
   CLI::App* correct = app.add_subcommand(
-      "correct", "Write a parallax-corrected cubemap (EXR) for a probe, camera and reflection plane");
+      "correct",
+      "Write a parallax-corrected cubemap (EXR) for a probe, camera and reflection plane");
   correct->add_option("scene", o.scene, "scene file (*.scene.json)")->required();
   correct->add_option("--probe", o.probe, "probe name")->required();
   correct->add_option("--camera", o.camera, "camera position X,Y,Z")->required();
