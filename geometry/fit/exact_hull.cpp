@@ -4,6 +4,7 @@
 #include "geometry/fit/exact_hull.h"
 
 #include "geometry/fit/fit_error.h"
+#include "geometry/fit/union_find.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -53,19 +54,6 @@ using Triangle = std::array<std::uint32_t, 3>;
 bool lexicographicLess(const glm::dvec3& a, const glm::dvec3& b) {
   return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
 }
-
-struct FlatRegions {  // union-find over triangles
-  std::vector<std::uint32_t> parent;
-  explicit FlatRegions(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-  std::uint32_t find(std::uint32_t i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  }
-  void unite(std::uint32_t a, std::uint32_t b) {
-    a = find(a), b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-};
 
 // The corners of a flat region of hull triangles (all in one plane): its convex polygon with
 // no corner on a side, counter-clockwise seen from outside like the triangles, starting at the
@@ -239,7 +227,7 @@ TriangleHull convexHull3(std::span<const glm::dvec3> points, bool withSourceInde
   // sort corners by position and triangles by corners, so that the same points give the same
   // hull, bit for bit (the facet merging sums areas in this order, the box polish takes the
   // first of equals, the polytope of planes solves corners from these triangles).
-  FlatRegions regions(meshFaceCount);
+  UnionFind regions(meshFaceCount);
   bool anyFlat = false;
   for (std::uint32_t f = 0; f < meshFaceCount; ++f) {
     const Triangle& t = meshTriangles[f];

@@ -2,6 +2,7 @@
 
 #include "geometry/fit/exact_hull.h"
 #include "geometry/fit/fit_error.h"
+#include "geometry/fit/union_find.h"
 
 #include <glm/geometric.hpp>
 
@@ -85,19 +86,6 @@ void checkPlanes(const std::vector<ProxyPlane>& planes, glm::dvec3 interior) {
     }
   }
 }
-
-struct UnionFind {
-  std::vector<std::uint32_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-  std::uint32_t find(std::uint32_t i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  }
-  void unite(std::uint32_t a, std::uint32_t b) {
-    a = find(a), b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-};
 
 using Triple = std::array<std::size_t, 3>;
 
@@ -264,7 +252,7 @@ ConvexProxy polytopeFromPlanes(std::vector<ProxyPlane> planes, glm::dvec3 interi
   // `mergeMeters`, and place each at the best conditioned solve of three of the planes that
   // meet there (whichever triangles the dual hull made of them).
   const double mergeMeters = 1e-9 * sizeMeters;
-  UnionFind corners(cornerCount);
+  fit::UnionFind corners(cornerCount);
   for (std::size_t t = 0; t < cornerCount; ++t) {
     for (std::uint32_t u : dual.neighbors[t]) {
       if (u > t && glm::distance(fromInterior[t], fromInterior[u]) <= mergeMeters) {
