@@ -124,8 +124,7 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
   // Fit on one sample set and report on others drawn with other seeds, so the figures are not
   // flattered by fitting to the very samples they are measured on.
   t = Clock::now();
-  ReflectionSampleOptions fitOptions = o.samples;
-  fitOptions.seed = o.samples.seed;
+  const ReflectionSampleOptions& fitOptions = o.samples;
   ReflectionSampleOptions reportOptions = o.samples;
   reportOptions.seed = o.samples.seed + 1000;
   // Fitting sees every surface, not just floors: a proxy tuned to floor reflections alone
@@ -256,7 +255,15 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
     try {
       *convex = polytopeFromPlanes(convex->planes, capture);
     } catch (const FitError& e) {
-      build.findings.push_back(std::string("the kept proxy has no boundary mesh: ") + e.what());
+      // Without corners the runtime could not draw or load it: keep the fitted box instead.
+      build.findings.push_back(std::string("the kept proxy has no boundary mesh, keeping the "
+                                           "box instead: ") +
+                               e.what());
+      const auto box = std::find_if(build.candidates.begin(), build.candidates.end(),
+                                    [](const ProxyCandidate& c) { return c.kind == "aabb"; });
+      build.kept = box == build.candidates.end()
+                       ? 0
+                       : static_cast<std::size_t>(box - build.candidates.begin());
     }
   }
   if (!strictlyContains(build.candidates[build.kept].shape, capture)) {
