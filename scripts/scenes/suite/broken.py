@@ -153,7 +153,7 @@ JSON itself.
 | `bad_fields.scene.json` | `valid_room.obj` | `$.probes[0].influence.radius` is -2 (sphere influence), `$.probes[1]` has no `capture` | exit 2, one line naming the JSON path, e.g. `bad_fields.scene.json: $.probes[0].influence.radius: expected a positive number, got -2` |
 | `syntax_error.scene.json` | - | the JSON text is cut off in the middle of a probe | exit 2, one line naming the file and the line/column |
 | `unsupported_version.scene.json` | `valid_room.obj` | `"probeproxy_scene": 99` | exit 2, one line naming the field |
-| `probe_outside.scene.json` | `valid_room.obj` | the file is well formed, but probe `probe` captures at (6, 0, 1.6): outside the room, its influence volume and its proxy | loads; `validate` reports findings (exit 1) |
+| `probe_outside.scene.json` | `valid_room.obj` | the file is well formed, but probe `probe` captures at (6, 0, 1.6): outside the room, its influence volume and its proxy | loads; `build` and `export` refuse it (exit 2, one line: outside its influence volume); `validate` will report it as a finding (exit 1) |
 | `messy_but_valid.scene.json` | `messy_but_valid.obj` | non-manifold edge (4 faces on the floor diagonal 1-3), an open window hole in the +X wall, duplicate (unwelded) vertices along the -Y wall, a zero-area triangle (three copies of one point), a collinear triangle, a hexagon with collinear vertices, quads, `v/vt/vn` and `v//vn` faces, an unused vertex | loads and builds without error: real levels look like this |
 """
 
