@@ -16,6 +16,7 @@ enum class UpAxis { Y, Z };
 inline glm::dvec3 zUpFromYUp(glm::dvec3 p) { return {p.x, -p.z, p.y}; }
 inline glm::dvec3 yUpFromZUp(glm::dvec3 p) { return {p.x, p.z, -p.y}; }
 inline glm::vec3 zUpFromYUp(glm::vec3 p) { return {p.x, -p.z, p.y}; }
+inline glm::vec3 yUpFromZUp(glm::vec3 p) { return {p.x, p.z, -p.y}; }
 
 // Rotations (unit quaternions taking a local frame to the file's frame).
 glm::dquat zUpFromYUp(const glm::dquat& rotationInYUp);

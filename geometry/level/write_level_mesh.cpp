@@ -17,7 +17,7 @@ namespace probeproxy {
 namespace {
 
 glm::vec3 toFileFrame(glm::vec3 world, UpAxis fileUp) {
-  return fileUp == UpAxis::Y ? glm::vec3(world.x, world.z, -world.y) : world;
+  return fileUp == UpAxis::Y ? yUpFromZUp(world) : world;
 }
 
 // One aiMesh per LevelPart, so names survive a round trip; parts cover the triangles in order.
