@@ -211,13 +211,19 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
       if (areas[i] >= 0.002 * totalArea) planes.push_back(hull->planes[i]);
     }
     if (!isBounded(planes)) planes = hull->planes;
+    // A hull facet on a wall passes through three texel hits and tilts by up to a texel's
+    // angle; the wall's own plane (every texel on it averaged) is exact. So a wall plane
+    // replaces the hull facets it matches, and the proxy's walls coincide with the level's.
     for (const ProxyPlane& p :
          visibleSurfacePlanes(hits, capture, o.depthFaceSize, 10 * tolerance)) {
-      const bool onHull = std::any_of(planes.begin(), planes.end(), [&](const ProxyPlane& q) {
+      const auto matches = [&](const ProxyPlane& q) {
         return glm::dot(p.normal, q.normal) > 0.9998 &&
                std::abs(p.offsetMeters - q.offsetMeters) < 10 * tolerance;
-      });
-      if (!onHull) planes.push_back(p);
+      };
+      const std::vector<ProxyPlane> before = planes;
+      std::erase_if(planes, matches);
+      planes.push_back(p);
+      if (!isBounded(planes)) planes = before;
     }
     // A proxy may reach past what the probe sees (an open end of a corridor), but not far:
     // twice the farthest point seen.

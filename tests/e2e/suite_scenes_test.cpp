@@ -144,6 +144,16 @@ TEST_P(SuiteLevel, BuiltProxiesAreValidAndAccurate) {
       EXPECT_LE(kept.error.p95Deg, artist.p95Deg + 0.01) << b.probe;
       EXPECT_LE(kept.error.medianDeg, artist.medianDeg + 0.005) << b.probe;
       EXPECT_LT(planeCount(kept.shape), 32) << b.probe;
+      // Where one convex room does model what the probe sees (an L's arm, a U's leg, the
+      // attic), the kept proxy's planes are the level's own walls, not texel-tilted hull
+      // facets: float noise only, where the artist box is off by tens of degrees.
+      const bool convexPart = b.probe == "arm_x" || b.probe == "arm_y" ||
+                              b.probe == "ground_south" || b.probe == "upper_north" ||
+                              b.probe.rfind("attic_", 0) == 0;
+      if (convexPart) {
+        EXPECT_LT(kept.error.p95Deg, 1e-3) << b.probe;
+        EXPECT_GT(artist.p95Deg, 20.0) << b.probe;
+      }
     }
   }
 
