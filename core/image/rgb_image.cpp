@@ -1,0 +1,45 @@
+#include "core/image/rgb_image.h"
+
+#include "core/errors/input_error.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+
+namespace probeproxy {
+
+RgbImage readRgbImage(const std::filesystem::path& file) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec)) throw InputError(file, "image file is missing");
+  std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(file.string());
+  if (!in) throw InputError(file, "cannot read image: " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = in->spec();
+  if (spec.depth > 1) throw InputError(file, "is a volume image, not a 2D image");
+  if (spec.nchannels != 1 && spec.nchannels < 3) {
+    throw InputError(file, "has " + std::to_string(spec.nchannels) +
+                               " channels, expected RGB (3 or more) or grey (1)");
+  }
+  const int channels = spec.nchannels == 1 ? 1 : 3;
+  const std::size_t count = static_cast<std::size_t>(spec.width) * spec.height;
+  std::vector<float> read(count * channels);
+  if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, read.data())) {
+    throw InputError(file, "cannot read image: " + in->geterror());
+  }
+  RgbImage image{spec.width, spec.height, std::vector<float>(count * 3)};
+  for (std::size_t i = 0; i < count; ++i) {
+    for (int k = 0; k < 3; ++k) {
+      const float value = read[i * channels + (channels == 1 ? 0 : k)];
+      if (!std::isfinite(value)) {
+        throw InputError(file, "holds a NaN or infinite value at pixel (" +
+                                   std::to_string(i % spec.width) + ", " +
+                                   std::to_string(i / spec.width) + ")");
+      }
+      image.rgb[i * 3 + k] = value;
+    }
+  }
+  return image;
+}
+
+}  // namespace probeproxy

@@ -1,0 +1,33 @@
+#include "geometry/mirror_view/radiance_lookups.h"
+
+#include "core/cube/cubemap_sampling.h"
+#include "core/parallax/prepared_proxy.h"
+
+namespace probeproxy {
+
+RadianceLookup proxyRadianceLookup(const Cubemap& cube, const ProxyShape& shape,
+                                   glm::dvec3 captureMeters) {
+  return [&cube, proxy = prepareProxy(shape, captureMeters)](
+             glm::dvec3 x, glm::dvec3 r) -> std::optional<glm::vec3> {
+    const seed::Lookup d = lookupScalar(proxy, glm::vec3(x), glm::vec3(r));
+    if (d.miss) return std::nullopt;
+    return sampleBilinear(cube, d.direction, 0.0f);
+  };
+}
+
+RadianceLookup trueHitRadianceLookup(const Cubemap& cube, const LevelRayCaster& level,
+                                     glm::dvec3 captureMeters) {
+  return [&cube, &level, captureMeters](glm::dvec3 x, glm::dvec3 r) -> std::optional<glm::vec3> {
+    Ray ray;
+    ray.originMeters = x;
+    ray.direction = glm::vec3(r);
+    // Leave the mirror plane the ray starts on.
+    ray.tMin = 1e-5f;
+    const RayHit hit = level.firstHit(ray);
+    if (!hit.hit()) return sampleBilinear(cube, glm::vec3(r), 0.0f);
+    const glm::dvec3 h = x + static_cast<double>(hit.t) * r;
+    return sampleBilinear(cube, glm::vec3(h - captureMeters), 0.0f);
+  };
+}
+
+}  // namespace probeproxy
