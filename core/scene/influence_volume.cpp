@@ -1,6 +1,7 @@
 #include "core/scene/influence_volume.h"
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/quaternion.hpp>
 
 namespace probeproxy {
@@ -28,6 +29,15 @@ void influenceBounds(const InfluenceVolume& influence, glm::dvec3& lo, glm::dvec
   const auto& sphere = std::get<SphereInfluence>(influence);
   lo = sphere.centerMeters - glm::dvec3(sphere.radiusMeters);
   hi = sphere.centerMeters + glm::dvec3(sphere.radiusMeters);
+}
+
+double influenceCubicMeters(const InfluenceVolume& influence) {
+  if (const auto* box = std::get_if<BoxInfluence>(&influence)) {
+    const glm::dvec3& h = box->halfExtentsMeters;
+    return 8.0 * h.x * h.y * h.z;
+  }
+  const double r = std::get<SphereInfluence>(influence).radiusMeters;
+  return 4.0 / 3.0 * glm::pi<double>() * r * r * r;
 }
 
 }  // namespace probeproxy

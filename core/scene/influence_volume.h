@@ -35,4 +35,7 @@ bool insideInfluence(const InfluenceVolume& influence, glm::dvec3 pointMeters);
 void influenceBounds(const InfluenceVolume& influence, glm::dvec3& minMeters,
                      glm::dvec3& maxMeters);
 
+// The outer range's volume, cubic metres (blending: the smaller volume dominates a tie).
+double influenceCubicMeters(const InfluenceVolume& influence);
+
 }  // namespace probeproxy

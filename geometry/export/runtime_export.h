@@ -80,6 +80,7 @@
 // rounded to 1e-9 only where that reads back to the same metres); engine numbers are rounded
 // to 1e-9 of the engine's unit. Same input, same bytes.
 
+#include "core/blend/enlighten_distance.h"
 #include "core/measures/error_figures.h"
 #include "core/proxy/proxy_candidate.h"
 #include "core/proxy/proxy_shape.h"
@@ -101,7 +102,6 @@ inline constexpr int kRuntimeExportVersion = 1;
 inline constexpr char kRuntimeExportFormatId[] = "probeproxy_runtime";
 inline constexpr char kProxiesJsonName[] = "proxies.json";
 inline constexpr char kProxiesGlbName[] = "proxies.glb";
-inline constexpr double kEnlightenEpsilon = 1e-6;  // seed 004: 1 / (epsilon + distSq)
 
 struct EnlightenBlend {
   double epsilon = kEnlightenEpsilon;
