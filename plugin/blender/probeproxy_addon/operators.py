@@ -1,0 +1,366 @@
+# The add-on's operators, all under bpy.ops.probeproxy.*. Each one calls the compiled library
+# (native.module) with plain data and turns its InputError into a report the user sees.
+
+import json
+import math
+import os
+
+import bpy
+from bpy.props import BoolProperty, StringProperty
+from bpy_extras.io_utils import ExportHelper, ImportHelper
+from mathutils import Matrix
+
+from . import native, scene_io
+
+
+def _collection(scene, name):
+    coll = bpy.data.collections.get(name)
+    if coll is None:
+        coll = bpy.data.collections.new(name)
+    if coll.name not in scene.collection.children:
+        scene.collection.children.link(coll)
+    return coll
+
+
+class _NeedsModule:
+    @classmethod
+    def poll(cls, context):
+        if native.module is None:
+            cls.poll_message_set(native.problem)
+            return False
+        return True
+
+
+def _run(operator, work):
+    """Runs `work()`; bad input becomes an error report with the library's message."""
+    try:
+        return work()
+    except native.module.InputError as e:
+        operator.report({"ERROR"}, str(e))
+        return {"CANCELLED"}
+
+
+def _build_options(settings):
+    return {"tolerance_deg": scene_io.f32(settings.tolerance_deg),
+            "max_planes": settings.max_planes, "regenerate": settings.regenerate}
+
+
+def _level_objects(context):
+    chosen = [o for o in context.selected_objects if scene_io.is_level_object(o)]
+    return chosen or [o for o in context.scene.objects if scene_io.is_level_object(o)]
+
+
+def _with_progress(context, total, work):
+    wm = context.window_manager
+    wm.progress_begin(0, max(total, 1))
+    try:
+        return work(lambda done, _total: wm.progress_update(done))
+    finally:
+        wm.progress_end()
+
+
+def _proxy_mesh_object(scene, probe, result):
+    name = probe.name + "_proxy"
+    old = probe.probeproxy.proxy_object
+    if old is not None:
+        mesh = old.data
+        bpy.data.objects.remove(old)
+        if mesh is not None and mesh.users == 0:
+            bpy.data.meshes.remove(mesh)
+    data = result["mesh"]
+    if not data["vertices"]:
+        probe.probeproxy.proxy_object = None
+        return None
+    mesh = bpy.data.meshes.new(name)
+    mesh.from_pydata([tuple(v) for v in data["vertices"]], [], [tuple(t) for t in data["triangles"]])
+    mesh.update()
+    obj = bpy.data.objects.new(name, mesh)
+    obj.probeproxy.is_proxy = True
+    obj.display_type = "WIRE"
+    obj.show_in_front = True
+    obj["probeproxy_probe"] = probe.name
+    _collection(scene, "Proxies").objects.link(obj)
+    probe.probeproxy.proxy_object = obj
+    return obj
+
+
+class PROBEPROXY_OT_generate_proxies(_NeedsModule, bpy.types.Operator):
+    """Build every probe's convex proxy from the selected level objects (all level objects
+    when none is selected) and add it as a mesh in the "Proxies" collection"""
+    bl_idname = "probeproxy.generate_proxies"
+    bl_label = "Generate Proxies"
+    bl_options = {"REGISTER", "UNDO"}
+
+    def execute(self, context):
+        scene = context.scene
+        settings = scene.probeproxy
+        probes = scene_io.probes(scene)
+        if not probes:
+            self.report({"ERROR"}, "no probes: add one with Add Probe or import a scene")
+            return {"CANCELLED"}
+        objects = _level_objects(context)
+        if not objects:
+            self.report({"ERROR"}, "no level: select the level's mesh objects")
+            return {"CANCELLED"}
+
+        def work():
+            parts, used = scene_io.level_parts(context, objects)
+            results = _with_progress(context, len(probes), lambda progress: native.module.build_proxies(
+                scene_io.scene_dict(scene), scene_io.scene_anchor(scene), parts,
+                _build_options(settings), progress))
+            by_name = {p.name: p for p in probes}
+            for result in results:
+                probe = by_name[result["name"]]
+                probe.probeproxy.result_json = json.dumps(result["proxy"] | {
+                    "error": result["error"], "findings": result["findings"],
+                    "candidates": [{k: c[k] for k in ("kind", "planes", "error")}
+                                   for c in result["candidates"]]})
+                _proxy_mesh_object(scene, probe, result)
+            settings.level_used = used
+            self.report({"INFO"}, "built %d proxies from %s" % (len(results), used))
+            return {"FINISHED"}
+
+        return _run(self, work)
+
+
+class PROBEPROXY_OT_validate_volumes(_NeedsModule, bpy.types.Operator):
+    """Check the probes' proxies and influence volumes; list the findings and select the
+    probes they name"""
+    bl_idname = "probeproxy.validate_volumes"
+    bl_label = "Validate Volumes"
+    bl_options = {"REGISTER", "UNDO"}
+
+    def execute(self, context):
+        scene = context.scene
+        settings = scene.probeproxy
+        if not hasattr(native.module, "validate_scene"):
+            self.report({"ERROR"}, "this build of probeproxy has no validation yet")
+            return {"CANCELLED"}
+        objects = _level_objects(context)
+
+        def work():
+            parts = scene_io.level_parts(context, objects)[0] if objects else None
+            findings = native.module.validate_scene(
+                scene_io.scene_dict(scene), scene_io.scene_anchor(scene), parts)
+            settings.findings.clear()
+            for f in findings:
+                item = settings.findings.add()
+                for key in ("probe", "rule", "severity", "message", "hint"):
+                    setattr(item, key, str(f.get(key) or ""))
+                item.value = json.dumps(f.get("value"))
+                item.limit = json.dumps(f.get("limit"))
+            settings.validated = True
+            named = {f.get("probe") for f in findings}
+            for obj in context.view_layer.objects:
+                obj.select_set(obj.probeproxy.is_probe and obj.name in named)
+            self.report({"WARNING" if findings else "INFO"}, "%d finding(s)" % len(findings))
+            return {"FINISHED"}
+
+        return _run(self, work)
+
+
+class PROBEPROXY_OT_export_proxies(_NeedsModule, bpy.types.Operator):
+    """Write proxies.json and proxies.glb for the game runtime into a folder"""
+    bl_idname = "probeproxy.export_proxies"
+    bl_label = "Export Proxies"
+    bl_options = {"REGISTER"}
+
+    directory: StringProperty(name="Folder", subtype="DIR_PATH")
+
+    def invoke(self, context, event):
+        context.window_manager.fileselect_add(self)
+        return {"RUNNING_MODAL"}
+
+    def execute(self, context):
+        scene = context.scene
+        objects = _level_objects(context)
+        if not objects:
+            self.report({"ERROR"}, "no level: select the level's mesh objects")
+            return {"CANCELLED"}
+        out = bpy.path.abspath(self.directory)
+
+        def work():
+            parts, used = scene_io.level_parts(context, objects)
+            results = _with_progress(context, len(scene_io.probes(scene)), lambda progress: native.module.export_proxies(
+                scene_io.scene_dict(scene), scene_io.scene_anchor(scene), out, parts,
+                _build_options(scene.probeproxy), progress))
+            self.report({"INFO"}, "wrote %d probes to %s" % (
+                len(results), os.path.join(out, "proxies.json")))
+            return {"FINISHED"}
+
+        return _run(self, work)
+
+
+def _import_level_mesh(path, up, meters_per_unit):
+    """Imports one level mesh with Blender's importer; returns the objects it made."""
+    before = set(bpy.data.objects)
+    ext = os.path.splitext(path)[1].lower()
+    if ext in (".glb", ".gltf"):
+        import numpy as np  # Debian's numpy dropped np.bool; Blender 3.4's importer uses it
+        if "bool" not in vars(np):
+            np.bool = bool
+        bpy.ops.import_scene.gltf(filepath=path)
+        file_up = "Y"  # the importer turns glTF's +Y up into Blender's +Z
+    elif ext == ".obj":
+        bpy.ops.wm.obj_import(filepath=path, up_axis=up, forward_axis="NEGATIVE_Z" if up == "Y" else "Y")
+        file_up = up
+    elif ext == ".ply":
+        bpy.ops.import_mesh.ply(filepath=path, axis_up=up, axis_forward="-Z" if up == "Y" else "Y")
+        file_up = up
+    else:
+        raise native.module.InputError("%s: Blender has no importer for %s meshes" % (path, ext))
+    made = [o for o in bpy.data.objects if o not in before]
+    fix = Matrix.Scale(meters_per_unit, 4)
+    if up != file_up:  # the scene says the file's up differs from what the importer assumed
+        fix = fix @ Matrix.Rotation(math.pi / 2 if up == "Y" else -math.pi / 2, 4, "X")
+    if fix != Matrix.Identity(4):
+        for obj in made:
+            if obj.parent is None:
+                obj.matrix_world = fix @ obj.matrix_world
+    return made
+
+
+def import_scene(context, path):
+    """Reads a scene file into Blender: its level meshes (Blender's importers), one empty per
+    probe. Raises InputError for a bad scene file."""
+    path = os.path.abspath(path)
+    module = native.module
+    as_written = module.read_scene(path)
+    world = module.read_scene(path, world_frame=True)
+    scene = context.scene
+    settings = scene.probeproxy
+    level_coll = _collection(scene, "Level")
+    probe_coll = _collection(scene, "Probes")
+    folder = os.path.dirname(path)
+    depsgraph = None
+    for index, entry in enumerate(as_written["level"]):
+        entry = {"mesh": entry} if isinstance(entry, str) else entry
+        mesh_path = os.path.join(folder, entry["mesh"])
+        ext = os.path.splitext(mesh_path)[1].lower()
+        up = entry.get("up") or ("Y" if ext in (".glb", ".gltf") else as_written["up"])
+        made = _import_level_mesh(mesh_path, up, as_written.get("meters_per_unit", 1.0))
+        for obj in made:
+            for c in list(obj.users_collection):
+                c.objects.unlink(obj)
+            level_coll.objects.link(obj)
+            obj.probeproxy.level_index = index
+        context.view_layer.update()
+        depsgraph = context.evaluated_depsgraph_get()
+        for obj in made:
+            if obj.type == "MESH":
+                obj.probeproxy.level_fingerprint = scene_io.fingerprint(obj, depsgraph)
+    for order, d in enumerate(world["probes"]):
+        obj = bpy.data.objects.get(d["name"])
+        if obj is None or not obj.probeproxy.is_probe:
+            obj = bpy.data.objects.new(d["name"], None)
+            obj.empty_display_type = "PLAIN_AXES"
+            obj.empty_display_size = 0.25
+            probe_coll.objects.link(obj)
+        scene_io.set_probe_from_dict(obj, d)
+        obj.probeproxy.order = order
+    settings.scene_file = path
+    settings.file_up = as_written["up"]
+    settings.meters_per_unit = as_written.get("meters_per_unit", 1.0)
+    settings.level_json = json.dumps(as_written["level"])
+    settings.findings.clear()
+    settings.validated = False
+    return len(world["probes"])
+
+
+class PROBEPROXY_OT_import_scene(_NeedsModule, bpy.types.Operator, ImportHelper):
+    """Read a probeproxy scene file (*.scene.json): the level meshes and the probes"""
+    bl_idname = "probeproxy.import_scene"
+    bl_label = "Import Scene"
+    bl_options = {"REGISTER", "UNDO"}
+
+    filename_ext = ".json"
+    filter_glob: StringProperty(default="*.json", options={"HIDDEN"})
+
+    def execute(self, context):
+        def work():
+            count = import_scene(context, self.filepath)
+            self.report({"INFO"}, "imported %d probes from %s" % (count, self.filepath))
+            return {"FINISHED"}
+
+        return _run(self, work)
+
+
+class PROBEPROXY_OT_save_scene(_NeedsModule, bpy.types.Operator, ExportHelper):
+    """Write the probes (and the level's mesh files) as a probeproxy scene file, the one the
+    command line reads"""
+    bl_idname = "probeproxy.save_scene"
+    bl_label = "Save Scene"
+    bl_options = {"REGISTER"}
+
+    filename_ext = ".json"
+    filter_glob: StringProperty(default="*.json", options={"HIDDEN"})
+
+    def invoke(self, context, event):
+        if context.scene.probeproxy.scene_file:
+            self.filepath = bpy.path.abspath(context.scene.probeproxy.scene_file)
+        return ExportHelper.invoke(self, context, event)
+
+    def execute(self, context):
+        scene = context.scene
+        settings = scene.probeproxy
+        path = os.path.abspath(self.filepath)
+
+        def work():
+            data = scene_io.scene_dict(scene)
+            anchor = scene_io.scene_anchor(scene)
+            if not json.loads(settings.level_json or "[]"):
+                # A level authored in Blender: written beside the scene file, glTF (+Y up).
+                level_file = os.path.splitext(os.path.splitext(path)[0])[0] + "_level.glb"
+                objects = [o for o in scene.objects if scene_io.is_level_object(o)]
+                for o in context.view_layer.objects:
+                    o.select_set(o in objects)
+                bpy.ops.export_scene.gltf(filepath=level_file, export_format="GLB",
+                                          use_selection=True, export_apply=True)
+                data["level"] = [{"mesh": os.path.basename(level_file)}]
+                anchor = path
+            native.module.write_scene(data, path, anchor=anchor, up=settings.file_up,
+                                      meters_per_unit=settings.meters_per_unit)
+            settings.level_json = json.dumps(native.module.read_scene(path)["level"])
+            settings.scene_file = path
+            self.report({"INFO"}, "wrote " + path)
+            return {"FINISHED"}
+
+        return _run(self, work)
+
+
+class PROBEPROXY_OT_add_probe(bpy.types.Operator):
+    """Add a reflection probe at the 3D cursor"""
+    bl_idname = "probeproxy.add_probe"
+    bl_label = "Add Probe"
+    bl_options = {"REGISTER", "UNDO"}
+
+    def execute(self, context):
+        obj = bpy.data.objects.new("probe", None)
+        obj.empty_display_type = "PLAIN_AXES"
+        obj.empty_display_size = 0.25
+        obj.location = context.scene.cursor.location
+        obj.rotation_mode = "QUATERNION"
+        obj.probeproxy.is_probe = True
+        obj.probeproxy.order = 1 + max((p.probeproxy.order for p in scene_io.probes(context.scene)),
+                                       default=-1)
+        _collection(context.scene, "Probes").objects.link(obj)
+        for o in context.view_layer.objects:
+            o.select_set(False)
+        obj.select_set(True)
+        context.view_layer.objects.active = obj
+        return {"FINISHED"}
+
+
+classes = (PROBEPROXY_OT_generate_proxies, PROBEPROXY_OT_validate_volumes,
+           PROBEPROXY_OT_export_proxies, PROBEPROXY_OT_import_scene, PROBEPROXY_OT_save_scene,
+           PROBEPROXY_OT_add_probe)
+
+
+def register():
+    for c in classes:
+        bpy.utils.register_class(c)
+
+
+def unregister():
+    for c in reversed(classes):
+        bpy.utils.unregister_class(c)

@@ -1,0 +1,142 @@
+# The sidebar panel (3D view, N panel, tab "probeproxy"): the scene's operators, the active
+# probe's settings and its last built proxy, and the validation's findings.
+
+import json
+
+import bpy
+
+from . import native
+
+
+class PROBEPROXY_PT_main(bpy.types.Panel):
+    bl_label = "probeproxy"
+    bl_space_type = "VIEW_3D"
+    bl_region_type = "UI"
+    bl_category = "probeproxy"
+
+    def draw(self, context):
+        layout = self.layout
+        settings = context.scene.probeproxy
+        if native.module is None:
+            box = layout.box()
+            box.alert = True
+            for i, line in enumerate(_wrap(native.problem, 48)):
+                box.label(text=line, icon="ERROR" if i == 0 else "NONE")
+            return
+        col = layout.column(align=True)
+        row = col.row(align=True)
+        row.operator("probeproxy.import_scene", icon="IMPORT")
+        row.operator("probeproxy.save_scene", icon="FILE_TICK")
+        col.operator("probeproxy.add_probe", icon="LIGHTPROBE_CUBEMAP")
+        col.separator()
+        col.prop(settings, "tolerance_deg")
+        col.prop(settings, "max_planes")
+        col.prop(settings, "regenerate")
+        col.operator("probeproxy.generate_proxies", icon="MESH_ICOSPHERE")
+        col.operator("probeproxy.validate_volumes", icon="CHECKMARK")
+        col.operator("probeproxy.export_proxies", icon="EXPORT")
+        col.prop(settings, "show_volumes")
+        if settings.scene_file:
+            layout.label(text="Scene: " + bpy.path.basename(settings.scene_file))
+        if settings.level_used:
+            layout.label(text="Level: " + settings.level_used)
+
+
+class PROBEPROXY_PT_probe(bpy.types.Panel):
+    bl_label = "Probe"
+    bl_space_type = "VIEW_3D"
+    bl_region_type = "UI"
+    bl_category = "probeproxy"
+    bl_parent_id = "PROBEPROXY_PT_main"
+
+    @classmethod
+    def poll(cls, context):
+        obj = context.active_object
+        return obj is not None and obj.probeproxy.is_probe
+
+    def draw(self, context):
+        layout = self.layout
+        obj = context.active_object
+        s = obj.probeproxy
+        layout.label(text=obj.name, icon="LIGHTPROBE_CUBEMAP")
+        layout.prop(obj, "location", text="Capture")
+        layout.prop(s, "influence_shape")
+        layout.prop(s, "influence_offset")
+        if s.influence_shape == "BOX":
+            layout.prop(s, "half_extents")
+            layout.prop(s, "inner_half_extents")
+        else:
+            layout.prop(s, "radius")
+            layout.prop(s, "inner_radius")
+        layout.prop(s, "proxy_mode")
+        if s.proxy_mode == "BOX":
+            layout.prop(s, "proxy_center")
+            layout.prop(s, "proxy_half_extents")
+            layout.prop(s, "proxy_rotation")
+        elif s.proxy_mode == "SPHERE":
+            layout.prop(s, "proxy_center")
+            layout.prop(s, "proxy_radius")
+        elif s.proxy_mode == "MESH":
+            layout.prop(s, "proxy_mesh")
+        if s.result_json:
+            r = json.loads(s.result_json)
+            e = r["error"]
+            box = layout.box()
+            box.label(text="Kept: %s (%s), %d planes, %d vertices" % (
+                r["candidate"], r["kind"], r["planes"], r["vertices"]))
+            box.label(text="mirror_floor median %s / p95 %s / max %s deg" % (
+                _deg(e["median_deg"]), _deg(e["p95_deg"]), _deg(e["max_deg"])))
+            box.label(text="miss %.2f%%, occluded %.2f%%, %d samples" % (
+                100 * e["miss_rate"], 100 * e["occluded_rate"], e["samples"]))
+            for finding in r.get("findings", []):
+                for line in _wrap(finding, 48):
+                    box.label(text=line, icon="INFO")
+
+
+class PROBEPROXY_PT_findings(bpy.types.Panel):
+    bl_label = "Findings"
+    bl_space_type = "VIEW_3D"
+    bl_region_type = "UI"
+    bl_category = "probeproxy"
+    bl_parent_id = "PROBEPROXY_PT_main"
+
+    @classmethod
+    def poll(cls, context):
+        return context.scene.probeproxy.validated
+
+    def draw(self, context):
+        findings = context.scene.probeproxy.findings
+        if not findings:
+            self.layout.label(text="No findings: every volume passes", icon="CHECKMARK")
+        icons = {"error": "CANCEL", "warning": "ERROR", "info": "INFO"}
+        for f in findings:
+            box = self.layout.box()
+            box.label(text="%s: %s (%s)" % (f.probe or "scene", f.rule, f.severity),
+                      icon=icons.get(f.severity, "INFO"))
+            for line in _wrap(f.message, 48):
+                box.label(text=line)
+            if f.hint:
+                for line in _wrap("Fix: " + f.hint, 48):
+                    box.label(text=line)
+
+
+def _deg(value):
+    return "-" if value is None else "%.3f" % value
+
+
+def _wrap(text, width):
+    import textwrap
+    return textwrap.wrap(text, width) or [""]
+
+
+classes = (PROBEPROXY_PT_main, PROBEPROXY_PT_probe, PROBEPROXY_PT_findings)
+
+
+def register():
+    for c in classes:
+        bpy.utils.register_class(c)
+
+
+def unregister():
+    for c in reversed(classes):
+        bpy.utils.unregister_class(c)

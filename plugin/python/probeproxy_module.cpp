@@ -1,0 +1,279 @@
+// probeproxy_py: the library's jobs for Python (the Blender add-on), in plain data. Scenes are
+// dicts shaped as the scene file (README "Scene file"), reports are the CLI's `--json` reports
+// as dicts, meshes are lists of tuples. Bad input raises probeproxy_py.InputError (a
+// ValueError) with the library's message, which names the file and the problem. Long work runs
+// with the GIL released; progress is reported on the calling thread.
+
+#include "core/errors/input_error.h"
+#include "geometry/build/build_scene_proxies.h"
+#include "geometry/export/runtime_export.h"
+#include "geometry/level/load_level.h"
+#include "geometry/raycast/level_ray_caster.h"
+#include "geometry/scene/scene_file.h"
+#include "plugin/cli/reports/build_report.h"
+#include "plugin/python/python_level.h"
+
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <tbb/global_control.h>
+
+#include <condition_variable>
+#include <exception>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+namespace py = pybind11;
+
+namespace probeproxy::python {
+
+namespace {
+
+py::object jsonLoads(const std::string& text) {
+  return py::module_::import("json").attr("loads")(text);
+}
+
+std::string jsonDumps(const py::object& value) {
+  return py::module_::import("json").attr("dumps")(value).cast<std::string>();
+}
+
+UpAxis upAxis(const std::string& up) {
+  if (up == "Y") return UpAxis::Y;
+  if (up == "Z") return UpAxis::Z;
+  throw py::value_error("up must be \"Y\" or \"Z\", got \"" + up + "\"");
+}
+
+// The dict as the scene file it spells, read through the file reader's full validation.
+// `anchor` is the file the dict stands for: relative paths resolve against its folder and
+// errors name it. `up` / `metersPerUnit` change the frame a later write uses, not the values.
+Scene sceneFromDict(const py::dict& scene, const std::string& anchor,
+                    const std::optional<std::string>& up,
+                    const std::optional<double>& metersPerUnit) {
+  Scene parsed = parseSceneFile(jsonDumps(scene), std::filesystem::absolute(anchor));
+  if (up) parsed.fileUp = upAxis(*up);
+  if (metersPerUnit) {
+    if (!(*metersPerUnit > 0.0)) throw py::value_error("meters_per_unit must be positive");
+    parsed.metersPerUnit = *metersPerUnit;
+  }
+  return parsed;
+}
+
+py::dict sceneDict(Scene scene, bool worldFrame) {
+  if (worldFrame) {  // Blender's frame: the values as the Scene holds them
+    scene.fileUp = UpAxis::Z;
+    scene.metersPerUnit = 1.0;
+  }
+  return jsonLoads(sceneFileJson(scene));
+}
+
+ProxyBuildOptions buildOptions(const py::dict& options, int& threads) {
+  ProxyBuildOptions o;
+  for (auto [key, value] : options) {
+    const std::string name = key.cast<std::string>();
+    if (name == "tolerance_deg")
+      o.toleranceDeg = value.cast<double>();
+    else if (name == "max_planes")
+      o.maxPlanes = value.cast<int>();
+    else if (name == "max_miss_rate")
+      o.maxMissRate = value.cast<double>();
+    else if (name == "face_size")
+      o.depthFaceSize = value.cast<int>();
+    else if (name == "samples")
+      o.samples.targetSamples = value.cast<int>();
+    else if (name == "regenerate")
+      o.regenerate = value.cast<bool>();
+    else if (name == "threads")
+      threads = value.cast<int>();
+    else
+      throw py::value_error("unknown build option \"" + name + "\"");
+  }
+  return o;
+}
+
+using Progress = std::function<void(std::size_t, std::size_t)>;
+
+// Runs `work` on a worker thread with the GIL released and calls `progress(done, total)` on
+// this thread as the work reports it (Blender's progress bar may only be touched from the
+// main thread). Exceptions of either side come out here, after the worker has finished.
+template <typename Result>
+Result runWithProgress(const std::function<Result(const Progress&)>& work,
+                       const py::object& progress) {
+  std::mutex mutex;
+  std::condition_variable wake;
+  std::optional<std::pair<std::size_t, std::size_t>> pending;
+  bool finished = false;
+  std::optional<Result> result;
+  std::exception_ptr workError;
+  std::optional<py::error_already_set> callbackError;
+  {
+    py::gil_scoped_release release;
+    std::thread worker([&] {
+      try {
+        result = work([&](std::size_t done, std::size_t total) {
+          const std::lock_guard<std::mutex> lock(mutex);
+          pending = {done, total};
+          wake.notify_one();
+        });
+      } catch (...) {
+        workError = std::current_exception();
+      }
+      const std::lock_guard<std::mutex> lock(mutex);
+      finished = true;
+      wake.notify_one();
+    });
+    for (;;) {
+      std::unique_lock<std::mutex> lock(mutex);
+      wake.wait(lock, [&] { return pending.has_value() || finished; });
+      const auto report = pending;
+      pending.reset();
+      const bool last = finished;
+      lock.unlock();
+      if (report && !progress.is_none() && !callbackError) {
+        py::gil_scoped_acquire acquire;
+        try {
+          progress(report->first, report->second);
+        } catch (py::error_already_set& e) {
+          callbackError.emplace(std::move(e));
+        }
+      }
+      if (last) break;
+    }
+    worker.join();
+  }
+  if (workError) std::rethrow_exception(workError);
+  if (callbackError) throw std::move(*callbackError);
+  return std::move(*result);
+}
+
+struct SceneBuild {
+  Scene scene;
+  std::vector<ProbeProxyBuild> builds;
+};
+
+// Loads the level (the scene's own meshes when `level` is None, as the CLI does) and builds
+// every probe's proxy; writes proxies.json + proxies.glb into `outFolder` when it is given.
+SceneBuild buildScene(const py::dict& sceneData, const std::string& anchor, const py::object& level,
+                      const py::dict& options, const py::object& progress,
+                      const std::optional<std::string>& outFolder) {
+  SceneBuild sb{sceneFromDict(sceneData, anchor, std::nullopt, std::nullopt), {}};
+  int threads = 0;
+  const ProxyBuildOptions o = buildOptions(options, threads);
+  std::optional<std::vector<LevelSource>> sources;
+  if (!level.is_none()) sources = levelSources(sb.scene, level.cast<py::list>());
+
+  sb.builds = runWithProgress<std::vector<ProbeProxyBuild>>(
+      [&](const Progress& onProbeDone) {
+        std::optional<tbb::global_control> limit;
+        if (threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, threads);
+        const LevelMesh mesh = sources ? loadLevelSources(sb.scene, *sources) : loadLevel(sb.scene);
+        const LevelRayCaster rayCaster(mesh);
+        std::vector<ProbeProxyBuild> builds =
+            buildSceneProxies(sb.scene, rayCaster, o, onProbeDone);
+        if (outFolder) writeRuntimeExport(sb.scene, builds, *outFolder);
+        return builds;
+      },
+      progress);
+  return sb;
+}
+
+py::tuple vec3(const glm::dvec3& v) { return py::make_tuple(v.x, v.y, v.z); }
+
+// The CLI's `build --json` probes, each with what Blender draws: the kept proxy's planes and
+// boundary mesh in world metres (the runtime export's, so a sphere is its icosphere) and the
+// build's findings.
+py::list probeResults(const SceneBuild& sb) {
+  py::list probes = jsonLoads(cli::buildReportJson(sb.builds))["probes"];
+  const RuntimeExport runtime = makeRuntimeExport(sb.scene, sb.builds);
+  for (std::size_t i = 0; i < sb.builds.size(); ++i) {
+    py::dict probe = probes[i].cast<py::dict>();
+    const RuntimeProbe& r = runtime.probes[i];
+    py::list planes, vertices, triangles;
+    for (const ProxyPlane& p : r.convex.planes)
+      planes.append(py::make_tuple(p.normal.x, p.normal.y, p.normal.z, p.offsetMeters));
+    for (const glm::dvec3& v : r.convex.verticesMeters) vertices.append(vec3(v));
+    for (const glm::uvec3& t : r.convex.triangles) triangles.append(py::make_tuple(t.x, t.y, t.z));
+    probe["capture"] = vec3(r.captureMeters);
+    probe["plane_equations"] = planes;
+    probe["mesh"] = py::dict(py::arg("vertices") = vertices, py::arg("triangles") = triangles,
+                             py::arg("display_only") = r.meshIsDisplayOnly);
+    probe["findings"] = py::cast(sb.builds[i].findings);
+  }
+  return probes;
+}
+
+}  // namespace
+
+}  // namespace probeproxy::python
+
+PYBIND11_MODULE(probeproxy_py, m) {
+  using namespace probeproxy;
+  using namespace probeproxy::python;
+  m.doc() = "probeproxy: convex proxies for parallax-corrected cubemaps (plain-data interface)";
+  m.attr("python_version") = py::str(PY_VERSION);  // the Python this module was built for
+  m.attr("__version__") = "0.1.0";
+  py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
+
+  m.def(
+      "read_scene",
+      [](const std::string& path, bool worldFrame) {
+        Scene scene;
+        {
+          py::gil_scoped_release release;
+          scene = readSceneFile(path);
+        }
+        return sceneDict(std::move(scene), worldFrame);
+      },
+      py::arg("path"), py::arg("world_frame") = false,
+      "Reads and validates a scene file. Returns it as a dict in its canonical form; with "
+      "world_frame the numbers are Z up, metres (Blender's frame) and up/meters_per_unit say so.");
+
+  m.def(
+      "scene_json",
+      [](const py::dict& scene, const std::string& anchor, std::optional<std::string> up,
+         std::optional<double> metersPerUnit) {
+        return sceneFileJson(sceneFromDict(scene, anchor, up, metersPerUnit));
+      },
+      py::arg("scene"), py::arg("anchor"), py::arg("up") = py::none(),
+      py::arg("meters_per_unit") = py::none(),
+      "The canonical scene file bytes of a scene dict, validated as a file is. `anchor`: the "
+      "file the dict stands for (relative paths resolve against its folder); `up` and "
+      "`meters_per_unit`: the frame to write in (the dict's own by default).");
+
+  m.def(
+      "write_scene",
+      [](const py::dict& scene, const std::string& path, std::optional<std::string> anchor,
+         std::optional<std::string> up, std::optional<double> metersPerUnit) {
+        const Scene parsed = sceneFromDict(scene, anchor.value_or(path), up, metersPerUnit);
+        py::gil_scoped_release release;
+        writeSceneFile(parsed, path);
+      },
+      py::arg("scene"), py::arg("path"), py::arg("anchor") = py::none(), py::arg("up") = py::none(),
+      py::arg("meters_per_unit") = py::none(),
+      "Writes a scene dict to `path` atomically (relative paths are rewritten for the new "
+      "folder). Nothing is written if it does not validate.");
+
+  m.def(
+      "build_proxies",
+      [](const py::dict& scene, const std::string& anchor, const py::object& level,
+         const py::dict& options, const py::object& progress) {
+        return probeResults(buildScene(scene, anchor, level, options, progress, std::nullopt));
+      },
+      py::arg("scene"), py::arg("anchor"), py::arg("level") = py::none(),
+      py::arg("options") = py::dict(), py::arg("progress") = py::none(),
+      "Builds every probe's proxy. level: None for the scene's own meshes, or a list of parts "
+      "({'scene_level': i} or {'name', 'vertices', 'triangles'} in world metres). options: "
+      "tolerance_deg, max_planes, max_miss_rate, face_size, samples, regenerate, threads. "
+      "progress(done, total) is called as probes finish. Returns the `build --json` probes, "
+      "each with capture, plane_equations, mesh {vertices, triangles, display_only}, findings.");
+
+  m.def(
+      "export_proxies",
+      [](const py::dict& scene, const std::string& anchor, const std::string& outFolder,
+         const py::object& level, const py::dict& options, const py::object& progress) {
+        return probeResults(buildScene(scene, anchor, level, options, progress, outFolder));
+      },
+      py::arg("scene"), py::arg("anchor"), py::arg("out_dir"), py::arg("level") = py::none(),
+      py::arg("options") = py::dict(), py::arg("progress") = py::none(),
+      "build_proxies, then writes out_dir/proxies.json and proxies.glb (the bytes `probeproxy "
+      "build SCENE --out DIR` writes for the same scene, level and options).");
+}
