@@ -23,7 +23,6 @@ Verb pendingVerb(CLI::App* command, std::string what, int issue) {
 // parse to succeed, so the values live in one holder for the life of the program.
 struct PendingOptions {
   std::string scene, out, probe, camera, plane, at;
-  std::vector<std::string> scenes;
   bool json = false;
 };
 
@@ -58,13 +57,6 @@ std::vector<Verb> addPendingVerbs(CLI::App& app) {
   blend->add_option("--out", o.out, "output EXR")->required();
   verbs.push_back(pendingVerb(blend, "probe blending", 5));
 
-  CLI::App* bench = app.add_subcommand(
-      "bench", "Measure speed against accuracy of every correction method on levels");
-  bench->add_option("scenes", o.scenes, "scene files")->required();
-  bench->add_flag("--json", o.json, "print the results as JSON on stdout");
-  bench->add_option("--out", o.out, "folder for charts and tables");
-  verbs.push_back(pendingVerb(
-      bench, "the method benchmark (ray casting throughput: build/tests/bench/bench_raycast)", 6));
   return verbs;
 }
 

@@ -1,0 +1,115 @@
+#include "plugin/cli/bench/bench_scenes.h"
+
+#include "geometry/build/build_scene_proxies.h"
+#include "geometry/level/load_level.h"
+#include "geometry/scene/scene_file.h"
+
+#include <filesystem>
+#include <memory>
+#include <stdexcept>
+
+namespace probeproxy::cli {
+
+namespace {
+
+std::string sceneName(const std::string& file) {
+  std::string name = std::filesystem::path(file).filename().string();
+  const std::string suffix = ".scene.json";
+  if (name.size() > suffix.size() && name.ends_with(suffix))
+    name.resize(name.size() - suffix.size());
+  return name;
+}
+
+// The shading points and reflection directions of the probe's mirror_floor samples, rounded
+// to float as a shader gets them: the rays every candidate is timed on.
+LookupRays raysOf(const std::vector<ReflectionSample>& samples) {
+  LookupRays rays;
+  for (const ReflectionSample& s : samples) {
+    rays.x.push_back(float(s.xMeters.x)), rays.y.push_back(float(s.xMeters.y));
+    rays.z.push_back(float(s.xMeters.z));
+    rays.dirX.push_back(float(s.reflected.x)), rays.dirY.push_back(float(s.reflected.y));
+    rays.dirZ.push_back(float(s.reflected.z));
+  }
+  return rays;
+}
+
+struct LoadedScene {
+  std::string name;
+  Scene scene;
+  std::unique_ptr<LevelRayCaster> level;
+};
+
+}  // namespace
+
+std::vector<BenchResult> benchScenes(const std::vector<std::string>& sceneFiles,
+                                     const BenchOptions& options,
+                                     const std::function<void(std::string_view)>& progress) {
+  const auto say = [&](const std::string& line) {
+    if (progress) progress(line);
+  };
+  ProxyBuildOptions buildOptions = options.proxy;
+  buildOptions.regenerate = true;
+
+  // Bad input anywhere stops the bench before any work, so no partial report is written.
+  std::vector<LoadedScene> scenes;
+  for (const std::string& file : sceneFiles) {
+    LoadedScene loaded{sceneName(file), readSceneFile(file), nullptr};
+    loaded.level = std::make_unique<LevelRayCaster>(loadLevel(loaded.scene));
+    scenes.push_back(std::move(loaded));
+  }
+
+  std::vector<BenchResult> results;
+  // Owned here so the timing jobs can point at them until the end.
+  std::vector<std::unique_ptr<PreparedProxy>> prepared;
+  std::vector<std::unique_ptr<LookupRays>> rays;
+  std::vector<TimingJob> jobs;
+  std::vector<std::size_t> jobRow;
+  for (const LoadedScene& s : scenes) {
+    say("building proxies: " + s.name + " (" + std::to_string(s.scene.probes.size()) + " probes)");
+    const std::vector<ProbeProxyBuild> builds = buildSceneProxies(s.scene, *s.level, buildOptions);
+    for (std::size_t p = 0; p < builds.size(); ++p) {
+      const Probe& probe = s.scene.probes[p];
+      // The draw the build reports its errors on (build_probe_proxy.cpp: seed + 1000).
+      ReflectionSampleOptions drawOptions = buildOptions.samples;
+      drawOptions.seed = buildOptions.samples.seed + 1000;
+      rays.push_back(std::make_unique<LookupRays>(
+          raysOf(buildReflectionSamples(*s.level, probe, SampleSet::MirrorFloor, drawOptions))));
+      for (std::size_t c = 0; c < builds[p].candidates.size(); ++c) {
+        const ProxyCandidate& candidate = builds[p].candidates[c];
+        BenchResult row;
+        row.scene = s.name;
+        row.probe = builds[p].probe;
+        row.candidate = candidate.kind;
+        row.method = std::string(methodId(candidate.shape));
+        row.planes = planeCount(candidate.shape);
+        row.kept = c == builds[p].kept;
+        row.error = candidate.error;
+        results.push_back(std::move(row));
+        if (rays.back()->size() == 0) continue;
+        try {
+          prepared.push_back(
+              std::make_unique<PreparedProxy>(prepareProxy(candidate.shape, probe.captureMeters)));
+        } catch (const std::invalid_argument&) {
+          continue;  // a degenerate fit no shader could run: its cost stays null
+        }
+        jobs.push_back({prepared.back().get(), rays.back().get()});
+        jobRow.push_back(results.size() - 1);
+      }
+    }
+  }
+
+  say("timing " + std::to_string(jobs.size()) + " proxies, scalar and batched, " +
+      std::to_string(options.timing.repetitions) + " repetitions");
+  const std::vector<LookupTiming> timings =
+      timeLookups(jobs, options.timing, [&](std::size_t done, std::size_t total) {
+        if (done * 10 / total != (done - 1) * 10 / total)
+          say("timed " + std::to_string(done) + "/" + std::to_string(total) + " benchmarks");
+      });
+  for (std::size_t j = 0; j < jobs.size(); ++j) {
+    results[jobRow[j]].nsPerLookup = timings[j].batchedNs;
+    results[jobRow[j]].nsPerLookupScalar = timings[j].scalarNs;
+  }
+  return results;
+}
+
+}  // namespace probeproxy::cli
