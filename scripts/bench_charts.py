@@ -1,0 +1,205 @@
+#!/usr/bin/python3
+"""Charts of `probeproxy bench --json` (speed against accuracy), PNG and SVG.
+
+    /usr/bin/python3 scripts/bench_charts.py OUT/bench.json OUT [--levels corridor l_room]
+
+Writes, per level: `<level>_error_vs_cost` (mirror_floor p95 angular error, log scale,
+against ns per lookup of the batched kernel, Pareto front drawn) and `<level>_error_vs_planes`
+(the convex fits); across levels: `summary` (each method's p95 per level, and ns per lookup of
+the batched kernels against the scalar seed ports). Uses Debian's python3-matplotlib with the
+Agg backend; SVGs are byte-identical across runs (fixed hash salt, no date).
+"""
+
+import argparse
+import json
+import math
+import os
+import statistics
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+plt.rcParams["svg.hashsalt"] = "probeproxy"
+plt.rcParams["font.size"] = 9
+
+METHODS = ["infinite", "cheap_k", "sphere", "aabb", "obb", "convex", "mixing_plane",
+           "raster_convex", "pointcloud"]
+MARKERS = dict(zip(METHODS, "o^sDPX*vh"))
+# A p95 of exactly zero (an exact box) cannot sit on a log axis: it is drawn at this floor.
+ERROR_FLOOR_DEG = 1e-4
+# A candidate that misses more than this share of samples is drawn hollow and kept off the
+# Pareto front: a low p95 over the samples it does hit is not a usable proxy.
+MAX_MISS_RATE = 0.001
+
+
+def finite(v):
+    return v is not None and isinstance(v, (int, float)) and math.isfinite(v)
+
+
+def save(fig, out_dir, name):
+    for ext, meta in (("png", {"Software": None}), ("svg", {"Date": None})):
+        fig.savefig(os.path.join(out_dir, f"{name}.{ext}"), dpi=90, metadata=meta)
+    plt.close(fig)
+
+
+def pareto_front(points):
+    """Points (cost, error) no other point beats on both, by increasing cost."""
+    front, best = [], math.inf
+    for cost, err, row in sorted(points, key=lambda p: (p[0], p[1])):
+        if err < best:
+            front.append((cost, err, row))
+            best = err
+    return front
+
+
+def label(row):
+    return f"{row['probe']}: {row.get('candidate', row['method'])}"
+
+
+def error_vs_cost(level, rows, out_dir):
+    fig, ax = plt.subplots(figsize=(8, 5.5))
+    probes = sorted({r["probe"] for r in rows})
+    colors = {p: plt.cm.tab10(i % 10) for i, p in enumerate(probes)}
+    usable = []
+    for r in rows:
+        if not (finite(r["ns_per_lookup"]) and finite(r["p95_deg"])):
+            continue
+        err = max(r["p95_deg"], ERROR_FLOOR_DEG)
+        misses = finite(r["miss_rate"]) and r["miss_rate"] > MAX_MISS_RATE
+        ax.scatter(r["ns_per_lookup"], err, marker=MARKERS.get(r["method"], "o"), s=30,
+                   facecolors="none" if misses else colors[r["probe"]],
+                   edgecolors=colors[r["probe"]], linewidths=1, zorder=3)
+        if not misses:
+            usable.append((r["ns_per_lookup"], err, r))
+    front = pareto_front(usable)
+    if front:
+        ax.step([p[0] for p in front], [p[1] for p in front], where="post", color="0.3",
+                linewidth=1.2, linestyle="--", zorder=2, label="Pareto front")
+        for i, (cost, err, row) in enumerate(front):
+            ax.annotate(label(row), (cost, err), textcoords="offset points",
+                        xytext=(5, 4 + 8 * (i % 2)), fontsize=7)
+    for p in probes:
+        ax.scatter([], [], color=colors[p], marker="o", label=f"probe {p}")
+    for m in METHODS:
+        if any(r["method"] == m for r in rows):
+            ax.scatter([], [], color="0.5", marker=MARKERS[m], label=m)
+    ax.scatter([], [], facecolors="none", edgecolors="0.5",
+               label=f"misses > {100 * MAX_MISS_RATE:g}% (off the front)")
+    ax.set_yscale("log")
+    ax.set_xlabel("cost: ns per lookup (batched kernel, median)")
+    ax.set_ylabel("p95 angular error on mirror_floor (degrees, log)")
+    ax.set_title(f"{level}: error against cost of every method and proxy "
+                 f"(p95 of 0 drawn at {ERROR_FLOOR_DEG:g} deg)")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=7, loc="upper right")
+    fig.tight_layout()
+    save(fig, out_dir, f"{level}_error_vs_cost")
+
+
+def error_vs_planes(level, rows, out_dir):
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    probes = sorted({r["probe"] for r in rows})
+    for i, p in enumerate(probes):
+        fits = sorted((r["planes"], max(r["p95_deg"], ERROR_FLOOR_DEG)) for r in rows
+                      if r["probe"] == p and r["method"] == "convex" and finite(r["p95_deg"])
+                      and r.get("candidate", "") != "authored")
+        if fits:
+            ax.plot([f[0] for f in fits], [f[1] for f in fits], marker="o", markersize=3,
+                    color=plt.cm.tab10(i % 10), label=f"probe {p}")
+        box = [r for r in rows if r["probe"] == p and r.get("candidate") == "aabb"]
+        if box and finite(box[0]["p95_deg"]):
+            ax.axhline(max(box[0]["p95_deg"], ERROR_FLOOR_DEG), color=plt.cm.tab10(i % 10),
+                       linestyle=":", linewidth=0.8)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("planes of the convex fit (log)")
+    ax.set_ylabel("p95 angular error on mirror_floor (degrees, log)")
+    ax.set_title(f"{level}: error of the convex fits against their plane count\n"
+                 "(dotted: the fitted axis-aligned box of the same probe)")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    save(fig, out_dir, f"{level}_error_vs_planes")
+
+
+def best_p95(rows, method):
+    """Per probe the lowest p95 of the method's candidates (convex: at most 16 planes), then
+    the median over the level's probes."""
+    per_probe = {}
+    for r in rows:
+        if r["method"] != method or not finite(r["p95_deg"]):
+            continue
+        if r.get("candidate") == "authored" or (method == "convex" and r["planes"] > 16):
+            continue
+        if finite(r["miss_rate"]) and r["miss_rate"] > MAX_MISS_RATE:
+            continue
+        per_probe[r["probe"]] = min(per_probe.get(r["probe"], math.inf), r["p95_deg"])
+    return statistics.median(per_probe.values()) if per_probe else None
+
+
+def summary(by_level, rows, out_dir):
+    levels = sorted(by_level)
+    methods = [m for m in METHODS if any(r["method"] == m for r in rows)]
+    fig, (left, right) = plt.subplots(1, 2, figsize=(12, 5), gridspec_kw={"width_ratios": [3, 2]})
+    grid = [[best_p95(by_level[lv], m) for m in methods] for lv in levels]
+    shown = [[math.log10(max(v, ERROR_FLOOR_DEG)) if v is not None else math.nan for v in line]
+             for line in grid]
+    image = left.imshow(shown, cmap="viridis", aspect="auto", vmin=-4, vmax=2.3)
+    for i, line in enumerate(grid):
+        for j, v in enumerate(line):
+            text = "-" if v is None else (f"{v:.3f}" if v < 10 else f"{v:.0f}")
+            left.text(j, i, text, ha="center", va="center", fontsize=7,
+                      color="white" if v is None or v < 1 else "black")
+    left.set_xticks(range(len(methods)), methods, rotation=30)
+    left.set_yticks(range(len(levels)), levels)
+    left.set_title("p95 angular error (deg) on mirror_floor, best fit per probe,\n"
+                   "median over the level's probes (convex: at most 16 planes)")
+    fig.colorbar(image, ax=left, label="log10 p95 (degrees)")
+
+    batched = [statistics.median([r["ns_per_lookup"] for r in rows if r["method"] == m
+                                  and finite(r["ns_per_lookup"])] or [math.nan]) for m in methods]
+    scalar = [statistics.median([r["ns_per_lookup_scalar"] for r in rows if r["method"] == m
+                                 and finite(r.get("ns_per_lookup_scalar"))] or [math.nan])
+              for m in methods]
+    x = range(len(methods))
+    right.bar([i - 0.2 for i in x], scalar, width=0.4, label="scalar seed port", color="0.6")
+    right.bar([i + 0.2 for i in x], batched, width=0.4, label="batched kernel", color="tab:blue")
+    for i, (s, b) in enumerate(zip(scalar, batched)):
+        if finite(s) and finite(b) and b > 0:
+            right.text(i, max(s, b) * 1.05, f"{s / b:.1f}x", ha="center", fontsize=7)
+    right.set_xticks(list(x), methods, rotation=30)
+    right.set_ylabel("ns per lookup (median over all levels' rows)")
+    right.set_title("cost per lookup; labels: batched speed-up\nover the scalar port, same run")
+    right.legend(fontsize=7)
+    fig.suptitle(f"probeproxy bench: every method on {len(levels)} levels")
+    fig.tight_layout()
+    save(fig, out_dir, "summary")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("bench_json")
+    parser.add_argument("out_dir")
+    parser.add_argument("--levels", nargs="*", help="per-level charts for these only")
+    args = parser.parse_args()
+    with open(args.bench_json) as f:
+        rows = json.load(f)["results"]
+    if not rows:
+        sys.exit(f"{args.bench_json}: no results")
+    os.makedirs(args.out_dir, exist_ok=True)
+    by_level = {}
+    for r in rows:
+        by_level.setdefault(r["scene"], []).append(r)
+    for level, level_rows in sorted(by_level.items()):
+        if args.levels and level not in args.levels:
+            continue
+        error_vs_cost(level, level_rows, args.out_dir)
+        error_vs_planes(level, level_rows, args.out_dir)
+    summary(by_level, rows, args.out_dir)
+
+
+if __name__ == "__main__":
+    main()
