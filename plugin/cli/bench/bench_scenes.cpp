@@ -3,8 +3,12 @@
 #include "geometry/build/build_scene_proxies.h"
 #include "geometry/level/load_level.h"
 #include "geometry/scene/scene_file.h"
+#include "plugin/cost/instructions_per_lookup.h"
+
+#include <tbb/parallel_for.h>
 
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <stdexcept>
 
@@ -31,6 +35,28 @@ LookupRays raysOf(const std::vector<ReflectionSample>& samples) {
     rays.dirZ.push_back(float(s.reflected.z));
   }
   return rays;
+}
+
+// Instructions per lookup of the batched kernel, counted by callgrind on the cost workload of
+// the same method and plane count (the kernels are branch-free, so the count depends on these
+// alone). One count per distinct workload, two valgrind runs each, spread over the cores.
+std::map<std::string, std::optional<double>> countInstructions(
+    const std::vector<std::string>& workloads, const std::function<void(std::string)>& say) {
+  std::vector<std::optional<double>> counts(workloads.size());
+  std::vector<std::string> failures(workloads.size());
+  tbb::parallel_for(std::size_t(0), workloads.size(), [&](std::size_t i) {
+    try {
+      counts[i] = instructionsPerLookup(workloads[i], LookupPath::Batched, 1024);
+    } catch (const std::exception& e) {
+      failures[i] = e.what();  // not measured: null in the report, said on stderr
+    }
+  });
+  std::map<std::string, std::optional<double>> byName;
+  for (std::size_t i = 0; i < workloads.size(); ++i) {
+    if (!failures[i].empty()) say("instructions per lookup not measured: " + failures[i]);
+    byName[workloads[i]] = counts[i];
+  }
+  return byName;
 }
 
 struct LoadedScene {
@@ -64,6 +90,8 @@ std::vector<BenchResult> benchScenes(const std::vector<std::string>& sceneFiles,
   std::vector<std::unique_ptr<LookupRays>> rays;
   std::vector<TimingJob> jobs;
   std::vector<std::size_t> jobRow;
+  std::vector<std::string> jobWorkload;  // the cost workload of the job's method and planes
+  std::map<std::string, std::optional<double>> instructions;
   for (const LoadedScene& s : scenes) {
     say("building proxies: " + s.name + " (" + std::to_string(s.scene.probes.size()) + " probes)");
     const std::vector<ProbeProxyBuild> builds = buildSceneProxies(s.scene, *s.level, buildOptions);
@@ -94,10 +122,19 @@ std::vector<BenchResult> benchScenes(const std::vector<std::string>& sceneFiles,
         }
         jobs.push_back({prepared.back().get(), rays.back().get()});
         jobRow.push_back(results.size() - 1);
+        jobWorkload.push_back(costWorkloadName(prepared.back()->method, row.planes));
+        instructions[jobWorkload.back()] = std::nullopt;
       }
     }
   }
 
+  if (options.countInstructions) {
+    std::vector<std::string> workloads;
+    for (const auto& [name, count] : instructions) workloads.push_back(name);
+    say("counting instructions per lookup (callgrind): " + std::to_string(workloads.size()) +
+        " workloads");
+    instructions = countInstructions(workloads, say);
+  }
   say("timing " + std::to_string(jobs.size()) + " proxies, scalar and batched, " +
       std::to_string(options.timing.repetitions) + " repetitions");
   const std::vector<LookupTiming> timings =
@@ -108,6 +145,7 @@ std::vector<BenchResult> benchScenes(const std::vector<std::string>& sceneFiles,
   for (std::size_t j = 0; j < jobs.size(); ++j) {
     results[jobRow[j]].nsPerLookup = timings[j].batchedNs;
     results[jobRow[j]].nsPerLookupScalar = timings[j].scalarNs;
+    results[jobRow[j]].instructionsPerLookup = instructions[jobWorkload[j]];
   }
   return results;
 }

@@ -18,6 +18,7 @@ namespace probeproxy::cli {
 struct BenchOptions {
   ProxyBuildOptions proxy;  // regenerate is forced on: authored proxies are measured beside
   TimingOptions timing;
+  bool countInstructions = true;  // callgrind per distinct method and plane count (valgrind)
 };
 
 // Rows in scene, probe, candidate order. Every scene is read and checked before any work

@@ -59,6 +59,8 @@ Verb addBenchVerb(CLI::App& app) {
                    "reflection samples per set (the error figures and the timed rays)")
       ->capture_default_str()
       ->check(CLI::Range(64, 1000000));
+  bench->add_flag("!--no-instructions", o->bench.countInstructions,
+                  "skip instructions per lookup (callgrind); they are reported as null");
   return {bench, [o] { return runBench(*o); }};
 }
 
