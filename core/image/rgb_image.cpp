@@ -1,8 +1,10 @@
 #include "core/image/rgb_image.h"
 
 #include "core/errors/input_error.h"
+#include "core/image/write_exr.h"
 
 #include <OpenImageIO/imageio.h>
+#include <OpenImageIO/strutil.h>
 
 #include <cmath>
 #include <memory>
@@ -10,15 +12,24 @@
 
 namespace probeproxy {
 
-RgbImage readRgbImage(const std::filesystem::path& file) {
+namespace {
+
+float linearFromSrgb(float encoded) {
+  return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
+}
+
+}  // namespace
+
+RgbImage readRgbImage(const std::filesystem::path& file, const std::string& what, SrgbImages srgb) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec)) throw InputError(file, "image file is missing");
+  if (!std::filesystem::is_regular_file(file, ec))
+    throw InputError(file, what + " file is missing");
   std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(file.string());
   if (!in) throw InputError(file, "cannot read image: " + OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();
-  if (spec.depth > 1) throw InputError(file, "is a volume image, not a 2D image");
+  if (spec.depth > 1) throw InputError(file, what + " is a volume image, not a 2D image");
   if (spec.nchannels != 1 && spec.nchannels < 3) {
-    throw InputError(file, "has " + std::to_string(spec.nchannels) +
+    throw InputError(file, what + " has " + std::to_string(spec.nchannels) +
                                " channels, expected RGB (3 or more) or grey (1)");
   }
   const int channels = spec.nchannels == 1 ? 1 : 3;
@@ -27,12 +38,15 @@ RgbImage readRgbImage(const std::filesystem::path& file) {
   if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, read.data())) {
     throw InputError(file, "cannot read image: " + in->geterror());
   }
+  const bool decode = srgb == SrgbImages::ToLinear && !spec.format.is_floating_point() &&
+                      OIIO::Strutil::iequals(spec.get_string_attribute("oiio:ColorSpace"), "sRGB");
   RgbImage image{spec.width, spec.height, std::vector<float>(count * 3)};
   for (std::size_t i = 0; i < count; ++i) {
     for (int k = 0; k < 3; ++k) {
-      const float value = read[i * channels + (channels == 1 ? 0 : k)];
+      float value = read[i * channels + (channels == 1 ? 0 : k)];
+      if (decode) value = linearFromSrgb(value);
       if (!std::isfinite(value)) {
-        throw InputError(file, "holds a NaN or infinite value at pixel (" +
+        throw InputError(file, what + " holds a NaN or infinite value at pixel (" +
                                    std::to_string(i % spec.width) + ", " +
                                    std::to_string(i / spec.width) + ")");
       }
@@ -40,6 +54,10 @@ RgbImage readRgbImage(const std::filesystem::path& file) {
     }
   }
   return image;
+}
+
+void writeRgbExr(const std::filesystem::path& file, const RgbImage& image) {
+  writeExr(file, image.width, image.height, {"R", "G", "B"}, image.rgb);
 }
 
 }  // namespace probeproxy

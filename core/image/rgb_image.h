@@ -1,8 +1,9 @@
 #pragma once
-// A linear float RGB image read with OpenImageIO: a Cycles render, a world-position render.
-// Owns its pixels.
+// A linear float RGB image read with OpenImageIO: a Cycles render, a world-position render,
+// a cubemap image. Owns its pixels.
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -19,9 +20,19 @@ struct RgbImage {
   }
 };
 
-// The first three channels of any image OpenImageIO reads (one channel: grey), as float, taken
-// as linear (EXR and HDR are). Throws InputError naming the file when it is missing,
-// unreadable, a volume, has two channels, or holds a NaN or infinite value.
-RgbImage readRgbImage(const std::filesystem::path& file);
+// What to do with 8/16-bit images that OpenImageIO reports in sRGB (PNG, JPEG): keep the
+// stored values (a mask or heatmap probeproxy wrote), or decode them to linear radiance (a
+// cubemap an artist painted). Float formats (EXR, HDR) are always taken as linear.
+enum class SrgbImages { AsStored, ToLinear };
+
+// The first three channels of any image OpenImageIO reads (one channel: grey), as float.
+// `what` names the image in messages ("cube face": "cube face file is missing"). Throws
+// InputError naming the file when it is missing, unreadable, a volume, has two channels, or
+// holds a NaN or infinite value.
+RgbImage readRgbImage(const std::filesystem::path& file, const std::string& what = "image",
+                      SrgbImages srgb = SrgbImages::AsStored);
+
+// The image as an RGB float EXR, atomically (core/image/write_exr.h).
+void writeRgbExr(const std::filesystem::path& file, const RgbImage& image);
 
 }  // namespace probeproxy
