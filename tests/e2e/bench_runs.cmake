@@ -1,8 +1,8 @@
 cmake_minimum_required(VERSION 3.20)
 # `probeproxy bench --json --out` on one level: every method of DESIGN.md's table has a row,
 # each row starts with DESIGN.md's names in order, both lookup paths are timed, instructions
-# are counted (valgrind is in scripts/setup.sh), a figure not
-# measured is null (psnr_db until the Cycles comparison lands), and bench.json holds what stdout printed.
+# are counted (valgrind is in scripts/setup.sh), psnr_db against Cycles is there, a figure not
+# measured would be null, and bench.json holds what stdout printed.
 file(REMOVE_RECURSE ${OUT})
 execute_process(COMMAND ${PROBEPROXY} bench ${SCENE} --json --repetitions 1 --samples 256 --out ${OUT}
   RESULT_VARIABLE code OUTPUT_VARIABLE json ERROR_VARIABLE err)
@@ -27,7 +27,7 @@ math(EXPR last "${rows} - 1")
 foreach(i RANGE ${last})
   string(JSON method GET "${json}" results ${i} method)
   list(APPEND methods ${method})
-  foreach(path ns_per_lookup ns_per_lookup_scalar instructions_per_lookup)
+  foreach(path ns_per_lookup ns_per_lookup_scalar instructions_per_lookup psnr_db)
     string(JSON ns GET "${json}" results ${i} ${path})
     if(ns STREQUAL "null" OR NOT ns GREATER 0)
       message(FATAL_ERROR "row ${i} (${method}): ${path} is ${ns}")

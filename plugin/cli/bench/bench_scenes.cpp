@@ -1,7 +1,10 @@
 #include "plugin/cli/bench/bench_scenes.h"
 
+#include "core/cube/cubemap_io.h"
 #include "geometry/build/build_scene_proxies.h"
 #include "geometry/level/load_level.h"
+#include "geometry/mirror_view/mirror_view_reconstruction.h"
+#include "geometry/mirror_view/radiance_lookups.h"
 #include "geometry/scene/scene_file.h"
 #include "plugin/cost/instructions_per_lookup.h"
 
@@ -59,6 +62,36 @@ std::map<std::string, std::optional<double>> countInstructions(
   return byName;
 }
 
+// A probe's Cycles cubemap and its reference mirror views: what psnr_db is measured on.
+struct ImageReference {
+  Cubemap cube;
+  std::vector<MirrorViewReference> views;
+};
+
+// The probe's mirror views (the scene's mirror_views/ folder) with its cubemap; none when the
+// scene has no views of this probe or the probe no cubemap (psnr_db is then null).
+std::optional<ImageReference> imageReference(const Scene& scene, const Probe& probe) {
+  if (!probe.cubemap) return std::nullopt;
+  ImageReference ref;
+  for (const std::filesystem::path& file : mirrorViewFiles(scene)) {
+    MirrorView view = readMirrorView(file);
+    if (view.probe == probe.name) ref.views.push_back(loadMirrorViewReference(view));
+  }
+  if (ref.views.empty()) return std::nullopt;
+  ref.cube = readCubemap((scene.file.parent_path() / *probe.cubemap).string());
+  return ref;
+}
+
+// Mean PSNR over the probe's mirror views of the reflection rebuilt with this proxy.
+std::optional<double> psnrDb(const ImageReference& ref, const ProxyShape& shape,
+                             glm::dvec3 captureMeters) {
+  double sum = 0.0;
+  const RadianceLookup lookup = proxyRadianceLookup(ref.cube, shape, captureMeters);
+  for (const MirrorViewReference& view : ref.views)
+    sum += reconstructMirrorView(view, lookup).error.psnrDb;
+  return sum / static_cast<double>(ref.views.size());
+}
+
 struct LoadedScene {
   std::string name;
   Scene scene;
@@ -102,6 +135,7 @@ std::vector<BenchResult> benchScenes(const std::vector<std::string>& sceneFiles,
       drawOptions.seed = buildOptions.samples.seed + 1000;
       rays.push_back(std::make_unique<LookupRays>(
           raysOf(buildReflectionSamples(*s.level, probe, SampleSet::MirrorFloor, drawOptions))));
+      const std::optional<ImageReference> images = imageReference(s.scene, probe);
       for (std::size_t c = 0; c < builds[p].candidates.size(); ++c) {
         const ProxyCandidate& candidate = builds[p].candidates[c];
         BenchResult row;
@@ -112,6 +146,13 @@ std::vector<BenchResult> benchScenes(const std::vector<std::string>& sceneFiles,
         row.planes = planeCount(candidate.shape);
         row.kept = c == builds[p].kept;
         row.error = candidate.error;
+        if (images) {
+          try {
+            row.psnrDb = psnrDb(*images, candidate.shape, probe.captureMeters);
+          } catch (const std::invalid_argument&) {
+            // a degenerate fit no shader could run: no image either
+          }
+        }
         results.push_back(std::move(row));
         if (rays.back()->size() == 0) continue;
         try {
