@@ -23,12 +23,12 @@ double rangeFraction(double reach, double inner, double outer) {
 double normalizedDistance(const InfluenceVolume& influence, glm::dvec3 p) {
   if (const auto* box = std::get_if<BoxInfluence>(&influence)) {
     const glm::dvec3 local = glm::abs(glm::conjugate(box->worldFromBox) * (p - box->centerMeters));
-    double fraction = 0.0;
+    double factor = 1.0;
     for (int axis = 0; axis < 3; ++axis) {
-      fraction = std::max(fraction, rangeFraction(local[axis], box->innerHalfExtentsMeters[axis],
-                                                  box->halfExtentsMeters[axis]));
+      factor *= 1.0 - rangeFraction(local[axis], box->innerHalfExtentsMeters[axis],
+                                    box->halfExtentsMeters[axis]);
     }
-    return fraction;
+    return 1.0 - factor;
   }
   const auto& sphere = std::get<SphereInfluence>(influence);
   return rangeFraction(glm::distance(p, sphere.centerMeters), sphere.innerRadiusMeters,

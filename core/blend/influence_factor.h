@@ -1,8 +1,11 @@
 #pragma once
 // Lagarde's normalized distance for an influence volume (seed 000, bonus slides): 0 inside the
 // inner range, rising to 1 at the outer boundary, continuous in between; the influence factor
-// is 1 - that. Boxes are measured in their own frame (rotation included), per axis, and the
-// largest axis wins, so the iso-surfaces are nested boxes between the inner and the outer one.
+// is 1 - that. A sphere fades linearly from the inner to the outer radius. A box is measured
+// in its own frame (rotation included): each axis fades linearly across its band, and the
+// factor is the product of the three axes' factors. (The seed leaves the box's function open;
+// the product, unlike the largest axis, keeps two boxes that fade towards the same wall in the
+// ratio of their other axes, so blending them does not pop next to that wall.)
 //
 // An axis whose inner half-extent equals the outer one has no fade band: the factor stays at
 // its other axes' value up to that side and drops to 0 on it (a step, which the blend then

@@ -10,61 +10,73 @@ namespace probeproxy {
 
 namespace {
 
-// Dense weights of one grid row: weights[col * probes + probe]; covered[col].
+// One grid row: dense weights[col * probes + probe]; whether each point is covered and
+// reachable; whether it is reachable but uncovered (a gap to bridge).
 struct Row {
+  std::vector<glm::dvec3> points;
   std::vector<double> weights;
-  std::vector<char> covered;
+  std::vector<char> covered, reachable;
 };
 
 }  // namespace
 
 WeightContinuity measureWeightContinuity(std::span<const InfluenceVolume> volumes,
-                                         const WeightGrid& grid, const BlendOptions& options) {
+                                         const WeightGrid& grid, const BlendOptions& options,
+                                         const ReachableMask& reachableMask) {
   if (!(grid.spacingMeters > 0.0)) throw std::invalid_argument("weight grid: spacing must be > 0");
   if (!(grid.maxMeters.x >= grid.minMeters.x && grid.maxMeters.y >= grid.minMeters.y)) {
     throw std::invalid_argument("weight grid: empty box");
   }
   // Points at min + i * spacing, computed from the index so the grid does not drift.
-  const long long cols = static_cast<long long>(std::floor((grid.maxMeters.x - grid.minMeters.x) /
-                                                           grid.spacingMeters)) +
-                         1;
-  const long long rows = static_cast<long long>(std::floor((grid.maxMeters.y - grid.minMeters.y) /
-                                                           grid.spacingMeters)) +
-                         1;
+  const auto count = [&](double lo, double hi) {
+    return static_cast<std::size_t>(std::floor((hi - lo) / grid.spacingMeters)) + 1;
+  };
+  const std::size_t cols = count(grid.minMeters.x, grid.maxMeters.x);
+  const std::size_t rows = count(grid.minMeters.y, grid.maxMeters.y);
   const std::size_t probes = volumes.size();
 
   WeightContinuity result;
-  auto pointAt = [&](long long col, long long row) {
-    return glm::dvec3(grid.minMeters.x + static_cast<double>(col) * grid.spacingMeters,
-                      grid.minMeters.y + static_cast<double>(row) * grid.spacingMeters,
-                      grid.zMeters);
-  };
-  auto compare = [&](const Row& a, long long colA, const Row& b, long long colB, long long rowA,
-                     long long rowB) {
-    if (!a.covered[colA] || !b.covered[colB]) return;
-    for (std::size_t i = 0; i < probes; ++i) {
-      const double jump = std::abs(a.weights[colA * probes + i] - b.weights[colB * probes + i]);
+  // Compares point i of row a with point j of row b when both are covered.
+  const auto compare = [&](const Row& a, std::size_t i, const Row& b, std::size_t j) {
+    if (!a.covered[i] || !b.covered[j]) return;
+    for (std::size_t k = 0; k < probes; ++k) {
+      const double jump = std::abs(a.weights[i * probes + k] - b.weights[j * probes + k]);
       if (jump > result.largestJump) {
         result.largestJump = jump;
-        result.jumpProbe = static_cast<int>(i);
-        result.jumpFromMeters = pointAt(colA, rowA);
-        result.jumpToMeters = pointAt(colB, rowB);
+        result.jumpProbe = static_cast<int>(k);
+        result.jumpFromMeters = a.points[i];
+        result.jumpToMeters = b.points[j];
       }
     }
   };
+  const auto isGap = [](const Row& r, std::size_t i) { return r.reachable[i] && !r.covered[i]; };
 
-  Row previous, current;
-  for (Row* r : {&previous, &current}) {
-    r->weights.assign(static_cast<std::size_t>(cols) * probes, 0.0);
-    r->covered.assign(static_cast<std::size_t>(cols), 0);
+  // Rows y - 2, y - 1, y: two back, to bridge a one-point gap along y.
+  std::vector<Row> ring(3);
+  for (Row& r : ring) {
+    r.points.resize(cols);
+    r.weights.assign(cols * probes, 0.0);
+    r.covered.assign(cols, 0);
+    r.reachable.assign(cols, 1);
   }
-  for (long long row = 0; row < rows; ++row) {
+  for (std::size_t row = 0; row < rows; ++row) {
+    Row& current = ring[row % 3];
+    const Row& previous = ring[(row + 2) % 3];
+    const Row& twoBack = ring[(row + 1) % 3];
+    const double y = grid.minMeters.y + static_cast<double>(row) * grid.spacingMeters;
+    for (std::size_t col = 0; col < cols; ++col) {
+      current.points[col] = {grid.minMeters.x + static_cast<double>(col) * grid.spacingMeters, y,
+                             grid.zMeters};
+    }
+    if (reachableMask) reachableMask(current.points, current.reachable);
     std::fill(current.weights.begin(), current.weights.end(), 0.0);
-    for (long long col = 0; col < cols; ++col) {
-      const std::vector<ProbeWeight> weights = blendWeights(volumes, pointAt(col, row), options);
-      current.covered[col] = !weights.empty();
+    for (std::size_t col = 0; col < cols; ++col) {
       ++result.points;
+      current.covered[col] = 0;
+      if (!current.reachable[col]) continue;
+      const std::vector<ProbeWeight> weights = blendWeights(volumes, current.points[col], options);
       if (weights.empty()) continue;
+      current.covered[col] = 1;
       ++result.coveredPoints;
       double sum = 0.0;
       for (const ProbeWeight& w : weights) {
@@ -72,10 +84,13 @@ WeightContinuity measureWeightContinuity(std::span<const InfluenceVolume> volume
         sum += w.weight;
       }
       result.largestSumError = std::max(result.largestSumError, std::abs(sum - 1.0));
-      if (col > 0) compare(current, col - 1, current, col, row, row);
-      if (row > 0) compare(previous, col, current, col, row - 1, row);
     }
-    std::swap(previous, current);
+    for (std::size_t col = 0; col < cols; ++col) {
+      if (col > 0) compare(current, col - 1, current, col);
+      if (col > 1 && isGap(current, col - 1)) compare(current, col - 2, current, col);
+      if (row > 0) compare(previous, col, current, col);
+      if (row > 1 && isGap(previous, col)) compare(twoBack, col, current, col);
+    }
   }
   return result;
 }
@@ -92,8 +107,9 @@ WeightGrid gridOverVolumes(std::span<const InfluenceVolume> volumes, double zMet
     lo = glm::min(lo, vLo);
     hi = glm::max(hi, vHi);
   }
-  // Whole multiples of the spacing, so boundaries at round coordinates fall on grid points.
-  grid.minMeters = glm::floor(glm::dvec2(lo) / spacingMeters) * spacingMeters;
+  // Cell centres of a grid of whole multiples of the spacing: no point lies exactly on a wall
+  // or a volume's side at a round coordinate, where nobody stands and no weight is defined.
+  grid.minMeters = (glm::floor(glm::dvec2(lo) / spacingMeters) + 0.5) * spacingMeters;
   grid.maxMeters = glm::ceil(glm::dvec2(hi) / spacingMeters) * spacingMeters;
   return grid;
 }

@@ -26,8 +26,9 @@ def build(b):
     h = RIDGE / 2
     level = LevelSpec()
     level.probes += [
-        Probe("attic_west", (-2.0, 0.0, CAPTURE_HEIGHT), BoxInfluence((-2.0, 0.0, h), (2.5, HY, h), (1.8, HY, h)), room, 0.0),
-        Probe("attic_east", (2.0, 0.5, CAPTURE_HEIGHT), BoxInfluence((2.0, 0.0, h), (2.5, HY, h), (1.8, HY, h)), room, 0.0),
+        # Inner ranges 1.6 m apart: Lagarde's weights cross over gently (under 0.02 per cm).
+        Probe("attic_west", (-2.0, 0.0, CAPTURE_HEIGHT), BoxInfluence((-2.0, 0.0, h), (3.0, HY, h), (1.2, HY, h)), room, 0.0),
+        Probe("attic_east", (2.0, 0.5, CAPTURE_HEIGHT), BoxInfluence((2.0, 0.0, h), (3.0, HY, h), (1.2, HY, h)), room, 0.0),
     ]
     level.views += [
         MirrorView("west_slope", "attic_west", -3.0, -1.0, yaw_deg=30.0, pitch_deg=-35.0),

@@ -21,8 +21,10 @@ def build(b):
     h = WALL / 2
     level = LevelSpec()
     level.probes += [
-        Probe("court_sw", (-3.0, -3.0, CAPTURE_HEIGHT), BoxInfluence((-3.0, -3.0, h), (3.5, 3.5, h), (2.5, 2.5, h)), court, 0.0),
-        Probe("court_ne", (3.0, 2.5, CAPTURE_HEIGHT), BoxInfluence((3.0, 3.0, h), (3.5, 3.5, h), (2.5, 2.5, h)), court, 0.0),
+        # West and east halves reaching past the walls, so the whole court is covered and the
+        # two only fade into each other, across the middle (inner ranges 1 m apart).
+        Probe("court_sw", (-3.0, -3.0, CAPTURE_HEIGHT), BoxInfluence((-3.0, 0.0, h), (4.0, H + 1.0, h), (2.5, H + 1.0, h)), court, 0.0),
+        Probe("court_ne", (3.0, 2.5, CAPTURE_HEIGHT), BoxInfluence((3.0, 0.0, h), (4.0, H + 1.0, h), (2.5, H + 1.0, h)), court, 0.0),
     ]
     level.views += [
         MirrorView("sw_fountain", "court_sw", -4.5, -4.0, yaw_deg=45.0, pitch_deg=-30.0),

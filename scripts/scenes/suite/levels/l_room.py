@@ -22,9 +22,12 @@ def build(b):
     h = HEIGHT / 2
     level = LevelSpec()
     level.probes += [
-        Probe("corner", (2.0, 2.0, CAPTURE_HEIGHT), BoxInfluence((2.0, 2.0, h), (2.75, 2.75, h), (2.0, 2.0, h)), room, 0.0),
-        Probe("arm_x", (8.5, 2.0, CAPTURE_HEIGHT), BoxInfluence((7.5, 2.0, h), (3.0, 2.0, h), (2.2, 2.0, h)), room, 0.0),
-        Probe("arm_y", (2.0, 8.5, CAPTURE_HEIGHT), BoxInfluence((2.0, 7.5, h), (2.0, 3.0, h), (2.0, 2.2, h)), room, 0.0),
+        # The corner reaches 1.5 m into each arm and fades out there; each arm ends at the
+        # corner and fades out over its last 1.45 m (1.45 m between inner ranges, so the
+        # weights cross over gently); every side without a band lies in a wall.
+        Probe("corner", (2.0, 2.0, CAPTURE_HEIGHT), BoxInfluence((2.0, 2.0, h), (3.5, 3.5, h), (2.0, 2.0, h)), room, 0.0),
+        Probe("arm_x", (8.5, 2.0, CAPTURE_HEIGHT), BoxInfluence((7.25, 2.0, h), (3.25, 2.0, h), (1.8, 2.0, h)), room, 0.0),
+        Probe("arm_y", (2.0, 8.5, CAPTURE_HEIGHT), BoxInfluence((2.0, 7.25, h), (2.0, 3.25, h), (2.0, 1.8, h)), room, 0.0),
     ]
     level.views += [
         MirrorView("corner_diagonal", "corner", 1.0, 1.2, yaw_deg=45.0, pitch_deg=-35.0),

@@ -39,10 +39,13 @@ def build(b):
 
     level = LevelSpec()
     level.probes += [
-        probe("ground_south", 3.0, 1.25, 0.0, ground, (4.75, 1.25), (4.75, 1.25), (4.0, 1.25)),
-        probe("ground_bend", 10.75, 5.0, 0.0, ground, (10.75, 5.0), (1.25, 5.0), (1.25, 4.2)),
-        probe("upper_north", 3.0, 8.75, upper_z, upper, (4.75, 8.75), (4.75, 1.25), (4.0, 1.25)),
-        probe("upper_bend", 10.75, 5.0, upper_z, upper, (10.75, 5.0), (1.25, 5.0), (1.25, 4.2)),
+        # Each arm ends where the bend begins (x = 9.5) and fades out over its last 1.5 m; the
+        # bend reaches 1.5 m into each arm and fades out there; every side without a band
+        # lies in a wall. Inner ranges 1.75 m apart, so the weights cross over gently.
+        probe("ground_south", 3.0, 1.25, 0.0, ground, (4.75, 1.25), (4.75, 1.25), (3.25, 1.25)),
+        probe("ground_bend", 10.75, 5.0, 0.0, ground, (10.75, 5.0), (2.75, 5.0), (1.0, 5.0)),
+        probe("upper_north", 3.0, 8.75, upper_z, upper, (4.75, 8.75), (4.75, 1.25), (3.25, 1.25)),
+        probe("upper_bend", 10.75, 5.0, upper_z, upper, (10.75, 5.0), (2.75, 5.0), (1.0, 5.0)),
     ]
     level.views += [
         MirrorView("ground_south_east", "ground_south", 1.5, 1.0, yaw_deg=0.0, pitch_deg=-35.0),
