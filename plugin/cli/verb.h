@@ -18,7 +18,8 @@ struct Verb {
 Verb addDemoVerb(CLI::App& app);
 Verb addBuildVerb(CLI::App& app);
 Verb addExportVerb(CLI::App& app);
-// validate, correct, blend: present with their real options; each says which
+Verb addCorrectVerb(CLI::App& app);
+// validate, blend: present with their real options; each says which
 // issue brings it and exits 2 until that lands.
 std::vector<Verb> addPendingVerbs(CLI::App& app);
 Verb addBenchVerb(CLI::App& app);

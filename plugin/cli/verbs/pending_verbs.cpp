@@ -40,16 +40,6 @@ std::vector<Verb> addPendingVerbs(CLI::App& app) {
   validate->add_flag("--json", o.json, "print the findings as JSON on stdout");
   verbs.push_back(pendingVerb(validate, "validation of artist volumes", 5));
 
-  CLI::App* correct = app.add_subcommand(
-      "correct",
-      "Write a parallax-corrected cubemap (EXR) for a probe, camera and reflection plane");
-  correct->add_option("scene", o.scene, "scene file (*.scene.json)")->required();
-  correct->add_option("--probe", o.probe, "probe name")->required();
-  correct->add_option("--camera", o.camera, "camera position X,Y,Z")->required();
-  correct->add_option("--plane", o.plane, "reflection plane PX,PY,PZ,NX,NY,NZ");
-  correct->add_option("--out", o.out, "output EXR")->required();
-  verbs.push_back(pendingVerb(correct, "the mixing-step parallax correction", 4));
-
   CLI::App* blend = app.add_subcommand(
       "blend", "Mix the probes that influence a point of interest into one cubemap");
   blend->add_option("scene", o.scene, "scene file (*.scene.json)")->required();
