@@ -30,4 +30,10 @@ RadianceLookup trueHitRadianceLookup(const Cubemap& cube, const LevelRayCaster& 
   };
 }
 
+RadianceLookup pointCloudRadianceLookup(const PointCloud& cloud, const PointCloudOptions& options) {
+  return [&cloud, options](glm::dvec3 x, glm::dvec3 r) {
+    return pointCloudRadiance(cloud, x, glm::vec3(r), options);
+  };
+}
+
 }  // namespace probeproxy

@@ -3,6 +3,7 @@
 // a reflected ray. Each keeps references to its arguments: they must outlive it.
 
 #include "core/cube/cubemap.h"
+#include "core/pointcloud/point_cloud_splat.h"
 #include "core/proxy/proxy_shape.h"
 #include "geometry/mirror_view/mirror_view_reconstruction.h"
 #include "geometry/raycast/level_ray_caster.h"
@@ -21,5 +22,9 @@ RadianceLookup proxyRadianceLookup(const Cubemap& cube, const ProxyShape& shape,
 // renders' noise: the best any proxy can do with this cubemap.
 RadianceLookup trueHitRadianceLookup(const Cubemap& cube, const LevelRayCaster& level,
                                      glm::dvec3 captureMeters);
+
+// Seed 003's proxy-free `pointcloud` method: the cloud splatted around x, sampled along r
+// (point_cloud_splat.h). A direction no splat or fill reached is a miss.
+RadianceLookup pointCloudRadianceLookup(const PointCloud& cloud, const PointCloudOptions& options);
 
 }  // namespace probeproxy
