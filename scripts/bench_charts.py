@@ -2,6 +2,7 @@
 """Charts of `probeproxy bench --json` (speed against accuracy), PNG and SVG.
 
     /usr/bin/python3 scripts/bench_charts.py OUT/bench.json OUT [--levels corridor l_room]
+    /usr/bin/python3 scripts/bench_charts.py --sweeps sweeps.json OUT
 
 Writes, per level: `<level>_error_vs_cost` (mirror_floor p95 angular error, log scale,
 against ns per lookup of the batched kernel, Pareto front drawn) and `<level>_error_vs_planes`
@@ -179,12 +180,83 @@ def summary(by_level, rows, out_dir):
     save(fig, out_dir, "summary")
 
 
+def sweep_charts(sweeps_json, out_dir):
+    """One chart per sweep: p95 (log) and miss rate against the swept parameter."""
+    with open(sweeps_json) as f:
+        sweeps = json.load(f)["sweeps"]
+    for sweep in sweeps:
+        fig, (err_ax, miss_ax) = plt.subplots(1, 2, figsize=(10, 4))
+        for i, series in enumerate(sweep["series"]):
+            xs = [p["parameter"] for p in series["points"]]
+            p95 = [max(p["p95_deg"], 1e-12) if finite(p["p95_deg"]) else math.nan
+                   for p in series["points"]]
+            color = plt.cm.tab10(i % 10)
+            err_ax.plot(xs, p95, marker="o", markersize=3, color=color, label=series["method"])
+            miss_ax.plot(xs, [p["miss_rate"] for p in series["points"]], marker="o",
+                         markersize=3, color=color, label=series["method"])
+        for ax in (err_ax, miss_ax):
+            ax.set_xlabel(sweep["parameter"])
+            if sweep["name"] in ("origin", "resolution"):
+                ax.set_xscale("log")
+            ax.grid(True, which="both", alpha=0.3)
+            ax.legend(fontsize=7)
+        err_ax.set_yscale("log")
+        err_ax.set_ylabel("p95 angular error (degrees, log; misses left out)")
+        miss_ax.set_ylabel("miss rate (flagged misses / lookups)")
+        fig.suptitle(f"where methods break: {sweep['name']} sweep")
+        fig.tight_layout()
+        save(fig, out_dir, f"sweep_{sweep['name']}")
+
+
+def markdown_table(by_level):
+    """Per level and method: the median over probes of the best candidate's p95 (as in the
+    summary chart), with its ns per lookup (batched, scalar), instructions and PSNR."""
+    lines = ["| level | method | p95 deg | median deg | miss % | ns batched | ns scalar | "
+             "speed-up | instr | PSNR dB |", "|---" * 10 + "|"]
+    fmt = lambda v, f: "-" if not finite(v) else format(v, f)  # noqa: E731
+    for level in sorted(by_level):
+        for method in METHODS:
+            best = {}
+            for r in by_level[level]:
+                if r["method"] != method or r.get("candidate") == "authored":
+                    continue
+                if method == "convex" and r["planes"] > 16 or not finite(r["p95_deg"]):
+                    continue
+                if finite(r["miss_rate"]) and r["miss_rate"] > MAX_MISS_RATE:
+                    continue
+                if r["probe"] not in best or r["p95_deg"] < best[r["probe"]]["p95_deg"]:
+                    best[r["probe"]] = r
+            if not best:
+                continue
+            rows = sorted(best.values(), key=lambda r: r["p95_deg"])
+            mid = rows[len(rows) // 2]
+            ratio = (mid["ns_per_lookup_scalar"] / mid["ns_per_lookup"]
+                     if finite(mid.get("ns_per_lookup_scalar")) and finite(mid["ns_per_lookup"])
+                     else None)
+            name = method if method != "convex" else f"convex ({mid['planes']} planes)"
+            lines.append(f"| {level} | {name} | {fmt(mid['p95_deg'], '.3f')} | "
+                         f"{fmt(mid['median_deg'], '.3f')} | {fmt(100 * mid['miss_rate'], '.1f')} | "
+                         f"{fmt(mid['ns_per_lookup'], '.2f')} | "
+                         f"{fmt(mid.get('ns_per_lookup_scalar'), '.2f')} | {fmt(ratio, '.1f')} | "
+                         f"{fmt(mid['instructions_per_lookup'], '.1f')} | "
+                         f"{fmt(mid['psnr_db'], '.1f')} |")
+    return "\n".join(lines)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("bench_json")
+    parser.add_argument("bench_json", help="bench.json, or sweeps.json with --sweeps")
     parser.add_argument("out_dir")
     parser.add_argument("--levels", nargs="*", help="per-level charts for these only")
+    parser.add_argument("--table", action="store_true",
+                        help="also print the per-level summary as a Markdown table")
+    parser.add_argument("--sweeps", action="store_true",
+                        help="the input is break_sweeps' JSON: chart each sweep")
     args = parser.parse_args()
+    if args.sweeps:
+        os.makedirs(args.out_dir, exist_ok=True)
+        sweep_charts(args.bench_json, args.out_dir)
+        return
     with open(args.bench_json) as f:
         rows = json.load(f)["results"]
     if not rows:
@@ -199,6 +271,8 @@ def main():
         error_vs_cost(level, level_rows, args.out_dir)
         error_vs_planes(level, level_rows, args.out_dir)
     summary(by_level, rows, args.out_dir)
+    if args.table:
+        print(markdown_table(by_level))
 
 
 if __name__ == "__main__":
