@@ -19,6 +19,7 @@ struct LevelRayCaster::Embree {
   // Embree works in float. Vertices and ray origins are stored relative to the centre of the
   // level's bounds, so a level 10 km from the world origin is cast as precisely as one at it.
   glm::dvec3 originMeters{0.0};
+  glm::dvec3 boundsMinMeters{0.0}, boundsMaxMeters{0.0};
 };
 
 namespace {
@@ -69,7 +70,11 @@ LevelRayCaster::LevelRayCaster(const LevelMesh& level) : embree_(std::make_uniqu
       hi(-std::numeric_limits<double>::infinity());
   for (const glm::vec3& p : level.positionsMeters)
     lo = glm::min(lo, glm::dvec3(p)), hi = glm::max(hi, glm::dvec3(p));
-  if (!level.positionsMeters.empty()) embree_->originMeters = 0.5 * (lo + hi);
+  if (!level.positionsMeters.empty()) {
+    embree_->originMeters = 0.5 * (lo + hi);
+    embree_->boundsMinMeters = lo;
+    embree_->boundsMaxMeters = hi;
+  }
 
   embree_->device = rtcNewDevice(nullptr);
   if (embree_->device == nullptr) throw std::runtime_error("Embree could not create a device");
@@ -108,6 +113,9 @@ LevelRayCaster::~LevelRayCaster() {
   if (embree_->scene != nullptr) rtcReleaseScene(embree_->scene);
   if (embree_->device != nullptr) rtcReleaseDevice(embree_->device);
 }
+
+glm::dvec3 LevelRayCaster::boundsMinMeters() const { return embree_->boundsMinMeters; }
+glm::dvec3 LevelRayCaster::boundsMaxMeters() const { return embree_->boundsMaxMeters; }
 
 RayHit LevelRayCaster::firstHit(const Ray& ray) const {
   RTCIntersectContext context;

@@ -20,6 +20,10 @@ class LevelRayCaster {
 
   RayHit firstHit(const Ray& ray) const;
 
+  // The axis-aligned bounds of the level's vertices, world frame (empty level: both 0).
+  glm::dvec3 boundsMinMeters() const;
+  glm::dvec3 boundsMaxMeters() const;
+
   // hits[i] answers rays[i]; the batch is split over all cores (TBB). Results do not depend
   // on the number of threads. `coherent` tells Embree the rays share an origin (depth cubes).
   void firstHits(std::span<const Ray> rays, std::span<RayHit> hits, bool coherent = false) const;

@@ -18,8 +18,9 @@ struct Verb {
 Verb addDemoVerb(CLI::App& app);
 Verb addBuildVerb(CLI::App& app);
 Verb addExportVerb(CLI::App& app);
+Verb addValidateVerb(CLI::App& app);
 Verb addCorrectVerb(CLI::App& app);
-// validate, blend: present with their real options; each says which
+// blend: present with its real options; it says which
 // issue brings it and exits 2 until that lands.
 std::vector<Verb> addPendingVerbs(CLI::App& app);
 Verb addBenchVerb(CLI::App& app);

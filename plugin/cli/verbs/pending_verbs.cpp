@@ -32,13 +32,6 @@ std::vector<Verb> addPendingVerbs(CLI::App& app) {
   static PendingOptions o;
   std::vector<Verb> verbs;
 
-  CLI::App* validate =
-      app.add_subcommand("validate",
-                         "Check authored proxies and influence volumes against the level "
-                         "(exit 0 clean, 1 findings, 2 bad input)");
-  validate->add_option("scene", o.scene, "scene file (*.scene.json)")->required();
-  validate->add_flag("--json", o.json, "print the findings as JSON on stdout");
-  verbs.push_back(pendingVerb(validate, "validation of artist volumes", 5));
 
   CLI::App* blend = app.add_subcommand(
       "blend", "Mix the probes that influence a point of interest into one cubemap");

@@ -1,0 +1,97 @@
+// The rules about one probe's own pieces: its authored mesh, and where its capture point is.
+
+#include "geometry/level/load_level.h"
+#include "geometry/validate/proxy_mesh_checks.h"
+#include "geometry/validate/validation_rules.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace probeproxy {
+
+std::string formatPoint(glm::dvec3 p) {
+  char text[96];
+  std::snprintf(text, sizeof text, "(%.2f, %.2f, %.2f)", p.x, p.y, p.z);
+  return text;
+}
+
+double metersOutside(const ProxyShape& shape, glm::dvec3 p) {
+  if (const auto* box = std::get_if<BoxShape>(&shape))
+    return signedDistanceOutside(convexFromBox(*box).planes, p);
+  if (const auto* convex = std::get_if<ConvexProxy>(&shape))
+    return signedDistanceOutside(convex->planes, p);
+  if (const auto* sphere = std::get_if<SphereShape>(&shape)) {
+    // Exact for a sphere; for an ellipsoid the scaled distance along the shortest radius,
+    // which has the right sign and is exact on the boundary.
+    const glm::dvec3 local = glm::conjugate(sphere->worldFromSphere) * (p - sphere->centerMeters);
+    const double minRadius =
+        std::min({sphere->radiiMeters.x, sphere->radiiMeters.y, sphere->radiiMeters.z});
+    return (glm::length(local / sphere->radiiMeters) - 1.0) * minRadius;
+  }
+  return -std::numeric_limits<double>::infinity();
+}
+
+void checkAuthoredMesh(const Scene& scene, const Probe& probe,
+                       std::vector<ValidationFinding>& out) {
+  const auto* authored = std::get_if<AuthoredConvexMesh>(&probe.proxy);
+  if (authored == nullptr) return;
+  // Read as authoredProxyShape reads it: glTF is Y-up by its specification.
+  const std::string ext = authored->mesh.extension().string();
+  const UpAxis up = (ext == ".glb" || ext == ".gltf") ? UpAxis::Y : scene.fileUp;
+  const LevelMesh mesh = loadLevelMeshFile(authored->mesh, up, scene.metersPerUnit);
+  for (ProxyMeshFinding& f : checkProxyMesh(mesh, probe.captureMeters)) {
+    if (f.rule == "proxy_misses_capture") continue;  // capture_outside_proxy says it
+    out.push_back({probe.name, std::move(f.rule), std::move(f.severity), f.value, f.limit,
+                   "probe '" + probe.name + "': proxy mesh " + authored->meshAsWritten.string() +
+                       ": " + f.message,
+                   std::move(f.hint)});
+  }
+}
+
+void checkCaptureInsideProxy(const Probe& probe, const ProxyShape& authored,
+                             std::vector<ValidationFinding>& out) {
+  const double outside = metersOutside(authored, probe.captureMeters);
+  if (outside < 0.0) return;
+  char value[32];
+  std::snprintf(value, sizeof value, "%.3f", outside);
+  out.push_back({probe.name, "capture_outside_proxy", "error", outside, 0.0,
+                 "probe '" + probe.name + "' captures at " + formatPoint(probe.captureMeters) +
+                     ", " + value + " m outside its authored proxy",
+                 "move the capture point into the proxy, or enlarge the proxy around it "
+                 "(parallax correction needs the capture point strictly inside)"});
+}
+
+namespace {
+
+// How far outside the outer range, metres (negative inside; for a box the largest excess over
+// the half-extents along its own axes).
+double metersOutsideInfluence(const InfluenceVolume& influence, glm::dvec3 p) {
+  if (const auto* box = std::get_if<BoxInfluence>(&influence)) {
+    const glm::dvec3 local = glm::conjugate(box->worldFromBox) * (p - box->centerMeters);
+    const glm::dvec3 excess = glm::abs(local) - box->halfExtentsMeters;
+    return std::max({excess.x, excess.y, excess.z});
+  }
+  const auto& sphere = std::get<SphereInfluence>(influence);
+  return glm::distance(p, sphere.centerMeters) - sphere.radiusMeters;
+}
+
+}  // namespace
+
+void checkCaptureInsideInfluence(const Probe& probe, std::vector<ValidationFinding>& out) {
+  if (insideInfluence(probe.influence, probe.captureMeters)) return;
+  const double outside = metersOutsideInfluence(probe.influence, probe.captureMeters);
+  char value[32];
+  std::snprintf(value, sizeof value, "%.3f", outside);
+  out.push_back({probe.name, "capture_outside_influence", "error", outside, 0.0,
+                 "probe '" + probe.name + "' captures at " + formatPoint(probe.captureMeters) +
+                     ", " + value + " m outside its influence volume",
+                 "move the capture point into the influence volume, or the volume over it "
+                 "(build and export refuse this probe until then)"});
+}
+
+}  // namespace probeproxy

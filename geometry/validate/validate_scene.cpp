@@ -1,0 +1,48 @@
+#include "geometry/validate/validate_scene.h"
+
+#include "geometry/build/authored_proxy_shape.h"
+#include "geometry/validate/validation_rules.h"
+
+#include <algorithm>
+
+namespace probeproxy {
+
+namespace {
+
+bool hasError(const std::vector<ValidationFinding>& findings, std::size_t from) {
+  return std::any_of(findings.begin() + static_cast<std::ptrdiff_t>(from), findings.end(),
+                     [](const ValidationFinding& f) { return f.severity == "error"; });
+}
+
+}  // namespace
+
+std::vector<ValidationFinding> validateScene(const Scene& scene, const LevelRayCaster& level,
+                                             const ValidateOptions& options) {
+  std::vector<ValidationFinding> findings;
+  const std::vector<FloorPoint> floor = walkableFloor(level, options);
+  for (const Probe& probe : scene.probes) {
+    // Later rules measure what earlier ones establish: a proxy that is not a closed convex
+    // mesh, or that misses its capture point, has no meaningful error yet; a capture point
+    // outside its influence volume has no samples. Fix those first, then see the rest.
+    const std::size_t first = findings.size();
+    checkAuthoredMesh(scene, probe, findings);
+    const std::optional<ProxyShape> authored = authoredProxyShape(probe.proxy, scene);
+    if (authored && !hasError(findings, first)) checkCaptureInsideProxy(probe, *authored, findings);
+    checkCaptureInsideInfluence(probe, findings);
+    if (hasError(findings, first)) continue;
+    if (authored) checkProxyError(level, probe, *authored, options, findings);
+    checkInfluenceLeak(level, probe, floor, options, findings);
+    if (authored) checkReflectedCameras(level, probe, *authored, options, findings);
+  }
+  checkOverlaps(scene, options, findings);
+  checkInnerRanges(scene, options, findings);
+  checkFloorCoverage(scene, floor, options, findings);
+  return findings;
+}
+
+bool findingsFail(const std::vector<ValidationFinding>& findings) {
+  return std::any_of(findings.begin(), findings.end(),
+                     [](const ValidationFinding& f) { return f.severity != "info"; });
+}
+
+}  // namespace probeproxy

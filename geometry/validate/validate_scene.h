@@ -1,0 +1,85 @@
+#pragma once
+// Validation of the volumes an artist authored (DESIGN.md, "Validate artist volumes"): every
+// rule below looks at the scene and the real level and reports what breaks it, which probe,
+// by how much, and how to fix it. A clean scene gives no findings. The CLI (`probeproxy
+// validate`) and the Blender add-on both call validateScene.
+//
+// Rules (id, severity, value / limit; the README's "Validation" section has the full table):
+//   proxy_* (the OpenMesh checks of geometry/validate/proxy_mesh_checks.h, on an authored
+//     `convex` mesh: proxy_not_closed, proxy_concave_edge, proxy_not_convex, ...)   error
+//   capture_outside_proxy       error    metres the capture point lies outside its authored
+//                                        proxy (signed, negative inside) / 0
+//   capture_outside_influence   error    metres outside its influence volume's outer range / 0
+//   proxy_error_over_tolerance  warning  the authored proxy's mirror_floor p95 angular error,
+//                                        degrees / tolerance; the message gives the generated
+//                                        proxy's p95 beside it
+//   floor_not_covered           warning  walkable floor (upward-facing, with head room) in no
+//                                        influence volume, m^2 / limit
+//   too_many_overlaps           warning  most outer ranges covering one point / max overlap
+//   inner_ranges_overlap        warning  volume where two inner ranges overlap, m^3 / limit
+//   weight_jump                 warning  largest blend-weight change between neighbouring
+//                                        grid points, per centimetre / limit
+//   influence_leak              warning  share of the influence volume's walkable floor the
+//                                        capture point cannot see (through a wall) / limit
+//   reflected_camera_outside_proxy  warning  metres the camera reflected through a planar
+//                                        receiver lies outside the proxy / 0 (seed 000's
+//                                        glossy rule: enlarge the proxy)
+
+#include "core/scene/scene.h"
+#include "geometry/evaluation/reflection_samples.h"
+#include "geometry/raycast/level_ray_caster.h"
+
+#include <string>
+#include <vector>
+
+namespace probeproxy {
+
+struct ValidationFinding {
+  std::string probe;     // the probe it is about (for pairs: the first in scene order)
+  std::string rule;      // stable id, see the list above
+  std::string severity;  // "error", "warning" or "info"
+  double value = 0.0;    // the measured amount, in the unit the rule list gives
+  double limit = 0.0;    // the limit it broke
+  std::string message;   // one line: what is wrong, naming the probe(s) and where
+  std::string hint;      // one line: how to fix it
+};
+
+struct ValidateOptions {
+  // proxy_error_over_tolerance: the authored proxy's mirror_floor p95 may be at most this.
+  double toleranceDeg = 0.25;
+  // too_many_overlaps: at most this many outer ranges may cover one point.
+  int maxOverlap = 3;
+  // inner_ranges_overlap: overlapping inner ranges may share at most this volume.
+  double maxInnerOverlapCubicMeters = 0.0;
+  // floor_not_covered: uncovered walkable floor may add up to at most this area.
+  double maxUncoveredFloorSquareMeters = 0.5;
+  // weight_jump: blend weights may change at most this much per centimetre between
+  // neighbouring grid points.
+  double maxWeightJumpPerCentimeter = 0.02;
+  // influence_leak: at most this share of an influence volume's walkable floor may be
+  // hidden from its capture point.
+  double maxLeakShare = 0.05;
+  // Grid spacing for the floor, overlap and leak rules; coarsened on huge levels so no rule
+  // tests more than about gridPointBudget points.
+  double gridSpacingMeters = 0.25;
+  std::size_t gridPointBudget = 2'000'000;
+  // reflected_camera_outside_proxy: the receivers are glossy (perturbed normals reach below
+  // the plane), so the reflected camera itself must be inside the proxy (seed 000); for
+  // mirrors only the receiver under each camera must be.
+  bool glossyReceivers = false;
+  // Head room a floor needs to be walkable (a ray up from it must travel this far).
+  double headroomMeters = 1.0;
+  // Samples and cameras of proxy_error_over_tolerance and reflected_camera_outside_proxy.
+  ReflectionSampleOptions samples;
+};
+
+// Findings in a fixed order: per probe in scene order (mesh checks, capture, error, leak,
+// reflected camera), then the scene-wide rules (overlaps, inner ranges, weights, floor).
+// Deterministic. Throws InputError for an authored proxy mesh that cannot be read.
+std::vector<ValidationFinding> validateScene(const Scene& scene, const LevelRayCaster& level,
+                                             const ValidateOptions& options = {});
+
+// Whether findings should fail a pipeline: any error or warning (info alone does not).
+bool findingsFail(const std::vector<ValidationFinding>& findings);
+
+}  // namespace probeproxy

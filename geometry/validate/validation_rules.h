@@ -1,0 +1,53 @@
+#pragma once
+// The rules behind validateScene (validate_scene.h), one function each, so a test can run one
+// rule alone. Each appends its findings to `out`.
+
+#include "core/proxy/proxy_shape.h"
+#include "geometry/validate/validate_scene.h"
+
+#include <glm/vec3.hpp>
+
+#include <optional>
+#include <vector>
+
+namespace probeproxy {
+
+// A point on walkable floor (upward-facing level surface with head room), one per grid cell.
+struct FloorPoint {
+  glm::dvec3 pointMeters{0.0};  // on the surface
+  double cellAreaSquareMeters = 0.0;
+};
+
+// The floor under a regular XY grid over the level's bounds, every storey (rays cast down).
+std::vector<FloorPoint> walkableFloor(const LevelRayCaster& level, const ValidateOptions& options);
+
+// Per probe.
+void checkAuthoredMesh(const Scene& scene, const Probe& probe, std::vector<ValidationFinding>& out);
+void checkCaptureInsideProxy(const Probe& probe, const ProxyShape& authored,
+                             std::vector<ValidationFinding>& out);
+void checkCaptureInsideInfluence(const Probe& probe, std::vector<ValidationFinding>& out);
+void checkProxyError(const LevelRayCaster& level, const Probe& probe, const ProxyShape& authored,
+                     const ValidateOptions& options, std::vector<ValidationFinding>& out);
+void checkInfluenceLeak(const LevelRayCaster& level, const Probe& probe,
+                        const std::vector<FloorPoint>& floor, const ValidateOptions& options,
+                        std::vector<ValidationFinding>& out);
+void checkReflectedCameras(const LevelRayCaster& level, const Probe& probe,
+                           const ProxyShape& authored, const ValidateOptions& options,
+                           std::vector<ValidationFinding>& out);
+
+// Scene-wide.
+void checkOverlaps(const Scene& scene, const ValidateOptions& options,
+                   std::vector<ValidationFinding>& out);
+void checkInnerRanges(const Scene& scene, const ValidateOptions& options,
+                      std::vector<ValidationFinding>& out);
+void checkFloorCoverage(const Scene& scene, const std::vector<FloorPoint>& floor,
+                        const ValidateOptions& options, std::vector<ValidationFinding>& out);
+
+// How far a point lies outside a shape, metres (negative inside; -inf for shapes without a
+// volume, which contain everything).
+double metersOutside(const ProxyShape& shape, glm::dvec3 pointMeters);
+
+// "(x, y, z)" with centimetre precision, for messages.
+std::string formatPoint(glm::dvec3 pointMeters);
+
+}  // namespace probeproxy

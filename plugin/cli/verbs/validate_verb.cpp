@@ -1,0 +1,80 @@
+#include "geometry/level/load_level.h"
+#include "geometry/scene/scene_file.h"
+#include "geometry/validate/validate_scene.h"
+#include "plugin/cli/reports/validate_report.h"
+#include "plugin/cli/verb.h"
+
+#include <iostream>
+#include <memory>
+
+namespace probeproxy::cli {
+
+namespace {
+
+struct ValidateVerbOptions {
+  std::string scene;
+  bool json = false;
+  ValidateOptions validate;
+};
+
+int runValidate(const ValidateVerbOptions& o) {
+  const Scene scene = readSceneFile(o.scene);
+  const LevelMesh level = loadLevel(scene);
+  const LevelRayCaster rayCaster(level);
+  const std::vector<ValidationFinding> findings = validateScene(scene, rayCaster, o.validate);
+  if (o.json)
+    std::cout << validateReportJson(findings);
+  else
+    printFindings(std::cout, o.scene, findings);
+  // Errors and warnings fail a pipeline; info findings are reported but leave it clean.
+  return findingsFail(findings) ? 1 : 0;
+}
+
+}  // namespace
+
+Verb addValidateVerb(CLI::App& app) {
+  auto o = std::make_shared<ValidateVerbOptions>();
+  ValidateOptions& v = o->validate;
+  CLI::App* verb = app.add_subcommand(
+      "validate",
+      "Check authored proxies and influence volumes against the level (exit 0 clean, 1 "
+      "errors or warnings, 2 bad input)");
+  verb->add_option("scene", o->scene, "scene file (*.scene.json)")->required();
+  verb->add_flag("--json", o->json, "print the findings as JSON on stdout");
+  verb->add_option("--tolerance-deg", v.toleranceDeg,
+                   "proxy_error_over_tolerance: largest mirror_floor p95 angular error")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  verb->add_option("--max-overlap", v.maxOverlap,
+                   "too_many_overlaps: most influence volumes allowed at one point")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 64));
+  verb->add_option("--max-uncovered-m2", v.maxUncoveredFloorSquareMeters,
+                   "floor_not_covered: walkable floor allowed outside every influence volume")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  verb->add_option("--max-leak-share", v.maxLeakShare,
+                   "influence_leak: share of a volume's floor allowed hidden from its probe")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  verb->add_option("--max-inner-overlap-m3", v.maxInnerOverlapCubicMeters,
+                   "inner_ranges_overlap: volume two inner ranges may share")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  verb->add_option("--max-weight-jump", v.maxWeightJumpPerCentimeter,
+                   "weight_jump: largest blend-weight change per centimetre")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  verb->add_flag("--glossy", v.glossyReceivers,
+                 "reflected_camera_outside_proxy: receivers are glossy, so the reflected "
+                 "camera itself must be inside the proxy (seed 000)");
+  verb->add_option("--grid", v.gridSpacingMeters, "grid spacing of the floor and volume rules, m")
+      ->capture_default_str()
+      ->check(CLI::Range(0.01, 10.0));
+  verb->add_option("--samples", v.samples.targetSamples, "reflection samples per probe")
+      ->capture_default_str()
+      ->check(CLI::Range(64, 1000000));
+  return {verb, [o] { return runValidate(*o); }};
+}
+
+}  // namespace probeproxy::cli
