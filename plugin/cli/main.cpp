@@ -17,8 +17,8 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "probeproxy 0.1.0");
 
   std::vector<cli::Verb> verbs = {cli::addDemoVerb(app), cli::addBuildVerb(app),
-                                  cli::addExportVerb(app), cli::addValidateVerb(app),
-                                  cli::addCorrectVerb(app)};
+                                  cli::addExportVerb(app), cli::addCorrectVerb(app),
+                                  cli::addValidateVerb(app)};
   for (cli::Verb& pending : cli::addPendingVerbs(app)) verbs.push_back(std::move(pending));
   verbs.push_back(cli::addBenchVerb(app));
 
