@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
   std::vector<cli::Verb> verbs = {cli::addDemoVerb(app), cli::addBuildVerb(app),
                                   cli::addExportVerb(app), cli::addCorrectVerb(app),
                                   cli::addValidateVerb(app)};
-  for (cli::Verb& pending : cli::addPendingVerbs(app)) verbs.push_back(std::move(pending));
+  verbs.push_back(cli::addBlendVerb(app));
   verbs.push_back(cli::addBenchVerb(app));
 
   // CLI11 would only say "a subcommand is required"; name what was typed and what exists.

@@ -20,9 +20,7 @@ Verb addBuildVerb(CLI::App& app);
 Verb addExportVerb(CLI::App& app);
 Verb addValidateVerb(CLI::App& app);
 Verb addCorrectVerb(CLI::App& app);
-// blend: present with its real options; it says which
-// issue brings it and exits 2 until that lands.
-std::vector<Verb> addPendingVerbs(CLI::App& app);
+Verb addBlendVerb(CLI::App& app);
 Verb addBenchVerb(CLI::App& app);
 
 }  // namespace probeproxy::cli
