@@ -34,6 +34,8 @@ ERROR_FLOOR_DEG = 1e-4
 # A candidate that misses more than this share of samples is drawn hollow and kept off the
 # Pareto front: a low p95 over the samples it does hit is not a usable proxy.
 MAX_MISS_RATE = 0.001
+# Sweeps whose chart also draws the median (dashed).
+SWEEPS_WITH_MEDIAN = {"concavity"}
 
 
 def finite(v):
@@ -186,12 +188,20 @@ def sweep_charts(sweeps_json, out_dir):
         sweeps = json.load(f)["sweeps"]
     for sweep in sweeps:
         fig, (err_ax, miss_ax) = plt.subplots(1, 2, figsize=(10, 4))
+        # The concavity sweep's errors are exact zeros or degrees: floor them where the log
+        # axis can show them, and draw the medians too (dashed).
+        with_median = sweep["name"] in SWEEPS_WITH_MEDIAN
+        floor = ERROR_FLOOR_DEG if with_median else 1e-12
         for i, series in enumerate(sweep["series"]):
             xs = [p["parameter"] for p in series["points"]]
-            p95 = [max(p["p95_deg"], 1e-12) if finite(p["p95_deg"]) else math.nan
+            p95 = [max(p["p95_deg"], floor) if finite(p["p95_deg"]) else math.nan
                    for p in series["points"]]
             color = plt.cm.tab10(i % 10)
             err_ax.plot(xs, p95, marker="o", markersize=3, color=color, label=series["method"])
+            if with_median:
+                median = [max(p["median_deg"], floor) if finite(p["median_deg"]) else math.nan
+                          for p in series["points"]]
+                err_ax.plot(xs, median, linestyle="--", linewidth=1, color=color)
             miss_ax.plot(xs, [p["miss_rate"] for p in series["points"]], marker="o",
                          markersize=3, color=color, label=series["method"])
         for ax in (err_ax, miss_ax):
@@ -201,7 +211,8 @@ def sweep_charts(sweeps_json, out_dir):
             ax.grid(True, which="both", alpha=0.3)
             ax.legend(fontsize=7)
         err_ax.set_yscale("log")
-        err_ax.set_ylabel("p95 angular error (degrees, log; misses left out)")
+        err_ax.set_ylabel("p95 angular error (degrees, log; misses left out)"
+                          + ("\nsolid p95, dashed median; 0 drawn at 1e-4" if with_median else ""))
         miss_ax.set_ylabel("miss rate (flagged misses / lookups)")
         fig.suptitle(f"where methods break: {sweep['name']} sweep")
         fig.tight_layout()

@@ -53,7 +53,7 @@ SweepPoint measure(double parameter, const ProxyShape& shape, glm::dvec3 capture
     rx[i] = float(rays[i].r.x), ry[i] = float(rays[i].r.y), rz[i] = float(rays[i].r.z);
   }
   lookupBatch(proxy, {x, y, z, rx, ry, rz}, {dx, dy, dz, miss});
-  SweepPoint point{parameter, {}, 0, std::nullopt};
+  SweepPoint point{parameter, {}, 0, std::nullopt, std::nullopt};
   std::vector<double> errors;
   for (std::size_t i = 0; i < n; ++i) {
     const glm::dvec3 d(dx[i], dy[i], dz[i]);
@@ -127,7 +127,7 @@ Sweep roughnessSweep() {
   const std::vector<double> roughnesses = {0.0, 0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0};
   SweepSeries mixing{"mixing_plane", {}};
   for (const GlossyDistortion& g : glossyDistortion(setup, roughnesses))
-    mixing.points.push_back({g.roughness, g.figures, 0, std::nullopt});
+    mixing.points.push_back({g.roughness, g.figures, 0, std::nullopt, std::nullopt});
   sweep.series.push_back(std::move(mixing));
   return sweep;
 }
@@ -183,7 +183,8 @@ Sweep originSweep() {
       const auto d = referenceLookup(room, capture + offset, rays[i].xMeters, rays[i].r);
       errors.push_back(d ? angleBetweenDeg(*d, truth[i]) : std::nan(""));
     }
-    sweep.series[3].points.push_back({distance, summarizeErrors(errors, 0), 0, std::nullopt});
+    sweep.series[3].points.push_back(
+        {distance, summarizeErrors(errors, 0), 0, std::nullopt, std::nullopt});
   }
   return sweep;
 }
@@ -220,14 +221,16 @@ Sweep resolutionSweep() {
       errors.push_back(angleBetweenDeg(glm::dvec3(texelDirection(fuv.face, col, row, n)), d));
       absSum += std::abs(double(sampleBilinear(cube, glm::vec3(d), 0.0f).x) - radiance(d));
     }
-    SweepPoint point{double(n), summarizeErrors(errors, 0), 0, absSum / double(directions.size())};
+    SweepPoint point{double(n), summarizeErrors(errors, 0), 0, absSum / double(directions.size()),
+                     std::nullopt};
     sweep.series[0].points.push_back(point);
   }
   return sweep;
 }
 
 std::vector<Sweep> allSweeps() {
-  return {distanceSweep(), roughnessSweep(), captureSweep(), originSweep(), resolutionSweep()};
+  return {distanceSweep(), roughnessSweep(), captureSweep(),
+          originSweep(),   concavitySweep(), resolutionSweep()};
 }
 
 std::optional<double> firstP95Above(const SweepSeries& series, double limitDeg) {
@@ -252,7 +255,9 @@ std::string sweepsJson(const std::vector<Sweep>& sweeps) {
                           {"p95_deg", number(p.error.p95Deg)},
                           {"miss_rate", number(p.error.missRate)},
                           {"non_finite", p.nonFinite},
-                          {"image_mae", number(p.imageMeanAbsError.value_or(std::nan("")))}});
+                          {"image_mae", number(p.imageMeanAbsError.value_or(std::nan("")))},
+                          {"planes", p.planes ? nlohmann::ordered_json(*p.planes)
+                                              : nlohmann::ordered_json(nullptr)}});
       }
       series.push_back({{"method", m.method}, {"points", std::move(points)}});
     }

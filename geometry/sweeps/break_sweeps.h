@@ -21,6 +21,7 @@ struct SweepPoint {
   std::size_t nonFinite = 0;  // lookups that were neither flagged misses nor finite (must be 0)
   std::optional<double> imageMeanAbsError;  // resolution sweep: bilinear fetch against the exact
                                             // radiance (linear units, radiance in [0, 1])
+  std::optional<int> planes;  // concavity sweep: planes of the proxy measured at this point
 };
 
 struct SweepSeries {
@@ -29,7 +30,8 @@ struct SweepSeries {
 };
 
 struct Sweep {
-  std::string name;       // "distance", "roughness", "capture", "origin", "resolution"
+  std::string name;       // "distance", "roughness", "capture", "origin", "concavity",
+                          // "resolution"
   std::string parameter;  // what is swept, with its unit
   std::vector<SweepSeries> series;
 };
@@ -45,6 +47,13 @@ Sweep roughnessSweep();
 Sweep captureSweep();
 // (d) the whole level moved 1 m to 1e6 m from the world origin along (1, 1, 1).
 Sweep originSweep();
+// (e) how concave the room is: the L-room (geometry/builtin/l_room.h, 4 m wide, 3 m high) with
+// arms 0 m to 12 m long, its corner probe as the suite's (capture (2, 2, 1.6), influence 2.75 m
+// around it). Series on the build's mirror_floor samples (true hits by Embree): `artist_box`,
+// the room's bounding box as an artist would draw it; `build_kept`, the proxy buildProbeProxy
+// keeps; `hull`, the convex hull of what the probe sees; `infinite`. Declared here, built in
+// concavity_sweep.cpp with the proxy pipeline.
+Sweep concavitySweep();
 // (f) cubemap face size: direction quantisation (nearest texel centre) and bilinear image error.
 Sweep resolutionSweep();
 
@@ -54,7 +63,7 @@ std::vector<Sweep> allSweeps();
 std::optional<double> firstP95Above(const SweepSeries& series, double limitDeg);
 
 // {"sweeps": [{"name", "parameter", "series": [{"method", "points": [{"parameter",
-// "median_deg", "p95_deg", "miss_rate", "non_finite", "image_mae"}]}]}]}
+// "median_deg", "p95_deg", "miss_rate", "non_finite", "image_mae", "planes"}]}]}]}
 std::string sweepsJson(const std::vector<Sweep>& sweeps);
 
 }  // namespace probeproxy

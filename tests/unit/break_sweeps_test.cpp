@@ -85,6 +85,42 @@ TEST(BreakSweeps, FarFromTheOriginFloatDegradesDoubleDoesNot) {
     EXPECT_LT(p.error.p95Deg, 1e-6) << p.parameter;
 }
 
+TEST(BreakSweeps, ConcaveRoomBreaksTheArtistBoxNotTheBuild) {
+  const Sweep s = concavitySweep();
+  expectGraceful(s);
+  const auto& box = series(s, "artist_box").points;
+  const auto& kept = series(s, "build_kept").points;
+  const auto& cornerBox = series(s, "corner_artist_box").points;
+  const auto& cornerKept = series(s, "corner_build_kept").points;
+  // No arm: the room is its bounding box, exact for every proxy that models it.
+  EXPECT_LT(box.front().error.p95Deg, 1e-3);
+  EXPECT_LT(kept.front().error.p95Deg, 1e-3);
+  for (std::size_t i = 0; i < box.size(); ++i) {
+    const double arm = box[i].parameter;
+    EXPECT_EQ(box[i].error.missRate, 0.0) << arm;  // the box holds the whole room
+    // The bounding box's empty corner only grows with the arm: so does its error, up to where
+    // the arm probe's samples stop seeing the corner room (arm 4 m), then it stays high.
+    if (i > 0 && arm <= 4.0) {
+      EXPECT_GE(box[i].error.p95Deg, box[i - 1].error.p95Deg) << arm;
+    }
+    if (arm >= 4.0) {
+      EXPECT_GT(box[i].error.p95Deg, 30.0) << arm;
+    }
+    // The build never keeps anything worse than the artist's box, on either probe (up to its
+    // fit to a 128 px depth cube: 1e-4 deg where the box is exact).
+    EXPECT_LE(kept[i].error.p95Deg, box[i].error.p95Deg + 0.01) << arm;
+    EXPECT_LE(cornerKept[i].error.p95Deg, cornerBox[i].error.p95Deg + 0.01) << arm;
+    EXPECT_LE(kept[i].error.missRate, 0.001) << arm;
+    // Once the probe's influence lies in the arm alone, the build's box of it is exact.
+    if (arm >= 6.0) {
+      EXPECT_LT(kept[i].error.p95Deg, 0.01) << arm;
+    }
+    EXPECT_GT(series(s, "infinite").points[i].error.p95Deg, 45.0) << arm;
+  }
+  EXPECT_GT(box.back().error.p95Deg, 1000 * (kept.back().error.p95Deg + 1e-6));
+  EXPECT_EQ(firstP95Above(series(s, "artist_box"), 5.0).value_or(99), 1.5);
+}
+
 TEST(BreakSweeps, ResolutionHalvesTheQuantisation) {
   const Sweep s = resolutionSweep();
   expectGraceful(s);
