@@ -26,10 +26,12 @@ std::string sizeOf(const Cubemap& c) {
 
 }  // namespace
 
-Cubemap mixCubemaps(std::span<const WeightedCubemap> cubes) {
+void mixCubemapsInto(std::span<const WeightedCubemap> cubes, Cubemap& mixed) {
   if (cubes.empty()) throw std::invalid_argument("mixCubemaps: no cubemap to mix");
   for (const WeightedCubemap& c : cubes) {
-    if (c.cube == nullptr) throw std::invalid_argument("mixCubemaps: null cubemap");
+    if (c.cube == nullptr || c.cube == &mixed) {
+      throw std::invalid_argument("mixCubemaps: null cubemap, or the output among the inputs");
+    }
     if (!sameCubemapLayout(*c.cube, *cubes.front().cube)) {
       std::string problem = "mixCubemaps: cubemaps differ in size (";
       problem += sizeOf(*c.cube);
@@ -39,19 +41,28 @@ Cubemap mixCubemaps(std::span<const WeightedCubemap> cubes) {
       throw std::invalid_argument(problem);
     }
   }
-  Cubemap mixed;
-  mixed.levels.resize(cubes.front().cube->levels.size());
+  const Cubemap& first = *cubes.front().cube;
+  mixed.levels.resize(first.levels.size());
   for (std::size_t level = 0; level < mixed.levels.size(); ++level) {
     CubemapLevel& out = mixed.levels[level];
-    out.faceSize = cubes.front().cube->levels[level].faceSize;
+    out.faceSize = first.levels[level].faceSize;
     for (int face = 0; face < kCubeFaceCount; ++face) {
       std::vector<float>& texels = out.rgb[face];
-      texels.assign(cubes.front().cube->levels[level].rgb[face].size(), 0.0f);
-      for (const WeightedCubemap& c : cubes) {
+      texels.resize(first.levels[level].rgb[face].size());
+      // The first cube scales into the output, so it needs no clearing pass.
+      const float* in = first.levels[level].rgb[face].data();
+      const float w = cubes.front().weight;
+      for (std::size_t i = 0; i < texels.size(); ++i) texels[i] = w * in[i];
+      for (const WeightedCubemap& c : cubes.subspan(1)) {
         addScaled(texels.data(), c.cube->levels[level].rgb[face].data(), c.weight, texels.size());
       }
     }
   }
+}
+
+Cubemap mixCubemaps(std::span<const WeightedCubemap> cubes) {
+  Cubemap mixed;
+  mixCubemapsInto(cubes, mixed);
   return mixed;
 }
 

@@ -22,6 +22,10 @@ struct WeightedCubemap {
 // Throws std::invalid_argument on no cube, a null cube, or cubes whose sizes differ.
 Cubemap mixCubemaps(std::span<const WeightedCubemap> cubes);
 
+// The same into `mixed`, reusing its storage when it already has the cubes' layout (a runtime
+// mixing every frame allocates once). Same throws; `mixed` must not be one of the inputs.
+void mixCubemapsInto(std::span<const WeightedCubemap> cubes, Cubemap& mixed);
+
 // Whether two cubes can be mixed: same level count and the same face size at level 0.
 bool sameCubemapLayout(const Cubemap& a, const Cubemap& b);
 
