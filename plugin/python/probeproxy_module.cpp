@@ -10,8 +10,11 @@
 #include "geometry/level/load_level.h"
 #include "geometry/raycast/level_ray_caster.h"
 #include "geometry/scene/scene_file.h"
+#include "geometry/validate/validate_scene.h"
 #include "plugin/cli/reports/build_report.h"
+#include "plugin/cli/reports/validate_report.h"
 #include "plugin/python/python_level.h"
+#include "plugin/python/python_options.h"
 
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -64,30 +67,6 @@ py::dict sceneDict(Scene scene, bool worldFrame) {
     scene.metersPerUnit = 1.0;
   }
   return jsonLoads(sceneFileJson(scene));
-}
-
-ProxyBuildOptions buildOptions(const py::dict& options, int& threads) {
-  ProxyBuildOptions o;
-  for (auto [key, value] : options) {
-    const std::string name = key.cast<std::string>();
-    if (name == "tolerance_deg")
-      o.toleranceDeg = value.cast<double>();
-    else if (name == "max_planes")
-      o.maxPlanes = value.cast<int>();
-    else if (name == "max_miss_rate")
-      o.maxMissRate = value.cast<double>();
-    else if (name == "face_size")
-      o.depthFaceSize = value.cast<int>();
-    else if (name == "samples")
-      o.samples.targetSamples = value.cast<int>();
-    else if (name == "regenerate")
-      o.regenerate = value.cast<bool>();
-    else if (name == "threads")
-      threads = value.cast<int>();
-    else
-      throw py::value_error("unknown build option \"" + name + "\"");
-  }
-  return o;
 }
 
 using Progress = std::function<void(std::size_t, std::size_t)>;
@@ -145,6 +124,17 @@ Result runWithProgress(const std::function<Result(const Progress&)>& work,
   return std::move(*result);
 }
 
+// The level parts of `level` (None: the scene's own meshes, as the CLI loads them).
+std::optional<std::vector<LevelSource>> optionalLevelSources(const Scene& scene,
+                                                             const py::object& level) {
+  if (level.is_none()) return std::nullopt;
+  return levelSources(scene, level.cast<py::list>());
+}
+
+LevelMesh sceneLevel(const Scene& scene, const std::optional<std::vector<LevelSource>>& sources) {
+  return sources ? loadLevelSources(scene, *sources) : loadLevel(scene);
+}
+
 struct SceneBuild {
   Scene scene;
   std::vector<ProbeProxyBuild> builds;
@@ -158,14 +148,13 @@ SceneBuild buildScene(const py::dict& sceneData, const std::string& anchor, cons
   SceneBuild sb{sceneFromDict(sceneData, anchor, std::nullopt, std::nullopt), {}};
   int threads = 0;
   const ProxyBuildOptions o = buildOptions(options, threads);
-  std::optional<std::vector<LevelSource>> sources;
-  if (!level.is_none()) sources = levelSources(sb.scene, level.cast<py::list>());
+  const std::optional<std::vector<LevelSource>> sources = optionalLevelSources(sb.scene, level);
 
   sb.builds = runWithProgress<std::vector<ProbeProxyBuild>>(
       [&](const Progress& onProbeDone) {
         std::optional<tbb::global_control> limit;
         if (threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, threads);
-        const LevelMesh mesh = sources ? loadLevelSources(sb.scene, *sources) : loadLevel(sb.scene);
+        const LevelMesh mesh = sceneLevel(sb.scene, sources);
         const LevelRayCaster rayCaster(mesh);
         std::vector<ProbeProxyBuild> builds =
             buildSceneProxies(sb.scene, rayCaster, o, onProbeDone);
@@ -174,6 +163,26 @@ SceneBuild buildScene(const py::dict& sceneData, const std::string& anchor, cons
       },
       progress);
   return sb;
+}
+
+// `probeproxy validate --json`'s findings as dicts: the same report text, parsed, so every
+// value is the CLI's to the bit (a value that is not finite is None, as it is null there).
+py::list validateFindings(const py::dict& sceneData, const std::string& anchor,
+                          const py::object& level, const py::dict& options) {
+  const Scene scene = sceneFromDict(sceneData, anchor, std::nullopt, std::nullopt);
+  int threads = 0;
+  const ValidateOptions o = validateOptions(options, threads);
+  const std::optional<std::vector<LevelSource>> sources = optionalLevelSources(scene, level);
+  std::string report;
+  {
+    py::gil_scoped_release release;
+    std::optional<tbb::global_control> limit;
+    if (threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, threads);
+    const LevelMesh mesh = sceneLevel(scene, sources);
+    const LevelRayCaster rayCaster(mesh);
+    report = cli::validateReportJson(validateScene(scene, rayCaster, o));
+  }
+  return jsonLoads(report)["findings"];
 }
 
 py::tuple vec3(const glm::dvec3& v) { return py::make_tuple(v.x, v.y, v.z); }
@@ -265,6 +274,15 @@ PYBIND11_MODULE(probeproxy_py, m) {
       "tolerance_deg, max_planes, max_miss_rate, face_size, samples, regenerate, threads. "
       "progress(done, total) is called as probes finish. Returns the `build --json` probes, "
       "each with capture, plane_equations, mesh {vertices, triangles, display_only}, findings.");
+
+  m.def("validate_scene", &validateFindings, py::arg("scene"), py::arg("anchor"),
+        py::arg("level") = py::none(), py::arg("options") = py::dict(),
+        "Validates the probes' volumes against the level (`probeproxy validate`). level: as "
+        "build_proxies. options (the CLI's, same defaults): tolerance_deg, max_overlap, "
+        "max_uncovered_m2, max_leak_share, max_inner_overlap_m3, max_weight_jump, glossy, "
+        "grid, samples; and threads. Returns the findings of `validate --json`, in its order: "
+        "dicts with probe, rule, severity, value, limit (None where not finite), message, "
+        "hint. An empty list: the scene is clean.");
 
   m.def(
       "export_proxies",

@@ -3,14 +3,15 @@
 #       --addon-dir plugin/blender --module-dir build/plugin/python \
 #       --cli build/plugin/cli/probeproxy --scene build/scenes/l_room/l_room.scene.json --work DIR
 # Enables the add-on from the source tree with the built module, imports the scene through
-# Import Scene, runs every operator and asserts: Generate's kinds, plane counts and error
-# figures equal `probeproxy build --json`'s exactly (authored proxies kept, and --regenerate);
+# Import Scene, runs every operator and asserts: Validate's findings equal `probeproxy
+# validate --json`'s (same order, same values) and select the offending probes; Generate's
+# kinds, plane counts and error figures equal `probeproxy build --json`'s exactly (authored
+# proxies kept, and --regenerate);
 # Export writes the CLI's proxies.json and proxies.glb byte for byte; Save Scene of the
 # unedited scene gives the scene file's own bytes; a probe moved and an influence range changed
-# in Blender, saved, reads back in the CLI as Blender shows it and builds to the same figures.
-# Exits non-zero on the first failure, naming it.
+# in Blender, saved, reads back in the CLI as Blender shows it and builds and validates as
+# Blender did. Exits non-zero if any check failed, naming each.
 
-import argparse
 import filecmp
 import json
 import os
@@ -20,23 +21,11 @@ import sys
 
 import bpy
 
-argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
-parser = argparse.ArgumentParser()
-for name in ("--addon-dir", "--module-dir", "--cli", "--scene", "--work"):
-    parser.add_argument(name, required=True)
-args = parser.parse_args(argv)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from addon_harness import (check, enable_addon, finish, import_scene, parse_args,  # noqa: E402
+                           validate_like_cli)
 
-sys.path.insert(0, os.path.abspath(args.addon_dir))
-sys.path.insert(0, os.path.abspath(args.module_dir))
-import addon_utils  # noqa: E402
-
-failures = []
-
-
-def check(condition, what):
-    print(("ok   " if condition else "FAIL ") + what, flush=True)
-    if not condition:
-        failures.append(what)
+args = parse_args("--addon-dir", "--module-dir", "--cli", "--scene", "--work")
 
 
 def cli_build(scene, out, *extra):
@@ -81,18 +70,11 @@ work = os.path.abspath(args.work)
 shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)
 
-module = addon_utils.enable("probeproxy_addon", default_set=True, handle_error=None)
-check(module is not None, "add-on enabled")
-from probeproxy_addon import native, scene_io  # noqa: E402
-check(native.module is not None, "compiled module loaded: " + (native.problem or "ok"))
-check(hasattr(bpy.ops.probeproxy, "generate_proxies"), "operators under bpy.ops.probeproxy")
+native, scene_io = enable_addon(args.addon_dir, args.module_dir)
+level = import_scene(args.scene, scene_io)
 
-for obj in list(bpy.data.objects):
-    bpy.data.objects.remove(obj)
-check(bpy.ops.probeproxy.import_scene(filepath=args.scene) == {"FINISHED"}, "Import Scene")
-level = [o for o in bpy.data.objects if scene_io.is_level_object(o)]
-check(len(level) > 0 and all(o.probeproxy.level_index >= 0 for o in level),
-      "level meshes imported by Blender's importer (%d objects)" % len(level))
+# Validate on the imported level: the CLI's findings, the offending probes selected.
+validate_like_cli(args.cli, args.scene, "imported")
 for o in bpy.context.view_layer.objects:
     o.select_set(o in level)
 
@@ -149,10 +131,8 @@ try:
           "edited influence reads back as Blender shows it")
     compare_builds(cli_build(edited, os.path.join(work, "cli_edited"), "--regenerate"),
                    blender_results(), "edited")
+    validate_like_cli(args.cli, edited, "edited")
 finally:
     os.remove(edited)
 
-if failures:
-    print("%d check(s) failed:\n  " % len(failures) + "\n  ".join(failures))
-    sys.exit(1)
-print("all checks passed")
+finish()

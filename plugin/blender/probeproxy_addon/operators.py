@@ -123,9 +123,29 @@ class PROBEPROXY_OT_generate_proxies(_NeedsModule, bpy.types.Operator):
         return _run(self, work)
 
 
+def findings_summary(severities):
+    """One line for the status bar, counted as `probeproxy validate` counts them."""
+    if not severities:
+        return "clean: no findings"
+    n = len(severities)
+    return "%d finding%s (%d error, %d warning, %d info)" % (
+        n, "" if n == 1 else "s", severities.count("error"), severities.count("warning"),
+        severities.count("info"))
+
+
+def _select_probes(context, names, first):
+    """Selects exactly the probes named (the offending ones); `first` becomes active."""
+    for obj in context.view_layer.objects:
+        obj.select_set(obj.probeproxy.is_probe and obj.name in names)
+    active = context.view_layer.objects.get(first or "")
+    if active is not None and active.probeproxy.is_probe:
+        context.view_layer.objects.active = active
+
+
 class PROBEPROXY_OT_validate_volumes(_NeedsModule, bpy.types.Operator):
-    """Check the probes' proxies and influence volumes; list the findings and select the
-    probes they name"""
+    """Check the probes' proxies and influence volumes against the selected level objects
+    (all when none is selected), as `probeproxy validate` does; list the findings and select
+    the probes they name"""
     bl_idname = "probeproxy.validate_volumes"
     bl_label = "Validate Volumes"
     bl_options = {"REGISTER", "UNDO"}
@@ -133,27 +153,34 @@ class PROBEPROXY_OT_validate_volumes(_NeedsModule, bpy.types.Operator):
     def execute(self, context):
         scene = context.scene
         settings = scene.probeproxy
-        if not hasattr(native.module, "validate_scene"):
-            self.report({"ERROR"}, "this build of probeproxy has no validation yet")
+        if not scene_io.probes(scene):
+            self.report({"ERROR"}, "no probes: add one with Add Probe or import a scene")
             return {"CANCELLED"}
         objects = _level_objects(context)
+        if not objects:
+            self.report({"ERROR"}, "no level: select the level's mesh objects")
+            return {"CANCELLED"}
 
         def work():
-            parts = scene_io.level_parts(context, objects)[0] if objects else None
+            parts, used = scene_io.level_parts(context, objects)
             findings = native.module.validate_scene(
-                scene_io.scene_dict(scene), scene_io.scene_anchor(scene), parts)
+                scene_io.scene_dict(scene), scene_io.scene_anchor(scene), parts,
+                {"tolerance_deg": scene_io.f32(settings.tolerance_deg)})
             settings.findings.clear()
             for f in findings:
                 item = settings.findings.add()
                 for key in ("probe", "rule", "severity", "message", "hint"):
-                    setattr(item, key, str(f.get(key) or ""))
-                item.value = json.dumps(f.get("value"))
-                item.limit = json.dumps(f.get("limit"))
+                    setattr(item, key, f[key])
+                # As the report's JSON text: a float property would round them to 32 bits.
+                item.value = json.dumps(f["value"])
+                item.limit = json.dumps(f["limit"])
             settings.validated = True
-            named = {f.get("probe") for f in findings}
-            for obj in context.view_layer.objects:
-                obj.select_set(obj.probeproxy.is_probe and obj.name in named)
-            self.report({"WARNING" if findings else "INFO"}, "%d finding(s)" % len(findings))
+            settings.level_used = used
+            _select_probes(context, {f["probe"] for f in findings},
+                           findings[0]["probe"] if findings else None)
+            summary = findings_summary([f["severity"] for f in findings])
+            failing = any(f["severity"] in ("error", "warning") for f in findings)
+            self.report({"WARNING" if failing else "INFO"}, "Validate: " + summary)
             return {"FINISHED"}
 
         return _run(self, work)

@@ -89,7 +89,7 @@ class PROBEPROXY_PT_probe(bpy.types.Panel):
             box.label(text="miss %.2f%%, occluded %.2f%%, %d samples" % (
                 100 * e["miss_rate"], 100 * e["occluded_rate"], e["samples"]))
             for finding in r.get("findings", []):
-                for line in _wrap(finding, 48):
+                for line in _wrap(finding, _chars(context)):
                     box.label(text=line, icon="INFO")
 
 
@@ -105,19 +105,38 @@ class PROBEPROXY_PT_findings(bpy.types.Panel):
         return context.scene.probeproxy.validated
 
     def draw(self, context):
+        from .operators import findings_summary
         findings = context.scene.probeproxy.findings
+        width = _chars(context)
         if not findings:
             self.layout.label(text="No findings: every volume passes", icon="CHECKMARK")
+            return
+        self.layout.label(text=findings_summary([f.severity for f in findings]), icon="ERROR")
         icons = {"error": "CANCEL", "warning": "ERROR", "info": "INFO"}
         for f in findings:
             box = self.layout.box()
-            box.label(text="%s: %s (%s)" % (f.probe or "scene", f.rule, f.severity),
+            box.label(text="%s  %s  (%s)" % (f.severity, f.rule, f.probe or "scene"),
                       icon=icons.get(f.severity, "INFO"))
-            for line in _wrap(f.message, 48):
-                box.label(text=line)
+            box.label(text="value %s / limit %s" % (_number(f.value), _number(f.limit)))
+            col = box.column(align=True)
+            for line in _wrap(f.message, width):
+                col.label(text=line)
             if f.hint:
-                for line in _wrap("Fix: " + f.hint, 48):
-                    box.label(text=line)
+                for i, line in enumerate(_wrap("Fix: " + f.hint, width)):
+                    col.label(text=line, icon="LIGHT" if i == 0 else "BLANK1")
+
+
+def _number(text):
+    """A finding's value or limit (JSON text) as the CLI prints it: 4 significant digits."""
+    value = json.loads(text or "null")
+    return "-" if value is None else "%.4g" % value
+
+
+def _chars(context):
+    """Characters that fit on one line of the sidebar (about 7 px each at 1x scale)."""
+    region = context.region
+    scale = context.preferences.system.ui_scale
+    return max(24, int((region.width if region else 300) / (7 * scale)) - 4)
 
 
 def _deg(value):

@@ -1,0 +1,46 @@
+# Validate Volumes on a level with findings (the suite's deliberately broken scenes), headless:
+#   blender -b --factory-startup --python tests/blender/addon_validate_test.py -- \
+#       --addon-dir plugin/blender --module-dir build/plugin/python \
+#       --cli build/plugin/cli/probeproxy --scene build/scenes/broken/probe_outside.scene.json
+# Imports the scene through Import Scene and asserts that the findings in the panel equal
+# `probeproxy validate --json`'s (same order, same values), that there are some, that exactly
+# the offending probes are selected (the first finding's active), and that the module's
+# validate_scene returns the CLI's findings too; a refused option raises ValueError, a missing
+# level mesh InputError with the library's one line.
+
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from addon_harness import (check, enable_addon, finish, import_scene, parse_args,  # noqa: E402
+                           validate_like_cli)
+
+args = parse_args("--addon-dir", "--module-dir", "--cli", "--scene")
+scene = os.path.abspath(args.scene)
+native, scene_io = enable_addon(args.addon_dir, args.module_dir)
+import_scene(scene, scene_io)
+expected = validate_like_cli(args.cli, scene, os.path.basename(scene))
+check(len(expected) > 0, "the broken level has findings")
+direct = native.module.validate_scene(native.module.read_scene(scene), scene)
+check(direct == expected, "module validate_scene on the scene file: the CLI's findings")
+
+
+def raised(work):
+    try:
+        work()
+    except ValueError as e:  # InputError is a ValueError
+        return e
+    return None
+
+
+data = native.module.read_scene(scene)
+e = raised(lambda: native.module.validate_scene(data, scene, options={"grid": 0}))
+check(e is not None and not isinstance(e, native.module.InputError)
+      and str(e) == "option grid = 0 is outside [0.01, 10.0]",
+      "an option the CLI refuses raises ValueError: %s" % e)
+data["level"] = ["no_such_level.obj"]
+e = raised(lambda: native.module.validate_scene(data, scene))
+missing = os.path.join(os.path.dirname(scene), "no_such_level.obj")
+check(isinstance(e, native.module.InputError) and str(e) == missing + ": mesh file not found",
+      "a missing level mesh raises InputError naming the file: %s" % e)
+finish()
