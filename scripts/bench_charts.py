@@ -34,6 +34,10 @@ ERROR_FLOOR_DEG = 1e-4
 # A candidate that misses more than this share of samples is drawn hollow and kept off the
 # Pareto front: a low p95 over the samples it does hit is not a usable proxy.
 MAX_MISS_RATE = 0.001
+# Methods with one row per probe (the mixing step through the kept proxy, the point cloud):
+# nothing to choose between, so the table shows them whatever their misses. Their cost is per
+# corrected texel (mixing) or per shading point (pointcloud), not per batched lookup.
+ONE_ROW_METHODS = {"mixing_plane", "raster_convex", "pointcloud"}
 # Sweeps whose chart also draws the median (dashed).
 SWEEPS_WITH_MEDIAN = {"concavity"}
 
@@ -63,7 +67,7 @@ def label(row):
 
 
 def error_vs_cost(level, rows, out_dir):
-    fig, ax = plt.subplots(figsize=(8, 5.5))
+    fig, ax = plt.subplots(figsize=(9.5, 5.5))
     probes = sorted({r["probe"] for r in rows})
     colors = {p: plt.cm.tab10(i % 10) for i, p in enumerate(probes)}
     usable = []
@@ -92,12 +96,14 @@ def error_vs_cost(level, rows, out_dir):
     ax.scatter([], [], facecolors="none", edgecolors="0.5",
                label=f"misses > {100 * MAX_MISS_RATE:g}% (off the front)")
     ax.set_yscale("log")
-    ax.set_xlabel("cost: ns per lookup (batched kernel, median)")
+    ax.set_xscale("log")
+    ax.set_xlabel("cost: ns per lookup (batched kernel, median, log);\n"
+                  "mixing_plane, raster_convex: ns per texel of the corrected cubemap")
     ax.set_ylabel("p95 angular error on mirror_floor (degrees, log)")
     ax.set_title(f"{level}: error against cost of every method and proxy "
                  f"(p95 of 0 drawn at {ERROR_FLOOR_DEG:g} deg)")
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=7, loc="upper right")
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     fig.tight_layout()
     save(fig, out_dir, f"{level}_error_vs_cost")
 
@@ -137,7 +143,8 @@ def best_p95(rows, method):
             continue
         if r.get("candidate") == "authored" or (method == "convex" and r["planes"] > 16):
             continue
-        if finite(r["miss_rate"]) and r["miss_rate"] > MAX_MISS_RATE:
+        if (method not in ONE_ROW_METHODS and finite(r["miss_rate"])
+                and r["miss_rate"] > MAX_MISS_RATE):
             continue
         per_probe[r["probe"]] = min(per_probe.get(r["probe"], math.inf), r["p95_deg"])
     return statistics.median(per_probe.values()) if per_probe else None
@@ -146,8 +153,11 @@ def best_p95(rows, method):
 def summary(by_level, rows, out_dir):
     levels = sorted(by_level)
     methods = [m for m in METHODS if any(r["method"] == m for r in rows)]
+    # pointcloud gives no direction: it has a cost and a PSNR but no angular error.
+    error_methods = [m for m in methods if any(r["method"] == m and finite(r["p95_deg"])
+                                               for r in rows)]
     fig, (left, right) = plt.subplots(1, 2, figsize=(12, 5), gridspec_kw={"width_ratios": [3, 2]})
-    grid = [[best_p95(by_level[lv], m) for m in methods] for lv in levels]
+    grid = [[best_p95(by_level[lv], m) for m in error_methods] for lv in levels]
     shown = [[math.log10(max(v, ERROR_FLOOR_DEG)) if v is not None else math.nan for v in line]
              for line in grid]
     image = left.imshow(shown, cmap="viridis", aspect="auto", vmin=-4, vmax=2.3)
@@ -156,7 +166,7 @@ def summary(by_level, rows, out_dir):
             text = "-" if v is None else (f"{v:.3f}" if v < 10 else f"{v:.0f}")
             left.text(j, i, text, ha="center", va="center", fontsize=7,
                       color="white" if v is None or v < 1 else "black")
-    left.set_xticks(range(len(methods)), methods, rotation=30)
+    left.set_xticks(range(len(error_methods)), error_methods, rotation=30)
     left.set_yticks(range(len(levels)), levels)
     left.set_title("p95 angular error (deg) on mirror_floor, best fit per probe,\n"
                    "median over the level's probes (convex: at most 16 planes)")
@@ -172,9 +182,11 @@ def summary(by_level, rows, out_dir):
     right.bar([i + 0.2 for i in x], batched, width=0.4, label="batched kernel", color="tab:blue")
     for i, (s, b) in enumerate(zip(scalar, batched)):
         if finite(s) and finite(b) and b > 0:
-            right.text(i, max(s, b) * 1.05, f"{s / b:.1f}x", ha="center", fontsize=7)
+            right.text(i, max(s, b) * 1.1, f"{s / b:.1f}x", ha="center", fontsize=7)
     right.set_xticks(list(x), methods, rotation=30)
-    right.set_ylabel("ns per lookup (median over all levels' rows)")
+    right.set_yscale("log")
+    right.set_ylabel("ns per lookup, log (median over all levels' rows);\n"
+                     "mixing: per corrected texel, pointcloud: per shading point")
     right.set_title("cost per lookup; labels: batched speed-up\nover the scalar port, same run")
     right.legend(fontsize=7)
     fig.suptitle(f"probeproxy bench: every method on {len(levels)} levels")
@@ -219,6 +231,10 @@ def sweep_charts(sweeps_json, out_dir):
         save(fig, out_dir, f"sweep_{sweep['name']}")
 
 
+def percent(v):
+    return 100 * v if finite(v) else None
+
+
 def markdown_table(by_level):
     """Per level and method: the median over probes of the best candidate's p95 (as in the
     summary chart), with its ns per lookup (batched, scalar), instructions and PSNR."""
@@ -231,6 +247,9 @@ def markdown_table(by_level):
             for r in by_level[level]:
                 if r["method"] != method or r.get("candidate") == "authored":
                     continue
+                if method in ONE_ROW_METHODS:
+                    best[r["probe"]] = r
+                    continue
                 if method == "convex" and r["planes"] > 16 or not finite(r["p95_deg"]):
                     continue
                 if finite(r["miss_rate"]) and r["miss_rate"] > MAX_MISS_RATE:
@@ -239,14 +258,19 @@ def markdown_table(by_level):
                     best[r["probe"]] = r
             if not best:
                 continue
-            rows = sorted(best.values(), key=lambda r: r["p95_deg"])
+            # The median probe by p95, or by PSNR for a method without angular error.
+            key = "p95_deg" if any(finite(r["p95_deg"]) for r in best.values()) else "psnr_db"
+            rows = sorted(best.values(),
+                          key=lambda r: r[key] if finite(r[key]) else math.inf)
             mid = rows[len(rows) // 2]
             ratio = (mid["ns_per_lookup_scalar"] / mid["ns_per_lookup"]
                      if finite(mid.get("ns_per_lookup_scalar")) and finite(mid["ns_per_lookup"])
                      else None)
             name = method if method != "convex" else f"convex ({mid['planes']} planes)"
+            if method in ("mixing_plane", "raster_convex"):
+                name = f"{method} (kept {mid['candidate']})"
             lines.append(f"| {level} | {name} | {fmt(mid['p95_deg'], '.3f')} | "
-                         f"{fmt(mid['median_deg'], '.3f')} | {fmt(100 * mid['miss_rate'], '.1f')} | "
+                         f"{fmt(mid['median_deg'], '.3f')} | {fmt(percent(mid['miss_rate']), '.1f')} | "
                          f"{fmt(mid['ns_per_lookup'], '.2f')} | "
                          f"{fmt(mid.get('ns_per_lookup_scalar'), '.2f')} | {fmt(ratio, '.1f')} | "
                          f"{fmt(mid['instructions_per_lookup'], '.1f')} | "

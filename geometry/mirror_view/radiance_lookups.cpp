@@ -2,6 +2,7 @@
 
 #include "core/cube/cubemap_sampling.h"
 #include "core/parallax/prepared_proxy.h"
+#include "geometry/evaluation/evaluate_mixing.h"
 
 namespace probeproxy {
 
@@ -27,6 +28,14 @@ RadianceLookup trueHitRadianceLookup(const Cubemap& cube, const LevelRayCaster& 
     if (!hit.hit()) return sampleBilinear(cube, glm::vec3(r), 0.0f);
     const glm::dvec3 h = x + static_cast<double>(hit.t) * r;
     return sampleBilinear(cube, glm::vec3(h - captureMeters), 0.0f);
+  };
+}
+
+RadianceLookup correctedCubeRadianceLookup(const CorrectedCubemap& corrected) {
+  return [&corrected](glm::dvec3, glm::dvec3 r) -> std::optional<glm::vec3> {
+    const CubeTexel t = nearestCubeTexel(r, corrected.cube.faceSize(0));
+    if (corrected.missMask.at(0)[static_cast<std::size_t>(t.face)][t.index]) return std::nullopt;
+    return sampleBilinear(corrected.cube, glm::vec3(r), 0.0f);
   };
 }
 

@@ -3,6 +3,7 @@
 // a reflected ray. Each keeps references to its arguments: they must outlive it.
 
 #include "core/cube/cubemap.h"
+#include "core/mixing/corrected_cubemap.h"
 #include "core/pointcloud/point_cloud_splat.h"
 #include "core/proxy/proxy_shape.h"
 #include "geometry/mirror_view/mirror_view_reconstruction.h"
@@ -22,6 +23,12 @@ RadianceLookup proxyRadianceLookup(const Cubemap& cube, const ProxyShape& shape,
 // renders' noise: the best any proxy can do with this cubemap.
 RadianceLookup trueHitRadianceLookup(const Cubemap& cube, const LevelRayCaster& level,
                                      glm::dvec3 captureMeters);
+
+// The mixing step (mixing_plane, raster_convex): the cube corrected for the view's reflected
+// camera E' (correctCubemap), fetched bilinearly at its sharpest level along r (x lies on the
+// ray from E' along r, as the mirror's reflected view ray). A miss where the texel holding r
+// is a missed one (the seed's red).
+RadianceLookup correctedCubeRadianceLookup(const CorrectedCubemap& corrected);
 
 // Seed 003's proxy-free `pointcloud` method: the cloud splatted around x, sampled along r
 // (point_cloud_splat.h). A direction no splat or fill reached is a miss.

@@ -2,7 +2,7 @@
 # runs give byte-identical SVGs.
 foreach(run 1 2)
   file(REMOVE_RECURSE ${OUT}${run})
-  execute_process(COMMAND ${PYTHON} ${SCRIPT} ${FIXTURE} ${OUT}${run}
+  execute_process(COMMAND ${PYTHON} ${SCRIPT} ${FIXTURE} ${OUT}${run} --table
     RESULT_VARIABLE code ERROR_VARIABLE err)
   if(NOT code EQUAL 0)
     message(FATAL_ERROR "bench_charts.py exited ${code}: ${err}")

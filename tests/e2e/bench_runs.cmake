@@ -1,5 +1,6 @@
 cmake_minimum_required(VERSION 3.20)
-# `probeproxy bench --json --out` on one level: every method of DESIGN.md's table has a row,
+# `probeproxy bench --json --out` on one level: every method of DESIGN.md's table has a row
+# (mixing_plane, raster_convex and pointcloud included),
 # each row starts with DESIGN.md's names in order, both lookup paths are timed, instructions
 # are counted (valgrind is in scripts/setup.sh), psnr_db against Cycles is there, a figure not
 # measured would be null, and bench.json holds what stdout printed.
@@ -27,14 +28,35 @@ math(EXPR last "${rows} - 1")
 foreach(i RANGE ${last})
   string(JSON method GET "${json}" results ${i} method)
   list(APPEND methods ${method})
-  foreach(path ns_per_lookup ns_per_lookup_scalar instructions_per_lookup psnr_db)
+  # The mixing step and the point cloud: ns per corrected texel or shading point and a PSNR,
+  # no scalar port and no instruction count (null, never made up).
+  if(method MATCHES "^(mixing_plane|raster_convex|pointcloud)$")
+    set(measured ns_per_lookup psnr_db)
+    set(unmeasured ns_per_lookup_scalar instructions_per_lookup)
+  else()
+    set(measured ns_per_lookup ns_per_lookup_scalar instructions_per_lookup psnr_db)
+    set(unmeasured "")
+  endif()
+  # pointcloud gives no direction: no angular error, no miss rate.
+  if(method STREQUAL "pointcloud")
+    list(APPEND unmeasured median_deg p95_deg miss_rate)
+  else()
+    list(APPEND measured p95_deg)
+  endif()
+  foreach(path ${measured})
     string(JSON ns GET "${json}" results ${i} ${path})
-    if(ns STREQUAL "null" OR NOT ns GREATER 0)
+    if(ns STREQUAL "null" OR ns LESS 0 OR (NOT path STREQUAL "p95_deg" AND NOT ns GREATER 0))
       message(FATAL_ERROR "row ${i} (${method}): ${path} is ${ns}")
     endif()
   endforeach()
+  foreach(path ${unmeasured})
+    string(JSON type TYPE "${json}" results ${i} ${path})
+    if(NOT type STREQUAL "NULL")
+      message(FATAL_ERROR "row ${i} (${method}): ${path} is a ${type}, expected null")
+    endif()
+  endforeach()
 endforeach()
-foreach(method infinite cheap_k sphere aabb obb convex)
+foreach(method infinite cheap_k sphere aabb obb convex mixing_plane raster_convex pointcloud)
   if(NOT method IN_LIST methods)
     message(FATAL_ERROR "no row for method ${method}: ${methods}")
   endif()

@@ -1,11 +1,12 @@
 #include "plugin/cli/bench/bench_scenes.h"
 
-#include "core/cube/cubemap_io.h"
 #include "geometry/build/build_scene_proxies.h"
 #include "geometry/level/load_level.h"
 #include "geometry/mirror_view/mirror_view_reconstruction.h"
 #include "geometry/mirror_view/radiance_lookups.h"
 #include "geometry/scene/scene_file.h"
+#include "plugin/cli/bench/image_reference.h"
+#include "plugin/cli/bench/mixing_pointcloud_rows.h"
 #include "plugin/cost/instructions_per_lookup.h"
 
 #include <tbb/parallel_for.h>
@@ -62,34 +63,11 @@ std::map<std::string, std::optional<double>> countInstructions(
   return byName;
 }
 
-// A probe's Cycles cubemap and its reference mirror views: what psnr_db is measured on.
-struct ImageReference {
-  Cubemap cube;
-  std::vector<MirrorViewReference> views;
-};
-
-// The probe's mirror views (the scene's mirror_views/ folder) with its cubemap; none when the
-// scene has no views of this probe or the probe no cubemap (psnr_db is then null).
-std::optional<ImageReference> imageReference(const Scene& scene, const Probe& probe) {
-  if (!probe.cubemap) return std::nullopt;
-  ImageReference ref;
-  for (const std::filesystem::path& file : mirrorViewFiles(scene)) {
-    MirrorView view = readMirrorView(file);
-    if (view.probe == probe.name) ref.views.push_back(loadMirrorViewReference(view));
-  }
-  if (ref.views.empty()) return std::nullopt;
-  ref.cube = readCubemap((scene.file.parent_path() / *probe.cubemap).string());
-  return ref;
-}
-
 // Mean PSNR over the probe's mirror views of the reflection rebuilt with this proxy.
 std::optional<double> psnrDb(const ImageReference& ref, const ProxyShape& shape,
                              glm::dvec3 captureMeters) {
-  double sum = 0.0;
   const RadianceLookup lookup = proxyRadianceLookup(ref.cube, shape, captureMeters);
-  for (const MirrorViewReference& view : ref.views)
-    sum += reconstructMirrorView(view, lookup).error.psnrDb;
-  return sum / static_cast<double>(ref.views.size());
+  return meanPsnrDb(ref.views, [&](const MirrorViewReference&) { return lookup; });
 }
 
 struct LoadedScene {
@@ -124,6 +102,9 @@ std::vector<BenchResult> benchScenes(const std::vector<std::string>& sceneFiles,
   std::vector<TimingJob> jobs;
   std::vector<std::size_t> jobRow;
   std::vector<std::string> jobWorkload;  // the cost workload of the job's method and planes
+  std::vector<CallJob> calls;            // mixing step and point cloud: ns per texel or point
+  std::vector<std::size_t> callRow;
+  std::vector<std::unique_ptr<std::vector<ReflectionSample>>> draws;
   std::map<std::string, std::optional<double>> instructions;
   for (const LoadedScene& s : scenes) {
     say("building proxies: " + s.name + " (" + std::to_string(s.scene.probes.size()) + " probes)");
@@ -133,9 +114,12 @@ std::vector<BenchResult> benchScenes(const std::vector<std::string>& sceneFiles,
       // The draw the build reports its errors on (build_probe_proxy.cpp: seed + 1000).
       ReflectionSampleOptions drawOptions = buildOptions.samples;
       drawOptions.seed = buildOptions.samples.seed + 1000;
-      rays.push_back(std::make_unique<LookupRays>(
-          raysOf(buildReflectionSamples(*s.level, probe, SampleSet::MirrorFloor, drawOptions))));
-      const std::optional<ImageReference> images = imageReference(s.scene, probe);
+      draws.push_back(std::make_unique<std::vector<ReflectionSample>>(
+          buildReflectionSamples(*s.level, probe, SampleSet::MirrorFloor, drawOptions)));
+      rays.push_back(std::make_unique<LookupRays>(raysOf(*draws.back())));
+      std::shared_ptr<const ImageReference> images;
+      if (std::optional<ImageReference> loaded = imageReference(s.scene, probe))
+        images = std::make_shared<const ImageReference>(std::move(*loaded));
       for (std::size_t c = 0; c < builds[p].candidates.size(); ++c) {
         const ProxyCandidate& candidate = builds[p].candidates[c];
         BenchResult row;
@@ -166,6 +150,21 @@ std::vector<BenchResult> benchScenes(const std::vector<std::string>& sceneFiles,
         jobWorkload.push_back(costWorkloadName(prepared.back()->method, row.planes));
         instructions[jobWorkload.back()] = std::nullopt;
       }
+      const ProbeBenchInputs inputs{s.name,
+                                    &probe,
+                                    s.level.get(),
+                                    &builds[p].candidates[builds[p].kept],
+                                    *draws.back(),
+                                    images,
+                                    buildOptions.depthFaceSize};
+      for (auto rowsOf : {mixingRows, pointCloudRows}) {
+        for (MethodRow& m : rowsOf(inputs)) {
+          results.push_back(std::move(m.row));
+          if (!m.cost) continue;
+          calls.push_back(std::move(*m.cost));
+          callRow.push_back(results.size() - 1);
+        }
+      }
     }
   }
 
@@ -176,18 +175,21 @@ std::vector<BenchResult> benchScenes(const std::vector<std::string>& sceneFiles,
         " workloads");
     instructions = countInstructions(workloads, say);
   }
-  say("timing " + std::to_string(jobs.size()) + " proxies, scalar and batched, " +
+  say("timing " + std::to_string(jobs.size()) + " proxies, scalar and batched, and " +
+      std::to_string(calls.size()) + " corrected cubemaps and point clouds, " +
       std::to_string(options.timing.repetitions) + " repetitions");
-  const std::vector<LookupTiming> timings =
-      timeLookups(jobs, options.timing, [&](std::size_t done, std::size_t total) {
+  const Timings timings =
+      timeBenchmarks(jobs, calls, options.timing, [&](std::size_t done, std::size_t total) {
         if (done * 10 / total != (done - 1) * 10 / total)
           say("timed " + std::to_string(done) + "/" + std::to_string(total) + " benchmarks");
       });
   for (std::size_t j = 0; j < jobs.size(); ++j) {
-    results[jobRow[j]].nsPerLookup = timings[j].batchedNs;
-    results[jobRow[j]].nsPerLookupScalar = timings[j].scalarNs;
+    results[jobRow[j]].nsPerLookup = timings.lookups[j].batchedNs;
+    results[jobRow[j]].nsPerLookupScalar = timings.lookups[j].scalarNs;
     results[jobRow[j]].instructionsPerLookup = instructions[jobWorkload[j]];
   }
+  for (std::size_t c = 0; c < calls.size(); ++c)
+    results[callRow[c]].nsPerLookup = timings.nsPerItem[c];
   return results;
 }
 

@@ -40,6 +40,10 @@ void batchedLookups(benchmark::State& state, const TimingJob& job, Scratch* out)
   }
 }
 
+void calls(benchmark::State& state, const CallJob& job) {
+  for (auto _ : state) job.call();
+}
+
 // Keeps each benchmark's median CPU time per iteration (or its only run when there is one
 // repetition) and prints nothing: the bench verb has its own table.
 class MedianReporter : public benchmark::BenchmarkReporter {
@@ -79,9 +83,11 @@ void initializeBenchmarkLibrary(const TimingOptions& o) {
 
 }  // namespace
 
-std::vector<LookupTiming> timeLookups(const std::vector<TimingJob>& jobs,
-                                      const TimingOptions& options,
-                                      const std::function<void(std::size_t, std::size_t)>& onDone) {
+void keepResult(const void* result) { benchmark::DoNotOptimize(result); }
+
+Timings timeBenchmarks(const std::vector<TimingJob>& jobs, const std::vector<CallJob>& callJobs,
+                       const TimingOptions& options,
+                       const std::function<void(std::size_t, std::size_t)>& onDone) {
   initializeBenchmarkLibrary(options);
   std::vector<Scratch> scratch(jobs.size());
   for (std::size_t j = 0; j < jobs.size(); ++j) {
@@ -93,22 +99,30 @@ std::vector<LookupTiming> timeLookups(const std::vector<TimingJob>& jobs,
     benchmark::RegisterBenchmark(("scalar/" + id).c_str(), scalarLookups, jobs[j], &scratch[j]);
     benchmark::RegisterBenchmark(("batched/" + id).c_str(), batchedLookups, jobs[j], &scratch[j]);
   }
+  for (std::size_t c = 0; c < callJobs.size(); ++c)
+    benchmark::RegisterBenchmark(("call/" + std::to_string(c)).c_str(), calls, callJobs[c]);
   std::size_t done = 0;
-  const std::size_t total = 2 * jobs.size();
+  const std::size_t total = 2 * jobs.size() + callJobs.size();
   MedianReporter reporter([&] {
     if (onDone) onDone(++done, total);
   });
   benchmark::RunSpecifiedBenchmarks(&reporter);
   benchmark::ClearRegisteredBenchmarks();
 
-  std::vector<LookupTiming> timings(jobs.size());
+  Timings timings;
+  timings.lookups.resize(jobs.size());
   for (std::size_t j = 0; j < jobs.size(); ++j) {
     const double rays = static_cast<double>(jobs[j].rays->size());
     const std::string id = std::to_string(j);
     if (auto s = reporter.seconds.find("scalar/" + id); s != reporter.seconds.end())
-      timings[j].scalarNs = s->second / rays;
+      timings.lookups[j].scalarNs = s->second / rays;
     if (auto b = reporter.seconds.find("batched/" + id); b != reporter.seconds.end())
-      timings[j].batchedNs = b->second / rays;
+      timings.lookups[j].batchedNs = b->second / rays;
+  }
+  timings.nsPerItem.resize(callJobs.size());
+  for (std::size_t c = 0; c < callJobs.size(); ++c) {
+    if (auto t = reporter.seconds.find("call/" + std::to_string(c)); t != reporter.seconds.end())
+      timings.nsPerItem[c] = t->second / callJobs[c].itemsPerCall;
   }
   return timings;
 }

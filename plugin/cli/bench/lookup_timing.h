@@ -28,14 +28,31 @@ struct LookupTiming {
   std::optional<double> batchedNs;  // the same for the batched kernel
 };
 
+// Work that is not a per-ray lookup (a corrected cubemap, a point-cloud splat), timed the same
+// way and reported per item of it.
+struct CallJob {
+  std::function<void()> call;  // one unit of work; safe to repeat
+  double itemsPerCall = 1.0;   // what the ns are per: texels corrected, shading points
+};
+
 struct TimingOptions {
   int repetitions = 5;           // medians are taken over these
   double minTimeSeconds = 0.01;  // per repetition; short: thousands of rays per iteration
 };
 
-// One timing per job, in job order. `onDone(done, total)` is called after each benchmark.
-std::vector<LookupTiming> timeLookups(
-    const std::vector<TimingJob>& jobs, const TimingOptions& options,
-    const std::function<void(std::size_t, std::size_t)>& onDone = {});
+// Keeps the compiler from dropping work whose result a call job does not use
+// (benchmark::DoNotOptimize on the bytes at `result`).
+void keepResult(const void* result);
+
+struct Timings {
+  std::vector<LookupTiming> lookups;             // one per TimingJob, in order
+  std::vector<std::optional<double>> nsPerItem;  // one per CallJob, in order: median CPU ns
+};
+
+// Every lookup job (scalar then batched) and every call job, in one run. `onDone(done, total)`
+// is called after each benchmark.
+Timings timeBenchmarks(const std::vector<TimingJob>& jobs, const std::vector<CallJob>& calls,
+                       const TimingOptions& options,
+                       const std::function<void(std::size_t, std::size_t)>& onDone = {});
 
 }  // namespace probeproxy::cli

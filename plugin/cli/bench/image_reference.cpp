@@ -1,0 +1,27 @@
+#include "plugin/cli/bench/image_reference.h"
+
+#include "core/cube/cubemap_io.h"
+
+namespace probeproxy::cli {
+
+std::optional<ImageReference> imageReference(const Scene& scene, const Probe& probe) {
+  if (!probe.cubemap) return std::nullopt;
+  ImageReference ref;
+  for (const std::filesystem::path& file : mirrorViewFiles(scene)) {
+    MirrorView view = readMirrorView(file);
+    if (view.probe == probe.name) ref.views.push_back(loadMirrorViewReference(view));
+  }
+  if (ref.views.empty()) return std::nullopt;
+  ref.cube = readCubemap((scene.file.parent_path() / *probe.cubemap).string());
+  return ref;
+}
+
+double meanPsnrDb(const std::vector<MirrorViewReference>& views,
+                  const std::function<RadianceLookup(const MirrorViewReference&)>& lookupFor) {
+  double sum = 0.0;
+  for (const MirrorViewReference& view : views)
+    sum += reconstructMirrorView(view, lookupFor(view)).error.psnrDb;
+  return sum / static_cast<double>(views.size());
+}
+
+}  // namespace probeproxy::cli
