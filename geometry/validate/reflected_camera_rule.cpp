@@ -28,6 +28,10 @@ void checkReflectedCameras(const LevelRayCaster& level, const Probe& probe,
     for (const glm::dvec3& eye : cameras) {
       const double height = glm::dot(plane.normal, eye - plane.pointMeters);
       if (height <= 0.0) continue;  // a camera below the receiver does not see it
+      // A camera behind a wall from the capture point is influence_leak's business.
+      if (level.firstHit({probe.captureMeters, glm::vec3(eye - probe.captureMeters), 0.0f, 0.999f})
+              .hit())
+        continue;
       const glm::dvec3 tested =
           options.glossyReceivers ? eye - 2.0 * height * plane.normal : eye - height * plane.normal;
       const double outside = metersOutside(authored, tested);

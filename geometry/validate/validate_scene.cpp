@@ -35,7 +35,11 @@ std::vector<ValidationFinding> validateScene(const Scene& scene, const LevelRayC
     if (authored) checkReflectedCameras(level, probe, *authored, options, findings);
   }
   checkOverlaps(scene, options, findings);
+  // Overlapping inner ranges make the weights jump where one range ends (both claim 100%):
+  // that is one problem, reported once.
+  const std::size_t beforeInner = findings.size();
   checkInnerRanges(scene, options, findings);
+  if (findings.size() == beforeInner) checkWeightJumps(scene, level, options, findings);
   checkFloorCoverage(scene, floor, options, findings);
   return findings;
 }

@@ -56,6 +56,8 @@ struct ValidateOptions {
   // weight_jump: blend weights may change at most this much per centimetre between
   // neighbouring grid points.
   double maxWeightJumpPerCentimeter = 0.02;
+  // weight_jump: spacing of the horizontal grid the weights are compared on.
+  double weightGridMeters = 0.01;
   // influence_leak: at most this share of an influence volume's walkable floor may be
   // hidden from its capture point.
   double maxLeakShare = 0.05;

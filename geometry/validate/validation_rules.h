@@ -40,6 +40,8 @@ void checkOverlaps(const Scene& scene, const ValidateOptions& options,
                    std::vector<ValidationFinding>& out);
 void checkInnerRanges(const Scene& scene, const ValidateOptions& options,
                       std::vector<ValidationFinding>& out);
+void checkWeightJumps(const Scene& scene, const LevelRayCaster& level,
+                      const ValidateOptions& options, std::vector<ValidationFinding>& out);
 void checkFloorCoverage(const Scene& scene, const std::vector<FloorPoint>& floor,
                         const ValidateOptions& options, std::vector<ValidationFinding>& out);
 

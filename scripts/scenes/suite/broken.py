@@ -6,7 +6,7 @@ correct, so a test can expect one specific one-line error (exit code 2) per file
 the output lists them. No bpy here: nothing is rendered.
 """
 
-from . import scene_json
+from . import scene_json, validation_variants
 from .spec import Box, BoxInfluence, Probe
 
 # A 4 x 3 x 3 m box room around the origin: small, valid, and easy to reason about.
@@ -170,7 +170,7 @@ def write_all(out):
         "malformed.obj": MALFORMED_OBJ,
         "empty_level.obj": EMPTY_OBJ,
         "messy_but_valid.obj": MESSY_OBJ,
-        "README.md": README,
+        "README.md": README + validation_variants.README,
     }
     scenes = {
         "nan_vertex": _scene("nan_vertex.obj"),
@@ -198,4 +198,4 @@ def write_all(out):
 
     for name, text in files.items():
         (out / name).write_text(text, encoding="utf-8")
-    return len(files)
+    return len(files) + validation_variants.write_all(out)
