@@ -493,10 +493,18 @@ ProxySpec readProxy(const Json& value, const std::string& path, const FileFrame&
   return convex;
 }
 
+// Six files (`{face}` in the name) or one cross or equirectangular image: the image readers
+// (core/cube/cubemap_io.h) take .exr, .hdr and .png.
 std::string cubemapPattern(const Json& value, const std::string& path) {
-  if (!value.is_string() ||
-      value.get_ref<const std::string&>().find(kFacePlaceholder) == std::string::npos) {
-    failExpected(path, std::string("a path containing ") + kFacePlaceholder, value);
+  const auto isImagePath = [](const std::string& text) {
+    const std::string extension = fs::path(text).extension().string();
+    return extension == ".exr" || extension == ".hdr" || extension == ".png";
+  };
+  if (!value.is_string() || !isImagePath(value.get_ref<const std::string&>())) {
+    failExpected(path,
+                 std::string("an .exr, .hdr or .png image path (six files with ") +
+                     kFacePlaceholder + ", or one cross or equirectangular image)",
+                 value);
   }
   return value.get<std::string>();
 }

@@ -251,6 +251,17 @@ TEST_F(SceneFileTest, PlainStringLevelEntriesAreShortForMeshObjects) {
             R"(  "level": [ { "mesh": "a.obj" }, { "mesh": "b.ply" } ],)");
 }
 
+TEST_F(SceneFileTest, CubemapIsSixFilesOrOneCrossOrEquirectImage) {
+  for (const std::string cubemap : {"cubes/a_{face}.exr", "cubes/a_cross.hdr", "a_latlong.png"}) {
+    const Scene scene = readSceneFile(
+        write("s.scene.json", sceneJson(probeJson({{"cubemap", "\"" + cubemap + "\""}}))));
+    ASSERT_TRUE(scene.probes[0].cubemap.has_value());
+    EXPECT_EQ(*scene.probes[0].cubemap, cubemap);
+    EXPECT_EQ(lineWith(sceneFileJson(scene), "\"cubemap\""),
+              "      \"cubemap\": \"" + cubemap + "\"");
+  }
+}
+
 TEST_F(SceneFileTest, GltfMeshesDefaultToYUpOthersToTheScenes) {
   const Scene zScene = readSceneFile(
       write("z.scene.json", sceneJson(probeJson(), R"("probeproxy_scene": 1, "up": "Z", "level":
@@ -564,8 +575,9 @@ std::vector<ErrorCase> errorCases() {
        sceneJson(probeJson({{"proxy", R"({"kind": "convex", "mesh": "hull.stl"})"}})),
        R"($.probes[0].proxy.mesh: expected a mesh path ending in .glb, .gltf, .obj, .ply or )"
        R"(.off, got "hull.stl")"},
-      {"cubemap_without_face", sceneJson(probeJson({{"cubemap", R"("probe.exr")"}})),
-       R"($.probes[0].cubemap: expected a path containing {face}, got "probe.exr")"},
+      {"cubemap_not_an_image", sceneJson(probeJson({{"cubemap", R"("probe_{face}.txt")"}})),
+       R"($.probes[0].cubemap: expected an .exr, .hdr or .png image path (six files with )"
+       R"({face}, or one cross or equirectangular image), got "probe_{face}.txt")"},
       {"overflow_in_metres",
        sceneJson(
            probeJson({{"capture", "[1e300, 0, 0]"}}),

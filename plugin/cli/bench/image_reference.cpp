@@ -12,7 +12,7 @@ std::optional<ImageReference> imageReference(const Scene& scene, const Probe& pr
     if (view.probe == probe.name) ref.views.push_back(loadMirrorViewReference(view));
   }
   if (ref.views.empty()) return std::nullopt;
-  ref.cube = readCubemap((scene.file.parent_path() / *probe.cubemap).string());
+  ref.cube = readCubemapImage(scene.file.parent_path() / *probe.cubemap);
   return ref;
 }
 

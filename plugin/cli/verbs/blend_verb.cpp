@@ -98,7 +98,7 @@ int runBlend(const BlendVerbOptions& o) {
     std::vector<std::string> patterns;
     for (const ProbeWeight& w : weights) {
       patterns.push_back(cubemapPattern(scene, scene.probes[w.probe]));
-      cubes.push_back(readCubemap(patterns.back()));
+      cubes.push_back(readCubemapImage(patterns.back()));
       if (!sameCubemapLayout(cubes.back(), cubes.front())) {
         std::string problem = "face size ";
         problem += std::to_string(cubes.back().faceSize());

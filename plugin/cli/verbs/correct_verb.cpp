@@ -108,7 +108,7 @@ int runCorrect(const CorrectOptions& o) {
   if (!probe.cubemap) throw InputError(scene.file, "probe '" + probe.name + "' has no cubemap");
   std::filesystem::path cubemap(*probe.cubemap);
   if (cubemap.is_relative()) cubemap = scene.file.parent_path() / cubemap;
-  const Cubemap source = readCubemap(cubemap.string());
+  const Cubemap source = readCubemapImage(cubemap);
 
   const ConvexProxy proxy = probeProxy(scene, probe, o.proxies);
   if (signedDistanceOutside(proxy.planes, probe.captureMeters) >= 0.0)
