@@ -8,6 +8,7 @@
 #include "core/errors/input_error.h"
 #include "core/image/write_png.h"
 #include "geometry/scene/scene_file.h"
+#include "plugin/cli/mixing_inputs.h"
 #include "plugin/cli/number_list.h"
 #include "plugin/cli/verb.h"
 
@@ -32,6 +33,8 @@ struct BlendVerbOptions {
   int maxProbes = kDefaultMaxBlendProbes;
   std::string weightsPng;
   bool json = false;
+  // Parallax-correct each probe for this camera and reflection plane before mixing.
+  std::string camera, plane, proxies, method = "mixing_plane";
 };
 
 constexpr char kFace[] = "{face}";
@@ -48,19 +51,10 @@ std::string levelPattern(const std::string& pattern, int level) {
   return p;
 }
 
+// One face's file of a six-file pattern; a single cross or equirect image is itself.
 std::string faceFile(std::string pattern, const char* face) {
-  return pattern.replace(pattern.find(kFace), sizeof(kFace) - 1, face);
-}
-
-// The probe's cubemap pattern as the scene file wrote it, resolved against the scene's folder.
-std::string cubemapPattern(const Scene& scene, const Probe& probe) {
-  if (!probe.cubemap) {
-    std::string problem = "probe '";
-    problem += probe.name;
-    problem += "' has no cubemap to mix (scene field probes[].cubemap)";
-    throw InputError(scene.file, problem);
-  }
-  return (scene.file.parent_path() / *probe.cubemap).string();
+  const std::size_t at = pattern.find(kFace);
+  return at == std::string::npos ? pattern : pattern.replace(at, sizeof(kFace) - 1, face);
 }
 
 std::string pointText(glm::dvec3 p) {
@@ -83,6 +77,14 @@ int runBlend(const BlendVerbOptions& o) {
   std::vector<InfluenceVolume> volumes;
   for (const Probe& p : scene.probes) volumes.push_back(p.influence);
   const BlendOptions options{*blendSchemeFromName(o.scheme), o.maxProbes};
+  std::optional<glm::dvec3> camera;
+  if (!o.camera.empty()) {
+    const std::vector<double> c = parseNumberList(o.camera, 3, "--camera");
+    camera = glm::dvec3(c[0], c[1], c[2]);
+  }
+  const std::optional<MixingMethod> method = mixingMethodFromName(o.method);
+  if (!method)
+    throw InputError("--method", "expected mixing_plane or raster_convex, got '" + o.method + "'");
 
   // Everything is read and checked before anything is written.
   const std::vector<ProbeWeight> weights = blendWeights(volumes, at, options);
@@ -97,8 +99,16 @@ int runBlend(const BlendVerbOptions& o) {
     std::vector<Cubemap> cubes;
     std::vector<std::string> patterns;
     for (const ProbeWeight& w : weights) {
-      patterns.push_back(cubemapPattern(scene, scene.probes[w.probe]));
+      const Probe& probe = scene.probes[w.probe];
+      patterns.push_back(probeCubemapPath(scene, probe).string());
       cubes.push_back(readCubemapImage(patterns.back()));
+      if (camera) {
+        // Each probe seen from the reflected camera through its own proxy (seed 000's mixing
+        // step), so the mix is already parallax-corrected for this camera and plane.
+        cubes.back() =
+            correctProbe(scene, probe, cubes.back(), *camera, o.plane, o.proxies, *method)
+                .corrected.cube;
+      }
       if (!sameCubemapLayout(cubes.back(), cubes.front())) {
         std::string problem = "face size ";
         problem += std::to_string(cubes.back().faceSize());
@@ -181,6 +191,17 @@ Verb addBlendVerb(CLI::App& app) {
       "--weights-png", o->weightsPng,
       "also write the top-down weight picture (PNG) of the level at the point's height");
   verb->add_flag("--json", o->json, "print the weights and files as JSON on stdout");
+  verb->add_option("--camera", o->camera,
+                   "parallax-correct every mixed probe first for a camera at X,Y,Z over a "
+                   "reflection plane (the mixing step of `probeproxy correct`)");
+  verb->add_option("--plane", o->plane,
+                   "with --camera: reflection plane PX,PY,PZ,NX,NY,NZ (default: each probe's "
+                   "first reflection_planes entry)");
+  verb->add_option("--proxies", o->proxies,
+                   "with --camera: proxies.json written by `probeproxy build`: use its kept "
+                   "proxies");
+  verb->add_option("--method", o->method, "with --camera: mixing_plane or raster_convex")
+      ->capture_default_str();
   return {verb, [o] { return runBlend(*o); }};
 }
 

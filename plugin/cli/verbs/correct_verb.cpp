@@ -5,12 +5,8 @@
 #include "core/errors/input_error.h"
 #include "core/mixing/corrected_cubemap.h"
 #include "core/mixing/reflected_camera.h"
-#include "core/proxy/proxy_shape.h"
-#include "geometry/build/authored_proxy_shape.h"
-#include "geometry/build/build_probe_proxy.h"
-#include "geometry/export/runtime_export.h"
-#include "geometry/level/load_level.h"
 #include "geometry/scene/scene_file.h"
+#include "plugin/cli/mixing_inputs.h"
 #include "plugin/cli/number_list.h"
 #include "plugin/cli/verb.h"
 
@@ -26,58 +22,6 @@ struct CorrectOptions {
   std::string scene, probe, camera, plane, out, method = "mixing_plane", proxies;
 };
 
-const Probe& findProbe(const Scene& scene, const std::string& name) {
-  for (const Probe& p : scene.probes)
-    if (p.name == name) return p;
-  std::string known;
-  for (const Probe& p : scene.probes) known += (known.empty() ? "" : ", ") + p.name;
-  std::string problem = "no probe named '";
-  problem += name;
-  problem += "' (probes: ";
-  problem += known;
-  problem += ")";
-  throw InputError(scene.file, problem);
-}
-
-// The mixing step draws planes and triangles: boxes and convex proxies. A sphere, cheap_k or
-// infinite proxy has no such volume.
-ConvexProxy convexVolume(const ProxyShape& shape, const std::filesystem::path& from,
-                         const std::string& probe) {
-  if (const auto* box = std::get_if<BoxShape>(&shape)) return convexFromBox(*box);
-  if (const auto* convex = std::get_if<ConvexProxy>(&shape)) {
-    if (!convex->planes.empty() && !convex->triangles.empty()) return *convex;
-  }
-  std::string problem = "probe '";
-  problem += probe;
-  problem += "' has a ";
-  problem += methodId(shape);
-  problem += " proxy; the mixing step needs a box or convex proxy";
-  throw InputError(from, problem);
-}
-
-// The proxy a probe is corrected with: the kept one of a `build` export when given, else the
-// one the scene file authors, else (`auto`) one built now from the level.
-ConvexProxy probeProxy(const Scene& scene, const Probe& probe, const std::string& proxiesJson) {
-  if (!proxiesJson.empty()) {
-    const RuntimeExport runtime = readRuntimeExport(proxiesJson);
-    for (const RuntimeProbe& p : runtime.probes) {
-      if (p.name != probe.name) continue;
-      if (p.box) return convexFromBox(*p.box);
-      return convexVolume(p.convex, proxiesJson, probe.name);
-    }
-    std::string problem = "no probe named '";
-    problem += probe.name;
-    problem += "'";
-    throw InputError(proxiesJson, problem);
-  }
-  if (const std::optional<ProxyShape> authored = authoredProxyShape(probe.proxy, scene))
-    return convexVolume(*authored, scene.file, probe.name);
-  const LevelMesh level = loadLevel(scene);
-  const LevelRayCaster rayCaster(level);
-  const ProbeProxyBuild build = buildProbeProxy(rayCaster, probe, std::nullopt, {});
-  return convexVolume(build.candidates.at(build.kept).shape, scene.file, probe.name);
-}
-
 int runCorrect(const CorrectOptions& o) {
   // Everything is read and checked first; the six files are written only at the end.
   const Scene scene = readSceneFile(o.scene);
@@ -85,38 +29,14 @@ int runCorrect(const CorrectOptions& o) {
   const std::optional<MixingMethod> method = mixingMethodFromName(o.method);
   if (!method)
     throw InputError("--method", "expected mixing_plane or raster_convex, got '" + o.method + "'");
-  const std::vector<double> c = parseNumberList(o.camera, 3, "--camera");
-  const glm::dvec3 camera(c[0], c[1], c[2]);
+  const std::vector<double> xyz = parseNumberList(o.camera, 3, "--camera");
+  const glm::dvec3 camera(xyz[0], xyz[1], xyz[2]);
 
-  ReflectionPlane plane;
-  if (!o.plane.empty()) {
-    const std::vector<double> p = parseNumberList(o.plane, 6, "--plane");
-    plane = {{p[0], p[1], p[2]}, {p[3], p[4], p[5]}};
-    if (plane.normal == glm::dvec3(0.0)) throw InputError("--plane", "the normal is zero");
-  } else if (!probe.reflectionPlanes.empty()) {
-    plane = probe.reflectionPlanes.front();
-  } else {
-    throw InputError(scene.file,
-                     "probe '" + probe.name + "' has no reflection_planes; give one with --plane");
-  }
-  if (!(heightAbovePlaneMeters(camera, plane) > 0.0))
-    throw InputError("--camera",
-                     "the camera must be above the reflection plane (on the side "
-                     "its normal points to)");
   if (o.out.find("{face}") == std::string::npos)
     throw InputError(o.out, "the output pattern needs {face} (px nx py ny pz nz)");
-  if (!probe.cubemap) throw InputError(scene.file, "probe '" + probe.name + "' has no cubemap");
-  std::filesystem::path cubemap(*probe.cubemap);
-  if (cubemap.is_relative()) cubemap = scene.file.parent_path() / cubemap;
-  const Cubemap source = readCubemapImage(cubemap);
-
-  const ConvexProxy proxy = probeProxy(scene, probe, o.proxies);
-  if (signedDistanceOutside(proxy.planes, probe.captureMeters) >= 0.0)
-    throw InputError(scene.file, "probe '" + probe.name + "' captures outside its proxy");
-
-  const glm::dvec3 reflected = reflectThroughPlane(camera, plane);
-  const CorrectedCubemap corrected =
-      correctCubemap(source, probe.captureMeters, proxy, reflected, *method);
+  const Cubemap source = readCubemapImage(probeCubemapPath(scene, probe));
+  const ProbeCorrection c = correctProbe(scene, probe, source, camera, o.plane, o.proxies, *method);
+  const CorrectedCubemap& corrected = c.corrected;
 
   // `{level}` in the pattern writes every mip level; without it, level 0 only.
   const std::string levelKey = "{level}";
@@ -131,7 +51,8 @@ int runCorrect(const CorrectOptions& o) {
     writeCubemap(corrected.cube, pattern, level);
     std::cout << "wrote " << pattern << " (" << corrected.cube.faceSize(level) << " px)\n";
   }
-  const ReflectedCameraCheck inside = reflectedCameraInsideProxy(camera, plane, proxy);
+  const ReflectedCameraCheck inside = reflectedCameraInsideProxy(camera, c.plane, c.proxy);
+  const glm::dvec3 reflected = c.reflectedCameraMeters;
   std::cout << mixingMethodName(*method) << ": reflected camera (" << reflected.x << ", "
             << reflected.y << ", " << reflected.z << ") " << (inside.inside ? "inside" : "outside")
             << " the proxy, " << missCount(corrected) << " missed texels (red) over "

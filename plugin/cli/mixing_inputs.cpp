@@ -1,0 +1,110 @@
+#include "plugin/cli/mixing_inputs.h"
+
+#include "core/errors/input_error.h"
+#include "core/mixing/reflected_camera.h"
+#include "core/proxy/proxy_shape.h"
+#include "geometry/build/authored_proxy_shape.h"
+#include "geometry/build/build_probe_proxy.h"
+#include "geometry/export/runtime_export.h"
+#include "geometry/level/load_level.h"
+#include "plugin/cli/number_list.h"
+
+namespace probeproxy::cli {
+
+namespace {
+
+std::string probeProblem(const std::string& probe, const std::string& what) {
+  std::string problem = "probe '";
+  problem += probe;
+  problem += "' ";
+  problem += what;
+  return problem;
+}
+
+ConvexProxy convexVolume(const ProxyShape& shape, const std::filesystem::path& from,
+                         const std::string& probe) {
+  if (const auto* box = std::get_if<BoxShape>(&shape)) return convexFromBox(*box);
+  if (const auto* convex = std::get_if<ConvexProxy>(&shape)) {
+    if (!convex->planes.empty() && !convex->triangles.empty()) return *convex;
+  }
+  std::string what = "has a ";
+  what += methodId(shape);
+  what += " proxy; the mixing step needs a box or convex proxy";
+  throw InputError(from, probeProblem(probe, what));
+}
+
+}  // namespace
+
+const Probe& findProbe(const Scene& scene, const std::string& name) {
+  for (const Probe& p : scene.probes)
+    if (p.name == name) return p;
+  std::string known;
+  for (const Probe& p : scene.probes) known += (known.empty() ? "" : ", ") + p.name;
+  std::string problem = "no probe named '";
+  problem += name;
+  problem += "' (probes: ";
+  problem += known;
+  problem += ")";
+  throw InputError(scene.file, problem);
+}
+
+std::filesystem::path probeCubemapPath(const Scene& scene, const Probe& probe) {
+  if (!probe.cubemap) throw InputError(scene.file, probeProblem(probe.name, "has no cubemap"));
+  std::filesystem::path cubemap(*probe.cubemap);
+  return cubemap.is_relative() ? scene.file.parent_path() / cubemap : cubemap;
+}
+
+ConvexProxy mixingProxy(const Scene& scene, const Probe& probe, const std::string& proxiesJson) {
+  if (!proxiesJson.empty()) {
+    const RuntimeExport runtime = readRuntimeExport(proxiesJson);
+    for (const RuntimeProbe& p : runtime.probes) {
+      if (p.name != probe.name) continue;
+      if (p.box) return convexFromBox(*p.box);
+      return convexVolume(p.convex, proxiesJson, probe.name);
+    }
+    std::string problem = "no probe named '";
+    problem += probe.name;
+    problem += "'";
+    throw InputError(proxiesJson, problem);
+  }
+  if (const std::optional<ProxyShape> authored = authoredProxyShape(probe.proxy, scene))
+    return convexVolume(*authored, scene.file, probe.name);
+  const LevelMesh level = loadLevel(scene);
+  const LevelRayCaster rayCaster(level);
+  const ProbeProxyBuild build = buildProbeProxy(rayCaster, probe, std::nullopt, {});
+  return convexVolume(build.candidates.at(build.kept).shape, scene.file, probe.name);
+}
+
+ReflectionPlane mixingPlane(const Scene& scene, const Probe& probe,
+                            const std::string& planeOption) {
+  if (!planeOption.empty()) {
+    const std::vector<double> p = parseNumberList(planeOption, 6, "--plane");
+    const ReflectionPlane plane{{p[0], p[1], p[2]}, {p[3], p[4], p[5]}};
+    if (plane.normal == glm::dvec3(0.0)) throw InputError("--plane", "the normal is zero");
+    return plane;
+  }
+  if (probe.reflectionPlanes.empty())
+    throw InputError(scene.file,
+                     probeProblem(probe.name, "has no reflection_planes; give one with --plane"));
+  return probe.reflectionPlanes.front();
+}
+
+ProbeCorrection correctProbe(const Scene& scene, const Probe& probe, const Cubemap& source,
+                             glm::dvec3 cameraMeters, const std::string& planeOption,
+                             const std::string& proxiesJson, MixingMethod method) {
+  ProbeCorrection c;
+  c.plane = mixingPlane(scene, probe, planeOption);
+  if (!(heightAbovePlaneMeters(cameraMeters, c.plane) > 0.0))
+    throw InputError("--camera",
+                     "the camera must be above the reflection plane (on the side "
+                     "its normal points to)");
+  c.proxy = mixingProxy(scene, probe, proxiesJson);
+  if (signedDistanceOutside(c.proxy.planes, probe.captureMeters) >= 0.0)
+    throw InputError(scene.file, probeProblem(probe.name, "captures outside its proxy"));
+  c.reflectedCameraMeters = reflectThroughPlane(cameraMeters, c.plane);
+  c.corrected =
+      correctCubemap(source, probe.captureMeters, c.proxy, c.reflectedCameraMeters, method);
+  return c;
+}
+
+}  // namespace probeproxy::cli

@@ -1,0 +1,44 @@
+#pragma once
+// What the mixing step (core/mixing/) needs from a scene on the command line, shared by
+// `correct` (one probe) and `blend --camera` (every probe it mixes): the probe, its cubemap,
+// its proxy as a convex volume and the reflection plane. Each failure is an InputError naming
+// the file or option at fault.
+
+#include "core/cube/cubemap.h"
+#include "core/mixing/corrected_cubemap.h"
+#include "core/proxy/convex_proxy.h"
+#include "core/scene/scene.h"
+
+#include <filesystem>
+#include <string>
+
+namespace probeproxy::cli {
+
+const Probe& findProbe(const Scene& scene, const std::string& name);
+
+// The probe's `cubemap` resolved against the scene's folder (six files or one image).
+std::filesystem::path probeCubemapPath(const Scene& scene, const Probe& probe);
+
+// The proxy a probe is corrected with: the kept one of a `build` export when proxiesJson is
+// given, else the one the scene file authors, else (`auto`) one built now from the level. The
+// mixing step draws planes and triangles, so a sphere, cheap_k or infinite proxy is refused.
+ConvexProxy mixingProxy(const Scene& scene, const Probe& probe, const std::string& proxiesJson);
+
+// `--plane PX,PY,PZ,NX,NY,NZ` when given, else the probe's first reflection_planes entry.
+ReflectionPlane mixingPlane(const Scene& scene, const Probe& probe, const std::string& planeOption);
+
+struct ProbeCorrection {
+  ReflectionPlane plane;
+  ConvexProxy proxy;
+  glm::dvec3 reflectedCameraMeters{0.0};  // the camera mirrored through the plane
+  CorrectedCubemap corrected;             // centred at the reflected camera, every mip level
+};
+
+// The probe's cubemap corrected by the mixing step for a camera over the plane (mixingPlane,
+// mixingProxy). Refuses a camera that is not above the plane and a capture point outside the
+// proxy.
+ProbeCorrection correctProbe(const Scene& scene, const Probe& probe, const Cubemap& source,
+                             glm::dvec3 cameraMeters, const std::string& planeOption,
+                             const std::string& proxiesJson, MixingMethod method);
+
+}  // namespace probeproxy::cli

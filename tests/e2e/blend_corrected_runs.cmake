@@ -1,0 +1,32 @@
+# `probeproxy blend --camera` corrects each probe before mixing. Where one probe takes 100%
+# (x = -5 is inside corridor_a's inner range) the mix must be exactly `probeproxy correct`'s
+# cube for the same camera, face for face, and not the uncorrected cubemap.
+set(camera -5,0.5,1.7)
+file(REMOVE_RECURSE ${OUT})
+execute_process(COMMAND ${PROBEPROXY} correct ${SCENE} --probe corridor_a --camera ${camera}
+  --out ${OUT}/correct/c_{face}.exr RESULT_VARIABLE code ERROR_VARIABLE err OUTPUT_QUIET)
+if(NOT code EQUAL 0)
+  message(FATAL_ERROR "correct exited ${code}: ${err}")
+endif()
+foreach(mode corrected plain)
+  set(extra "")
+  if(mode STREQUAL "corrected")
+    set(extra --camera ${camera})
+  endif()
+  execute_process(COMMAND ${PROBEPROXY} blend ${SCENE} --at -5,0,1.6 ${extra}
+    --out ${OUT}/${mode}/b_{face}.exr RESULT_VARIABLE code ERROR_VARIABLE err OUTPUT_QUIET)
+  if(NOT code EQUAL 0)
+    message(FATAL_ERROR "blend (${mode}) exited ${code}: ${err}")
+  endif()
+endforeach()
+foreach(face px nx py ny pz nz)
+  file(SHA256 ${OUT}/correct/c_${face}.exr want)
+  file(SHA256 ${OUT}/corrected/b_${face}.exr got)
+  file(SHA256 ${OUT}/plain/b_${face}.exr plain)
+  if(NOT got STREQUAL want)
+    message(FATAL_ERROR "blend --camera face ${face} differs from probeproxy correct's")
+  endif()
+  if(plain STREQUAL want)
+    message(FATAL_ERROR "face ${face}: the corrected cube equals the uncorrected one")
+  endif()
+endforeach()
