@@ -59,6 +59,19 @@ class PROBEPROXY_PT_probe(bpy.types.Panel):
         obj = context.active_object
         s = obj.probeproxy
         layout.label(text=obj.name, icon="LIGHTPROBE_CUBEMAP")
+        if s.result_json:  # the last Generate's figures first: what an artist looks for
+            r = json.loads(s.result_json)
+            e = r["error"]
+            box = layout.box()
+            box.label(text="Kept: %s (%s), %d planes, %d vertices" % (
+                r["candidate"], r["kind"], r["planes"], r["vertices"]))
+            box.label(text="mirror_floor median %s / p95 %s / max %s deg" % (
+                _deg(e["median_deg"]), _deg(e["p95_deg"]), _deg(e["max_deg"])))
+            box.label(text="miss %.2f%%, occluded %.2f%%, %d samples" % (
+                100 * e["miss_rate"], 100 * e["occluded_rate"], e["samples"]))
+            for finding in r.get("findings", []):
+                for line in _wrap(finding, _chars(context)):
+                    box.label(text=line, icon="INFO")
         layout.prop(obj, "location", text="Capture")
         layout.prop(s, "influence_shape")
         layout.prop(s, "influence_offset")
@@ -78,19 +91,6 @@ class PROBEPROXY_PT_probe(bpy.types.Panel):
             layout.prop(s, "proxy_radius")
         elif s.proxy_mode == "MESH":
             layout.prop(s, "proxy_mesh")
-        if s.result_json:
-            r = json.loads(s.result_json)
-            e = r["error"]
-            box = layout.box()
-            box.label(text="Kept: %s (%s), %d planes, %d vertices" % (
-                r["candidate"], r["kind"], r["planes"], r["vertices"]))
-            box.label(text="mirror_floor median %s / p95 %s / max %s deg" % (
-                _deg(e["median_deg"]), _deg(e["p95_deg"]), _deg(e["max_deg"])))
-            box.label(text="miss %.2f%%, occluded %.2f%%, %d samples" % (
-                100 * e["miss_rate"], 100 * e["occluded_rate"], e["samples"]))
-            for finding in r.get("findings", []):
-                for line in _wrap(finding, _chars(context)):
-                    box.label(text=line, icon="INFO")
 
 
 class PROBEPROXY_PT_findings(bpy.types.Panel):
