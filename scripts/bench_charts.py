@@ -91,7 +91,8 @@ def error_vs_cost(level, rows, out_dir):
     for p in probes:
         ax.scatter([], [], color=colors[p], marker="o", label=f"probe {p}")
     for m in METHODS:
-        if any(r["method"] == m for r in rows):
+        if any(r["method"] == m and finite(r["ns_per_lookup"]) and finite(r["p95_deg"])
+               for r in rows):
             ax.scatter([], [], color="0.5", marker=MARKERS[m], label=m)
     ax.scatter([], [], facecolors="none", edgecolors="0.5",
                label=f"misses > {100 * MAX_MISS_RATE:g}% (off the front)")

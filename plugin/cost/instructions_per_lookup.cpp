@@ -73,28 +73,39 @@ double totalInstructions(const std::filesystem::path& file) {
   throw std::runtime_error("no instruction total in callgrind output " + file.string());
 }
 
-double countInstructions(const std::filesystem::path& valgrind, const std::filesystem::path& driver,
-                         const std::string& workload, LookupPath path, std::size_t lookups) {
+// A fresh callgrind output file name in the temporary folder.
+std::filesystem::path callgrindOutFile() {
   static std::atomic<int> counter{0};
   std::string name = "probeproxy-callgrind-";
   name += std::to_string(::getpid());
   name += '-';
   name += std::to_string(counter++);
   name += ".out";
-  const std::filesystem::path out = std::filesystem::temp_directory_path() / name;
-  const std::vector<std::string> args = {valgrind.string(),
-                                         "--tool=callgrind",
-                                         "--instr-atstart=no",
-                                         "--collect-atstart=no",
-                                         "--callgrind-out-file=" + out.string(),
-                                         driver.string(),
-                                         workload,
-                                         path == LookupPath::Batched ? "batched" : "scalar",
-                                         std::to_string(lookups)};
+  return std::filesystem::temp_directory_path() / name;
+}
+
+// Runs the driver with `driverArgs` under callgrind writing to `out` (and, for a dumping run,
+// `out`.1, `out`.2, ...); reads the totals of the files `read` names; removes every file.
+std::vector<double> callgrindTotals(const std::filesystem::path& valgrind,
+                                    const std::filesystem::path& driver,
+                                    const std::vector<std::string>& driverArgs,
+                                    const std::filesystem::path& out,
+                                    const std::vector<std::filesystem::path>& read) {
+  std::vector<std::string> args = {valgrind.string(),
+                                   "--tool=callgrind",
+                                   "--instr-atstart=no",
+                                   "--collect-atstart=no",
+                                   "--callgrind-out-file=" + out.string(),
+                                   driver.string()};
+  args.insert(args.end(), driverArgs.begin(), driverArgs.end());
   const int status = runQuietly(args);
-  std::error_code ec;
-  if (status != 0) {
+  const auto removeAll = [&] {
+    std::error_code ec;
     std::filesystem::remove(out, ec);
+    for (const std::filesystem::path& file : read) std::filesystem::remove(file, ec);
+  };
+  if (status != 0) {
+    removeAll();
     std::string problem = "exit status ";
     problem += std::to_string(status);
     problem += ": ";
@@ -102,13 +113,24 @@ double countInstructions(const std::filesystem::path& valgrind, const std::files
     throw std::runtime_error(problem);
   }
   try {
-    const double total = totalInstructions(out);
-    std::filesystem::remove(out, ec);
-    return total;
+    std::vector<double> totals;
+    for (const std::filesystem::path& file : read) totals.push_back(totalInstructions(file));
+    removeAll();
+    return totals;
   } catch (...) {
-    std::filesystem::remove(out, ec);
+    removeAll();
     throw;
   }
+}
+
+std::string pathName(LookupPath path) { return path == LookupPath::Batched ? "batched" : "scalar"; }
+
+double countInstructions(const std::filesystem::path& valgrind, const std::filesystem::path& driver,
+                         const std::string& workload, LookupPath path, std::size_t lookups) {
+  const std::filesystem::path out = callgrindOutFile();
+  return callgrindTotals(valgrind, driver, {workload, pathName(path), std::to_string(lookups)}, out,
+                         {out})
+      .front();
 }
 
 }  // namespace
@@ -137,6 +159,30 @@ std::optional<double> instructionsPerLookup(const std::string& workload, LookupP
   const double once = countInstructions(*valgrind, driver, workload, path, lookups);
   const double twice = countInstructions(*valgrind, driver, workload, path, 2 * lookups);
   return (twice - once) / static_cast<double>(lookups);
+}
+
+std::vector<std::optional<double>> instructionsPerLookup(const std::vector<std::string>& workloads,
+                                                         LookupPath path, std::size_t lookups,
+                                                         const std::filesystem::path& driver) {
+  if (lookups == 0) throw std::invalid_argument("instructionsPerLookup: lookups must be positive");
+  for (const std::string& w : workloads) makeLookupWorkload(w, 0);  // unknown names throw
+  const std::optional<std::filesystem::path> valgrind = findOnPath("valgrind");
+  if (!valgrind || workloads.empty()) return std::vector<std::optional<double>>(workloads.size());
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(driver, ec)) {
+    throw std::runtime_error("lookup cost driver is missing: " + driver.string());
+  }
+  const std::filesystem::path out = callgrindOutFile();
+  std::vector<std::string> args = {"--dumps", pathName(path), std::to_string(lookups)};
+  args.insert(args.end(), workloads.begin(), workloads.end());
+  std::vector<std::filesystem::path> dumps;
+  for (std::size_t i = 1; i <= 2 * workloads.size(); ++i)
+    dumps.push_back(out.string() + "." + std::to_string(i));
+  const std::vector<double> totals = callgrindTotals(*valgrind, driver, args, out, dumps);
+  std::vector<std::optional<double>> perLookup;
+  for (std::size_t i = 0; i < workloads.size(); ++i)
+    perLookup.push_back((totals[2 * i + 1] - totals[2 * i]) / static_cast<double>(lookups));
+  return perLookup;
 }
 
 }  // namespace probeproxy

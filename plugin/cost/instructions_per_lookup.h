@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace probeproxy {
 
@@ -27,6 +28,13 @@ std::filesystem::path lookupCostDriverPath();
 // the driver is missing, or the driver or valgrind fails (naming the command).
 std::optional<double> instructionsPerLookup(
     const std::string& workload, LookupPath path, std::size_t lookups = 4096,
+    const std::filesystem::path& driver = lookupCostDriverPath());
+
+// The same for many workloads in ONE valgrind run (the driver's --dumps mode: each region is
+// counted alone, so the figures equal the one-workload calls'); valgrind's start-up, most of a
+// run's time, is paid once. One entry per workload, in order; all nullopt without valgrind.
+std::vector<std::optional<double>> instructionsPerLookup(
+    const std::vector<std::string>& workloads, LookupPath path, std::size_t lookups = 4096,
     const std::filesystem::path& driver = lookupCostDriverPath());
 
 }  // namespace probeproxy

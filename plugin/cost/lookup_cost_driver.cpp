@@ -4,6 +4,10 @@
 //   probeproxy_lookup_cost_driver WORKLOAD scalar|batched N
 // instructions_per_lookup.h runs it for N and 2N and takes the difference. Without valgrind
 // the macros do nothing and it just runs the lookups.
+//   probeproxy_lookup_cost_driver --dumps scalar|batched N WORKLOAD...
+// does the same for many workloads in one valgrind run (valgrind's start-up is most of a
+// run's time): N then 2N lookups of each, each counted alone and dumped
+// (CALLGRIND_DUMP_STATS), so dump 2i + 1 and 2i + 2 are workload i's N and 2N.
 
 #include "plugin/cost/lookup_workload.h"
 
@@ -14,10 +18,56 @@
 #include <exception>
 #include <string>
 
+namespace {
+
+// Lookups of one workload with callgrind collecting only around them.
+void countedLookups(const probeproxy::LookupWorkload& w, bool batched,
+                    probeproxy::LookupOutputs& out) {
+  CALLGRIND_TOGGLE_COLLECT;
+  if (batched) {
+    probeproxy::runBatchedLookups(w, out);
+  } else {
+    probeproxy::runScalarLookups(w, out);
+  }
+  CALLGRIND_TOGGLE_COLLECT;
+}
+
+int runDumps(int argc, char** argv) {
+  using namespace probeproxy;
+  const bool batched = std::string(argv[2]) == "batched";
+  const std::size_t n = std::stoul(argv[3]);
+  CALLGRIND_START_INSTRUMENTATION;
+  for (int i = 4; i < argc; ++i) {
+    for (const std::size_t lookups : {n, 2 * n}) {
+      const LookupWorkload w = makeLookupWorkload(argv[i], lookups);
+      LookupOutputs out(lookups);
+      countedLookups(w, batched, out);
+      CALLGRIND_DUMP_STATS;
+    }
+  }
+  CALLGRIND_STOP_INSTRUMENTATION;
+  std::printf("%d workloads\n", argc - 4);
+  return 0;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   using namespace probeproxy;
+  if (argc >= 5 && std::string(argv[1]) == "--dumps" &&
+      (std::string(argv[2]) == "scalar" || std::string(argv[2]) == "batched")) {
+    try {
+      return runDumps(argc, argv);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "%s: %s\n", argv[0], e.what());
+      return 2;
+    }
+  }
   if (argc != 4 || (std::string(argv[2]) != "scalar" && std::string(argv[2]) != "batched")) {
-    std::fprintf(stderr, "usage: %s WORKLOAD scalar|batched N\n", argv[0]);
+    std::fprintf(stderr,
+                 "usage: %s WORKLOAD scalar|batched N\n"
+                 "       %s --dumps scalar|batched N WORKLOAD...\n",
+                 argv[0], argv[0]);
     return 2;
   }
   try {

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace probeproxy {
 namespace {
@@ -27,6 +29,19 @@ TEST(InstructionsPerLookup, SameCountEveryRun) {
   const std::optional<double> a = instructionsPerLookup("convex_6", LookupPath::Batched, 256);
   if (!a) GTEST_SKIP() << "valgrind is not on PATH";
   EXPECT_EQ(a, instructionsPerLookup("convex_6", LookupPath::Batched, 256));
+}
+
+TEST(InstructionsPerLookup, OneRunForManyWorkloadsCountsEachAlone) {
+  const std::vector<std::string> workloads = {"aabb", "convex_6", "convex_20", "infinite"};
+  const std::vector<std::optional<double>> many =
+      instructionsPerLookup(workloads, LookupPath::Batched, 256);
+  ASSERT_EQ(many.size(), workloads.size());
+  if (!many.front()) GTEST_SKIP() << "valgrind is not on PATH";
+  for (std::size_t i = 0; i < workloads.size(); ++i)
+    EXPECT_EQ(many[i], instructionsPerLookup(workloads[i], LookupPath::Batched, 256))
+        << workloads[i];
+  EXPECT_THROW(instructionsPerLookup(std::vector<std::string>{"aabb", "cone"}, LookupPath::Batched),
+               std::invalid_argument);
 }
 
 TEST(InstructionsPerLookup, UnknownWorkloadAndMissingDriverAreErrors) {

@@ -11,10 +11,12 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 #include <memory>
 #include <stdexcept>
+#include <thread>
 
 namespace probeproxy::cli {
 
@@ -43,22 +45,28 @@ LookupRays raysOf(const std::vector<ReflectionSample>& samples) {
 
 // Instructions per lookup of the batched kernel, counted by callgrind on the cost workload of
 // the same method and plane count (the kernels are branch-free, so the count depends on these
-// alone). One count per distinct workload, two valgrind runs each, spread over the cores.
+// alone). One count per distinct workload; the workloads are split into one valgrind run per
+// core (valgrind's start-up is most of a run), the runs in parallel.
 std::map<std::string, std::optional<double>> countInstructions(
     const std::vector<std::string>& workloads, const std::function<void(std::string)>& say) {
-  std::vector<std::optional<double>> counts(workloads.size());
-  std::vector<std::string> failures(workloads.size());
-  tbb::parallel_for(std::size_t(0), workloads.size(), [&](std::size_t i) {
+  const std::size_t runs =
+      std::min<std::size_t>(workloads.size(), std::max(1u, std::thread::hardware_concurrency()));
+  std::vector<std::vector<std::string>> chunks(runs);
+  for (std::size_t i = 0; i < workloads.size(); ++i) chunks[i % runs].push_back(workloads[i]);
+  std::vector<std::vector<std::optional<double>>> counts(runs);
+  std::vector<std::string> failures(runs);
+  tbb::parallel_for(std::size_t(0), runs, [&](std::size_t r) {
     try {
-      counts[i] = instructionsPerLookup(workloads[i], LookupPath::Batched, 1024);
+      counts[r] = instructionsPerLookup(chunks[r], LookupPath::Batched, 1024);
     } catch (const std::exception& e) {
-      failures[i] = e.what();  // not measured: null in the report, said on stderr
+      failures[r] = e.what();  // not measured: null in the report, said on stderr
     }
   });
   std::map<std::string, std::optional<double>> byName;
-  for (std::size_t i = 0; i < workloads.size(); ++i) {
-    if (!failures[i].empty()) say("instructions per lookup not measured: " + failures[i]);
-    byName[workloads[i]] = counts[i];
+  for (std::size_t r = 0; r < runs; ++r) {
+    if (!failures[r].empty()) say("instructions per lookup not measured: " + failures[r]);
+    for (std::size_t i = 0; i < chunks[r].size(); ++i)
+      byName[chunks[r][i]] = counts[r].empty() ? std::nullopt : counts[r][i];
   }
   return byName;
 }

@@ -36,8 +36,8 @@ struct CallJob {
 };
 
 struct TimingOptions {
-  int repetitions = 5;           // medians are taken over these
-  double minTimeSeconds = 0.01;  // per repetition; short: thousands of rays per iteration
+  int repetitions = 3;            // medians are taken over these
+  double minTimeSeconds = 0.005;  // per repetition, CPU; hundreds of iterations of 2048 rays
 };
 
 // Keeps the compiler from dropping work whose result a call job does not use

@@ -55,6 +55,11 @@ Verb addBenchVerb(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::Range(1, 100));
   bench
+      ->add_option("--min-time", o->bench.timing.minTimeSeconds,
+                   "CPU seconds each timing repetition runs at least")
+      ->capture_default_str()
+      ->check(CLI::Range(0.001, 10.0));
+  bench
       ->add_option("--samples", o->bench.proxy.samples.targetSamples,
                    "reflection samples per set (the error figures and the timed rays)")
       ->capture_default_str()
