@@ -13,6 +13,9 @@ from pathlib import Path
 
 RENDERED_LEVELS = ("corridor", "l_room", "u_corridors", "hall_pillars", "attic",
                    "round_room", "courtyard", "tiny_closet", "hangar")
+# Box rooms: the artist box is the exact proxy, so the main scene file authors it. Every other
+# level's main scene file asks for "auto" and `<level>.artist.scene.json` keeps the boxes.
+EXACT_BOX_LEVELS = ("corridor", "tiny_closet", "hangar")
 FACES = ("px", "nx", "py", "ny", "pz", "nz")
 EXR_MAGIC = bytes((0x76, 0x2F, 0x31, 0x01))
 MIN_MIRROR_VIEWS = 2
@@ -29,6 +32,11 @@ BROKEN_FILES = (
     "probe_outside.scene.json",
     "messy_but_valid.obj", "messy_but_valid.scene.json",
 )
+
+
+def _without_proxies(scene):
+    probes = [{k: v for k, v in p.items() if k != "proxy"} for p in scene.get("probes", [])]
+    return {**scene, "probes": probes}
 
 
 class Checker:
@@ -71,6 +79,17 @@ class Checker:
         scene = self.json(level / f"{name}.scene.json")
         if scene is not None:
             self.scene(level, scene)
+            self.proxies(level / f"{name}.scene.json", scene, auto=name not in EXACT_BOX_LEVELS)
+        artist_path = level / f"{name}.artist.scene.json"
+        if name in EXACT_BOX_LEVELS:
+            if artist_path.exists():
+                self.fail(artist_path, "unexpected: the main scene file already authors the exact box")
+        else:
+            artist = self.json(artist_path)
+            if artist is not None and scene is not None:
+                self.proxies(artist_path, artist, auto=False)
+                if _without_proxies(artist) != _without_proxies(scene):
+                    self.fail(artist_path, "differs from the main scene file in more than the proxies")
         views = sorted((level / "mirror_views").glob("*.json"))
         if len(views) < MIN_MIRROR_VIEWS:
             self.fail(level / "mirror_views", f"{len(views)} mirror view(s), expected at least {MIN_MIRROR_VIEWS}")
@@ -101,6 +120,14 @@ class Checker:
             for face in FACES:
                 self.file(level / pattern.replace("{face}", face), exr=True)
                 self.file(level / "cubemaps" / f"{name}_position_{face}.exr", exr=True)
+
+    def proxies(self, path, scene, auto):
+        for probe in scene.get("probes", []):
+            proxy = probe.get("proxy")
+            if auto and proxy != "auto":
+                self.fail(path, f"probe {probe.get('name', '?')}: proxy {proxy!r}, expected \"auto\"")
+            if not auto and not (isinstance(proxy, dict) and proxy.get("kind") == "box"):
+                self.fail(path, f"probe {probe.get('name', '?')}: proxy {proxy!r}, expected the artist box")
 
     def broken(self):
         for name in BROKEN_FILES:

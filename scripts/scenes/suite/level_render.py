@@ -60,5 +60,12 @@ def generate(name, module, out_dir, args):
             mirror_views.render_position(scene, cam, view, level.probe(view.probe), views_dir, width, height)
             files += 1
 
-    scene_json.write(out_dir / f"{name}.scene.json", scene_json.scene([glb.name], level.probes))
-    return files + 1
+    # The main scene file is the well-authored one; where a box is a poor proxy the artist
+    # boxes stay beside it as the baseline (same probes, cubemaps and volumes, other proxies).
+    scene_json.write(out_dir / f"{name}.scene.json",
+                     scene_json.scene([glb.name], level.probes, auto_proxy=not level.artist_box_exact))
+    files += 1
+    if not level.artist_box_exact:
+        scene_json.write(out_dir / spec.artist_scene_name(name), scene_json.scene([glb.name], level.probes))
+        files += 1
+    return files

@@ -68,12 +68,14 @@ def influence_json(influence):
     }
 
 
-def probe_json(probe, cubemap):
+def probe_json(probe, cubemap, auto_proxy=False):
+    """auto_proxy: the proxy is "auto" (probeproxy builds it) instead of the artist box."""
+    box = {"kind": "box", "center": floats(probe.proxy.center), "half_extents": floats(probe.proxy.half_extents)}
     data = {
         "name": probe.name,
         "capture": floats(probe.capture),
         "influence": influence_json(probe.influence),
-        "proxy": {"kind": "box", "center": floats(probe.proxy.center), "half_extents": floats(probe.proxy.half_extents)},
+        "proxy": "auto" if auto_proxy else box,
     }
     if cubemap is not None:
         data["cubemap"] = cubemap
@@ -81,12 +83,13 @@ def probe_json(probe, cubemap):
     return data
 
 
-def scene(meshes, probes, cubemaps=True, up="Z"):
-    """meshes: file names (glTF meshes declare their own Y-up, the reader converts them)."""
+def scene(meshes, probes, cubemaps=True, up="Z", auto_proxy=False):
+    """meshes: file names (glTF meshes declare their own Y-up, the reader converts them);
+    auto_proxy: every probe's proxy is "auto" instead of its artist box."""
     return {
         "probeproxy_scene": 1,
         "up": up,
         "meters_per_unit": 1.0,
         "level": [{"mesh": m} for m in meshes],
-        "probes": [probe_json(p, spec.cubemap_pattern(p.name) if cubemaps else None) for p in probes],
+        "probes": [probe_json(p, spec.cubemap_pattern(p.name) if cubemaps else None, auto_proxy) for p in probes],
     }

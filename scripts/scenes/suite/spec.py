@@ -23,6 +23,11 @@ def position_pattern(probe_name):
     return f"cubemaps/{probe_name}_position_{{face}}.exr"
 
 
+def artist_scene_name(level):
+    """The sibling scene file with the artist boxes, for levels where they are a poor proxy."""
+    return f"{level}.artist.scene.json"
+
+
 @dataclass(frozen=True)
 class Box:
     """Axis-aligned box as the scene file stores it: centre and half-extents."""
@@ -109,6 +114,12 @@ class MirrorView:
 class LevelSpec:
     probes: list = field(default_factory=list)
     views: list = field(default_factory=list)
+    # True where each probe's artist box is exactly its room (a box-shaped room): the scene
+    # file authors the box. Elsewhere the box is a poor proxy, so the scene file asks for
+    # "auto" (probeproxy builds it, the workflow the tool recommends) and the boxes go to the
+    # sibling `<level>.artist.scene.json`, the naive baseline the proxy table and validate
+    # measure.
+    artist_box_exact: bool = False
 
     def probe(self, name):
         for p in self.probes:

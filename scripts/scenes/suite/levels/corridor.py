@@ -25,7 +25,7 @@ def build(b):
         b.add(f"wall_py_{label}", [side[2]])
 
     room = Box.from_bounds((x0, y0, 0.0), (x1, y1, HEIGHT))
-    level = LevelSpec()
+    level = LevelSpec(artist_box_exact=True)  # a box room: its bounds are the exact proxy
     for label, x in zip("abc", (-6.0, 0.0, 6.0)):
         level.probes.append(
             Probe(

@@ -15,7 +15,7 @@ def build(b):
     b.add("container_b", meshes.prop_box((10.0, -15.0, 0.0), (12.5, -3.0, 2.6)))
 
     hangar = Box.from_bounds(LO, HI)
-    level = LevelSpec()
+    level = LevelSpec(artist_box_exact=True)  # a box room (the containers stand inside it)
     level.probes += [
         Probe("hangar_west", (-20.0, 0.0, CAPTURE_Z), BoxInfluence((-20.0, 0.0, 10.0), (22.0, 25.0, 10.0), (18.0, 23.0, 9.0)), hangar, 0.0),
         Probe("hangar_east", (20.0, 0.0, CAPTURE_Z), BoxInfluence((20.0, 0.0, 10.0), (22.0, 25.0, 10.0), (18.0, 23.0, 9.0)), hangar, 0.0),

@@ -4,6 +4,8 @@ The wall is four objects (one per quadrant) so the cubemap shows which way is wh
 sphere influence volume exercises the scene file's sphere kind.
 """
 
+import math
+
 from .. import meshes
 from ..spec import CAPTURE_HEIGHT, Box, LevelSpec, MirrorView, Probe, SphereInfluence
 
@@ -20,9 +22,12 @@ def build(b):
         b.add(f"wall_quadrant_{q}", wall[q * quarter:(q + 1) * quarter])
 
     room = Box.from_bounds((-RADIUS, -RADIUS, 0.0), (RADIUS, RADIUS, HEIGHT))
+    # Centred at mid-height, the sphere must reach the floor's (and the ceiling's) rim: a
+    # radius of R would leave a ring of floor near the wall in no volume.
+    reach = math.hypot(RADIUS, HEIGHT / 2)
     level = LevelSpec()
     level.probes.append(
-        Probe("round", (1.5, -1.0, CAPTURE_HEIGHT), SphereInfluence((0.0, 0.0, HEIGHT / 2), RADIUS, RADIUS - 1.0), room, 0.0)
+        Probe("round", (1.5, -1.0, CAPTURE_HEIGHT), SphereInfluence((0.0, 0.0, HEIGHT / 2), reach, RADIUS - 1.0), room, 0.0)
     )
     level.views += [
         MirrorView("toward_centre", "round", 2.5, -1.5, yaw_deg=150.0, pitch_deg=-35.0),

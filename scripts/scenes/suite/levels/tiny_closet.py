@@ -11,7 +11,7 @@ CHECKER_SIZE = 0.2  # 0.5 m squares would leave two per wall
 def build(b):
     b.add_all(meshes.room_box(LO, HI), floor_z=0.0)
     closet = Box.from_bounds(LO, HI)
-    level = LevelSpec()
+    level = LevelSpec(artist_box_exact=True)  # a box room: its bounds are the exact proxy
     level.probes.append(
         Probe("closet", (0.1, -0.05, 1.5), BoxInfluence(closet.center, closet.half_extents, (0.4, 0.3, 1.0)), closet, 0.0)
     )

@@ -38,15 +38,16 @@ def build(b):
                      BoxInfluence((*center, cz), (*half, STOREY / 2), (*inner, STOREY / 2)), room, floor_z)
 
     level = LevelSpec()
-    level.probes += [
-        # Each arm ends where the bend begins (x = 9.5) and fades out over its last 1.5 m; the
-        # bend reaches 1.5 m into each arm and fades out there; every side without a band
-        # lies in a wall. Inner ranges 1.75 m apart, so the weights cross over gently.
-        probe("ground_south", 3.0, 1.25, 0.0, ground, (4.75, 1.25), (4.75, 1.25), (3.25, 1.25)),
-        probe("ground_bend", 10.75, 5.0, 0.0, ground, (10.75, 5.0), (2.75, 5.0), (1.0, 5.0)),
-        probe("upper_north", 3.0, 8.75, upper_z, upper, (4.75, 8.75), (4.75, 1.25), (3.25, 1.25)),
-        probe("upper_bend", 10.75, 5.0, upper_z, upper, (10.75, 5.0), (2.75, 5.0), (1.0, 5.0)),
-    ]
+    # Each storey: a probe per arm and one in the bend, so every metre of floor is covered.
+    # Each arm ends where the bend begins (x = 9.5) and fades out over its last 1.5 m; the bend
+    # reaches 1.5 m into each arm and fades out there; every side without a band lies in a
+    # wall. Inner ranges 1.75 m apart, so the weights cross over gently.
+    for storey, floor_z, room in (("ground", 0.0, ground), ("upper", upper_z, upper)):
+        level.probes += [
+            probe(f"{storey}_south", 3.0, 1.25, floor_z, room, (4.75, 1.25), (4.75, 1.25), (3.25, 1.25)),
+            probe(f"{storey}_bend", 10.75, 5.0, floor_z, room, (10.75, 5.0), (2.75, 5.0), (1.0, 5.0)),
+            probe(f"{storey}_north", 3.0, 8.75, floor_z, room, (4.75, 8.75), (4.75, 1.25), (3.25, 1.25)),
+        ]
     level.views += [
         MirrorView("ground_south_east", "ground_south", 1.5, 1.0, yaw_deg=0.0, pitch_deg=-35.0),
         MirrorView("ground_bend_north", "ground_bend", 11.0, 1.5, yaw_deg=90.0, pitch_deg=-30.0),
