@@ -100,13 +100,8 @@ WeightGrid gridOverVolumes(std::span<const InfluenceVolume> volumes, double zMet
   WeightGrid grid;
   grid.zMeters = zMeters;
   grid.spacingMeters = spacingMeters;
-  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
-  for (const InfluenceVolume& v : volumes) {
-    glm::dvec3 vLo, vHi;
-    influenceBounds(v, vLo, vHi);
-    lo = glm::min(lo, vLo);
-    hi = glm::max(hi, vHi);
-  }
+  glm::dvec3 lo, hi;
+  influenceBounds(volumes, lo, hi);
   // Cell centres of a grid of whole multiples of the spacing: no point lies exactly on a wall
   // or a volume's side at a round coordinate, where nobody stands and no weight is defined.
   grid.minMeters = (glm::floor(glm::dvec2(lo) / spacingMeters) + 0.5) * spacingMeters;

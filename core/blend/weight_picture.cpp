@@ -29,13 +29,8 @@ WeightPicture renderWeightPicture(std::span<const InfluenceVolume> volumes, doub
                                   std::span<const glm::dvec3> markersMeters) {
   if (volumes.empty()) throw std::invalid_argument("weight picture: no influence volume");
   if (longSidePixels < 16) throw std::invalid_argument("weight picture: under 16 pixels");
-  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
-  for (const InfluenceVolume& v : volumes) {
-    glm::dvec3 vLo, vHi;
-    influenceBounds(v, vLo, vHi);
-    lo = glm::min(lo, vLo);
-    hi = glm::max(hi, vHi);
-  }
+  glm::dvec3 lo, hi;
+  influenceBounds(volumes, lo, hi);
   constexpr double kMarginMeters = 0.5;
   const glm::dvec2 extent = glm::dvec2(hi - lo) + 2.0 * kMarginMeters;
   WeightPicture picture;

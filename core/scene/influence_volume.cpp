@@ -4,6 +4,8 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include <limits>
+
 namespace probeproxy {
 
 bool insideInfluence(const InfluenceVolume& influence, glm::dvec3 p) {
@@ -38,6 +40,17 @@ double influenceCubicMeters(const InfluenceVolume& influence) {
   }
   const double r = std::get<SphereInfluence>(influence).radiusMeters;
   return 4.0 / 3.0 * glm::pi<double>() * r * r * r;
+}
+
+void influenceBounds(std::span<const InfluenceVolume> volumes, glm::dvec3& lo, glm::dvec3& hi) {
+  lo = glm::dvec3(std::numeric_limits<double>::infinity());
+  hi = -lo;
+  for (const InfluenceVolume& v : volumes) {
+    glm::dvec3 vLo, vHi;
+    influenceBounds(v, vLo, vHi);
+    lo = glm::min(lo, vLo);
+    hi = glm::max(hi, vHi);
+  }
 }
 
 }  // namespace probeproxy

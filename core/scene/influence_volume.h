@@ -5,6 +5,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
 
+#include <span>
 #include <variant>
 
 namespace probeproxy {
@@ -33,6 +34,10 @@ bool insideInfluence(const InfluenceVolume& influence, glm::dvec3 pointMeters);
 
 // The axis-aligned bounds of the outer range, world frame.
 void influenceBounds(const InfluenceVolume& influence, glm::dvec3& minMeters,
+                     glm::dvec3& maxMeters);
+// The axis-aligned bounds of several volumes' outer ranges together; inverted (+inf, -inf)
+// when there is none.
+void influenceBounds(std::span<const InfluenceVolume> volumes, glm::dvec3& minMeters,
                      glm::dvec3& maxMeters);
 
 // The outer range's volume, cubic metres (blending: the smaller volume dominates a tie).
