@@ -84,6 +84,19 @@ def _proxy_mesh_object(scene, probe, result):
     return obj
 
 
+def _probes_and_level(operator, context):
+    """The level objects to work on, or None (reported) when the scene has no probe or no
+    level."""
+    if not scene_io.probes(context.scene):
+        operator.report({"ERROR"}, "no probes: add one with Add Probe or import a scene")
+        return None
+    objects = _level_objects(context)
+    if not objects:
+        operator.report({"ERROR"}, "no level: select the level's mesh objects")
+        return None
+    return objects
+
+
 class PROBEPROXY_OT_generate_proxies(_NeedsModule, bpy.types.Operator):
     """Build every probe's convex proxy from the selected level objects (all level objects
     when none is selected) and add it as a mesh in the "Proxies" collection"""
@@ -95,12 +108,8 @@ class PROBEPROXY_OT_generate_proxies(_NeedsModule, bpy.types.Operator):
         scene = context.scene
         settings = scene.probeproxy
         probes = scene_io.probes(scene)
-        if not probes:
-            self.report({"ERROR"}, "no probes: add one with Add Probe or import a scene")
-            return {"CANCELLED"}
-        objects = _level_objects(context)
-        if not objects:
-            self.report({"ERROR"}, "no level: select the level's mesh objects")
+        objects = _probes_and_level(self, context)
+        if objects is None:
             return {"CANCELLED"}
 
         def work():
@@ -153,12 +162,8 @@ class PROBEPROXY_OT_validate_volumes(_NeedsModule, bpy.types.Operator):
     def execute(self, context):
         scene = context.scene
         settings = scene.probeproxy
-        if not scene_io.probes(scene):
-            self.report({"ERROR"}, "no probes: add one with Add Probe or import a scene")
-            return {"CANCELLED"}
-        objects = _level_objects(context)
-        if not objects:
-            self.report({"ERROR"}, "no level: select the level's mesh objects")
+        objects = _probes_and_level(self, context)
+        if objects is None:
             return {"CANCELLED"}
 
         def work():
@@ -383,11 +388,4 @@ classes = (PROBEPROXY_OT_generate_proxies, PROBEPROXY_OT_validate_volumes,
            PROBEPROXY_OT_add_probe)
 
 
-def register():
-    for c in classes:
-        bpy.utils.register_class(c)
-
-
-def unregister():
-    for c in reversed(classes):
-        bpy.utils.unregister_class(c)
+register, unregister = bpy.utils.register_classes_factory(classes)

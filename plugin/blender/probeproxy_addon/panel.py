@@ -8,11 +8,15 @@ import bpy
 from . import native
 
 
-class PROBEPROXY_PT_main(bpy.types.Panel):
-    bl_label = "probeproxy"
+class _Sidebar:
+    """Where every probeproxy panel lives: the 3D view's sidebar, tab "probeproxy"."""
     bl_space_type = "VIEW_3D"
     bl_region_type = "UI"
     bl_category = "probeproxy"
+
+
+class PROBEPROXY_PT_main(_Sidebar, bpy.types.Panel):
+    bl_label = "probeproxy"
 
     def draw(self, context):
         layout = self.layout
@@ -42,11 +46,8 @@ class PROBEPROXY_PT_main(bpy.types.Panel):
             layout.label(text="Level: " + settings.level_used)
 
 
-class PROBEPROXY_PT_probe(bpy.types.Panel):
+class PROBEPROXY_PT_probe(_Sidebar, bpy.types.Panel):
     bl_label = "Probe"
-    bl_space_type = "VIEW_3D"
-    bl_region_type = "UI"
-    bl_category = "probeproxy"
     bl_parent_id = "PROBEPROXY_PT_main"
 
     @classmethod
@@ -93,11 +94,8 @@ class PROBEPROXY_PT_probe(bpy.types.Panel):
             layout.prop(s, "proxy_mesh")
 
 
-class PROBEPROXY_PT_findings(bpy.types.Panel):
+class PROBEPROXY_PT_findings(_Sidebar, bpy.types.Panel):
     bl_label = "Findings"
-    bl_space_type = "VIEW_3D"
-    bl_region_type = "UI"
-    bl_category = "probeproxy"
     bl_parent_id = "PROBEPROXY_PT_main"
 
     @classmethod
@@ -151,11 +149,4 @@ def _wrap(text, width):
 classes = (PROBEPROXY_PT_main, PROBEPROXY_PT_probe, PROBEPROXY_PT_findings)
 
 
-def register():
-    for c in classes:
-        bpy.utils.register_class(c)
-
-
-def unregister():
-    for c in reversed(classes):
-        bpy.utils.unregister_class(c)
+register, unregister = bpy.utils.register_classes_factory(classes)
