@@ -96,7 +96,8 @@ def main(argv):
     root = Path(argv[1])
     problems, checked, worst_all = [], 0, 0.0
     scenes = sorted(root.glob("*/*.scene.json"))
-    scenes = [s for s in scenes if s.parent.name != "broken"]
+    # Each level's own scene file (its artist variant has the same probes and images).
+    scenes = [s for s in scenes if s.parent.name != "broken" and s.name == f"{s.parent.name}.scene.json"]
     if not scenes:
         print(f"{root}: no rendered levels found")
         return 1

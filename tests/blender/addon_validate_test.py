@@ -1,4 +1,5 @@
-# Validate Volumes on a level with findings (the suite's deliberately broken scenes), headless:
+# Validate Volumes on a level with findings (the suite's deliberately broken scenes, the
+# L-room with the artist's boxes), headless:
 #   blender -b --factory-startup --python tests/blender/addon_validate_test.py -- \
 #       --addon-dir plugin/blender --module-dir build/plugin/python \
 #       --cli build/plugin/cli/probeproxy --scene build/scenes/broken/probe_outside.scene.json
@@ -20,7 +21,7 @@ scene = os.path.abspath(args.scene)
 native, scene_io = enable_addon(args.addon_dir, args.module_dir)
 import_scene(scene, scene_io)
 expected = validate_like_cli(args.cli, scene, os.path.basename(scene))
-check(len(expected) > 0, "the broken level has findings")
+check(len(expected) > 0, "the level has findings")
 direct = native.module.validate_scene(native.module.read_scene(scene), scene)
 check(direct == expected, "module validate_scene on the scene file: the CLI's findings")
 
