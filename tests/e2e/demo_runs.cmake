@@ -1,18 +1,26 @@
-# The demo runs, says what it did, writes the level, its scene and every depth cube face, and
-# two runs give the same bytes.
+# The demo runs, says what it did, writes the level, its scene, every depth cube face, the
+# export, the validation verdict, the blend-weight picture, the bench and its charts; two runs
+# give the same bytes (the second skips the bench, whose timings differ run to run).
 foreach(run 1 2)
   file(REMOVE_RECURSE ${OUT}${run})
-  execute_process(COMMAND ${PROBEPROXY} demo --out ${OUT}${run} --face-size 32
-    RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  set(extra "")
+  if(run EQUAL 2)
+    set(extra --no-bench)
+  endif()
+  execute_process(COMMAND ${PROBEPROXY} demo --out ${OUT}${run} --face-size 32 ${extra}
+    RESULT_VARIABLE code OUTPUT_VARIABLE out${run} ERROR_VARIABLE err)
   if(NOT code EQUAL 0)
     message(FATAL_ERROR "demo exited ${code}: ${err}")
   endif()
 endforeach()
-if(NOT out MATCHES "probe corridor_c: depth cube 32 px/face")
-  message(FATAL_ERROR "demo did not report the third probe:\n${out}")
-endif()
+foreach(said "probe corridor_c: depth cube 32 px/face" "corridor.scene.json: clean, no findings"
+        "drew the speed-against-accuracy charts")
+  if(NOT out1 MATCHES "${said}")
+    message(FATAL_ERROR "demo did not say '${said}':\n${out1}")
+  endif()
+endforeach()
 foreach(f corridor.obj corridor.scene.json depth/corridor_a_depth_px.exr depth/corridor_c_depth_nz.exr
-        export/proxies.json export/proxies.glb)
+        export/proxies.json export/proxies.glb blend_weights.png)
   if(NOT EXISTS ${OUT}1/${f})
     message(FATAL_ERROR "demo did not write ${f}")
   endif()
@@ -20,5 +28,15 @@ foreach(f corridor.obj corridor.scene.json depth/corridor_a_depth_px.exr depth/c
   file(SHA256 ${OUT}2/${f} b)
   if(NOT a STREQUAL b)
     message(FATAL_ERROR "demo output ${f} differs between two runs")
+  endif()
+endforeach()
+file(READ ${OUT}1/bench/bench.json bench)
+string(JSON rows LENGTH "${bench}" results)
+if(rows LESS 20)
+  message(FATAL_ERROR "demo bench has only ${rows} rows")
+endif()
+foreach(f corridor_error_vs_cost.png corridor_error_vs_planes.svg summary.png)
+  if(NOT EXISTS ${OUT}1/charts/${f})
+    message(FATAL_ERROR "demo did not draw ${f}")
   endif()
 endforeach()

@@ -1,7 +1,10 @@
 // `probeproxy demo`: the main job, end to end, on the built-in level (the seed's corridor), so
 // a new user sees what the tool does with nothing but the binary. It grows as issues land.
 
+#include "core/blend/weight_picture.h"
 #include "core/cube/write_depth_cube.h"
+#include "core/image/write_png.h"
+#include "core/io/atomic_write.h"
 #include "geometry/build/build_scene_proxies.h"
 #include "geometry/builtin/box_room.h"
 #include "geometry/builtin/builtin_corridor.h"
@@ -10,12 +13,17 @@
 #include "geometry/level/write_level_mesh.h"
 #include "geometry/raycast/capture_depth_cube.h"
 #include "geometry/scene/scene_file.h"
+#include "geometry/validate/validate_scene.h"
+#include "plugin/cli/bench/bench_report.h"
+#include "plugin/cli/bench/bench_scenes.h"
 #include "plugin/cli/reports/build_report.h"
+#include "plugin/cli/reports/validate_report.h"
 #include "plugin/cli/verb.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -27,6 +35,7 @@ namespace {
 struct DemoOptions {
   std::string out = "probeproxy-demo";
   int faceSize = 128;
+  bool bench = true;
 };
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
@@ -46,6 +55,26 @@ double largestDepthError(const DepthCube& cube, glm::dvec3 lo, glm::dvec3 hi) {
     }
   }
   return worst;
+}
+
+// The charts are drawn by scripts/bench_charts.py with Debian's python3-matplotlib; without
+// them the demo still finishes and says how to draw them.
+void drawCharts(const std::filesystem::path& benchJson, const std::filesystem::path& folder) {
+  const std::filesystem::path script =
+      std::filesystem::path(PROBEPROXY_SOURCE_DIR) / "scripts" / "bench_charts.py";
+  std::string command = "/usr/bin/python3 '";
+  command += script.string();
+  command += "' '";
+  command += benchJson.string();
+  command += "' '";
+  command += folder.string();
+  command += "' >/dev/null";
+  if (std::filesystem::exists(script) && std::system(command.c_str()) == 0) {
+    std::cout << "drew the speed-against-accuracy charts: " << folder.string() << "\n";
+  } else {
+    std::cout << "charts not drawn (needs " << script.string()
+              << " and python3-matplotlib): " << command << "\n";
+  }
 }
 
 int runDemo(const DemoOptions& o) {
@@ -95,9 +124,35 @@ int runDemo(const DemoOptions& o) {
   std::cout << "exported the proxies for the runtime: "
             << (out / "export" / "proxies.json").string() << " and proxies.glb\n";
 
-  std::cout << "not yet in the demo: correction methods (issue 4), blending and validation "
-               "(issue 5), benchmark charts (issue 6)\n"
-            << "done in " << std::setprecision(3) << secondsSince(start) << " s\n";
+  // 4. Validate the authored volumes against the level, as a pipeline would before shipping.
+  const std::vector<ValidationFinding> findings = validateScene(scene, rayCaster);
+  printFindings(std::cout, sceneFile.string(), findings);
+
+  // 5. Where each probe contributes: the top-down blend-weight picture at capture height.
+  std::vector<InfluenceVolume> volumes;
+  std::vector<glm::dvec3> captures;
+  for (const Probe& p : scene.probes) {
+    volumes.push_back(p.influence);
+    captures.push_back(p.captureMeters);
+  }
+  const WeightPicture picture =
+      renderWeightPicture(volumes, scene.probes.front().captureMeters.z, {}, 800, captures);
+  writePng(out / "blend_weights.png", picture.width, picture.height, picture.rgb8);
+  std::cout << "wrote the blend weights seen from above: " << (out / "blend_weights.png").string()
+            << "\n";
+
+  // 6. Speed against accuracy of every method on this level, and its charts.
+  if (o.bench) {
+    BenchOptions bench;
+    bench.timing.repetitions = 3;
+    const std::vector<BenchResult> results = benchScenes({sceneFile.string()}, bench);
+    printBenchTable(std::cout, results);
+    const std::filesystem::path benchJson = out / "bench" / "bench.json";
+    std::filesystem::create_directories(benchJson.parent_path());
+    writeFileAtomically(benchJson, benchReportJson(results));
+    drawCharts(benchJson, out / "charts");
+  }
+  std::cout << "done in " << std::setprecision(3) << secondsSince(start) << " s\n";
   return 0;
 }
 
@@ -111,6 +166,7 @@ Verb addDemoVerb(CLI::App& app) {
   demo->add_option("--face-size", o->faceSize, "depth cube face size in texels")
       ->capture_default_str()
       ->check(CLI::Range(8, 2048));
+  demo->add_flag("!--no-bench", o->bench, "skip the speed-against-accuracy benchmark and charts");
   return {demo, [o] { return runDemo(*o); }};
 }
 
