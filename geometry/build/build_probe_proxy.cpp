@@ -10,6 +10,7 @@
 #include "geometry/raycast/capture_depth_cube.h"
 #include "geometry/tune/greedy_plane_removal.h"
 #include "geometry/tune/one_dimensional_fits.h"
+#include "geometry/tune/snap_box_to_walls.h"
 #include "geometry/tune/visible_surface_planes.h"
 
 #include <glm/geometric.hpp>
@@ -175,6 +176,10 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
       hull ? std::span<const glm::dvec3>(hull->verticesMeters)
            : std::span<const glm::dvec3>(points);
 
+  // The planes of the walls the probe sees, exact where the hull's facets tilt by a texel.
+  const std::vector<ProxyPlane> walls =
+      visibleSurfacePlanes(hits, capture, o.depthFaceSize, 10 * tolerance);
+
   t = Clock::now();
   add("infinite", InfiniteShape{}, 0.0);
   // One free parameter needs far fewer samples than a plane set: every fourth will do.
@@ -189,9 +194,10 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
     fitStart = Clock::now();
     add("min_sphere", minimumEnclosingSphere(corners), msSince(fitStart));
     fitStart = Clock::now();
-    add("aabb", axisAlignedBoxFit(corners), msSince(fitStart));
+    add("aabb", snapBoxToWalls(axisAlignedBoxFit(corners), walls, 10 * tolerance),
+        msSince(fitStart));
     fitStart = Clock::now();
-    add("obb", orientedBoxFit(corners), msSince(fitStart));
+    add("obb", snapBoxToWalls(orientedBoxFit(corners), walls, 10 * tolerance), msSince(fitStart));
   }
   build.fitMs = msSince(t);
 
@@ -214,8 +220,7 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
     // A hull facet on a wall passes through three texel hits and tilts by up to a texel's
     // angle; the wall's own plane (every texel on it averaged) is exact. So a wall plane
     // replaces the hull facets it matches, and the proxy's walls coincide with the level's.
-    for (const ProxyPlane& p :
-         visibleSurfacePlanes(hits, capture, o.depthFaceSize, 10 * tolerance)) {
+    for (const ProxyPlane& p : walls) {
       const auto matches = [&](const ProxyPlane& q) {
         return glm::dot(p.normal, q.normal) > 0.9998 &&
                std::abs(p.offsetMeters - q.offsetMeters) < 10 * tolerance;
