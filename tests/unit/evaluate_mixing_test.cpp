@@ -2,10 +2,10 @@
 // is its own proxy: every error is the corrected cube's resolution, so it shrinks as the cube
 // grows, and both mixing methods (per texel, rasterized) agree.
 
+#include "geometry/evaluation/evaluate_mixing.h"
 #include "core/mixing/corrected_cubemap.h"
 #include "core/proxy/proxy_shape.h"
 #include "geometry/builtin/box_room.h"
-#include "geometry/evaluation/evaluate_mixing.h"
 #include "geometry/evaluation/reflection_samples.h"
 
 #include <gtest/gtest.h>
