@@ -61,3 +61,10 @@ foreach(method infinite cheap_k sphere aabb obb convex mixing_plane raster_conve
     message(FATAL_ERROR "no row for method ${method}: ${methods}")
   endif()
 endforeach()
+# --out also writes the pictures a person opens: each mirror view rebuilt with the kept proxy
+# and with infinite, as an error heatmap and a red miss mask.
+foreach(f closet_back_infinite_heatmap.png closet_back_infinite_miss.png closet_back_aabb_heatmap.png)
+  if(NOT EXISTS ${OUT}/images/tiny_closet/${f})
+    message(FATAL_ERROR "bench --out did not write images/tiny_closet/${f}")
+  endif()
+endforeach()

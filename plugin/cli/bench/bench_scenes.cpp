@@ -78,6 +78,16 @@ std::optional<double> psnrDb(const ImageReference& ref, const ProxyShape& shape,
   return meanPsnrDb(ref.views, [&](const MirrorViewReference&) { return lookup; });
 }
 
+// The pictures a person opens to see where a proxy goes wrong (mirror_view_reconstruction.h).
+void writeViewImages(const std::filesystem::path& folder, const ImageReference& ref,
+                     const ProxyCandidate& candidate, glm::dvec3 captureMeters) {
+  const RadianceLookup lookup = proxyRadianceLookup(ref.cube, candidate.shape, captureMeters);
+  for (const MirrorViewReference& view : ref.views) {
+    writeMirrorViewImages(folder, view.view.name + "_" + candidate.kind, view,
+                          reconstructMirrorView(view, lookup));
+  }
+}
+
 struct LoadedScene {
   std::string name;
   Scene scene;
@@ -141,6 +151,11 @@ std::vector<BenchResult> benchScenes(const std::vector<std::string>& sceneFiles,
         if (images) {
           try {
             row.psnrDb = psnrDb(*images, candidate.shape, probe.captureMeters);
+            const bool pictured =
+                row.kept || candidate.kind == "infinite" || candidate.kind == "authored";
+            if (pictured && !options.imagesFolder.empty())
+              writeViewImages(options.imagesFolder / s.name, *images, candidate,
+                              probe.captureMeters);
           } catch (const std::invalid_argument&) {
             // a degenerate fit no shader could run: no image either
           }

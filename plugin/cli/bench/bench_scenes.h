@@ -8,6 +8,7 @@
 #include "plugin/cli/bench/bench_result.h"
 #include "plugin/cli/bench/lookup_timing.h"
 
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <string_view>
@@ -19,6 +20,9 @@ struct BenchOptions {
   ProxyBuildOptions proxy;  // regenerate is forced on: authored proxies are measured beside
   TimingOptions timing;
   bool countInstructions = true;  // callgrind per distinct method and plane count (valgrind)
+  // When set, every mirror view rebuilt with the infinite, the authored and the kept proxy is
+  // written there, per scene: `<view>_<candidate>_heatmap.png`, `_miss.png` and `.exr`.
+  std::filesystem::path imagesFolder;
 };
 
 // Rows in scene, probe, candidate order. Every scene is read and checked before any work

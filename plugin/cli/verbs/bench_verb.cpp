@@ -20,9 +20,11 @@ struct BenchVerbOptions {
 };
 
 int runBench(const BenchVerbOptions& o) {
-  const std::vector<BenchResult> results =
-      benchScenes(o.scenes, o.bench,
-                  [](std::string_view line) { std::cerr << "probeproxy bench: " << line << "\n"; });
+  BenchOptions bench = o.bench;
+  if (!o.out.empty()) bench.imagesFolder = std::filesystem::path(o.out) / "images";
+  const std::vector<BenchResult> results = benchScenes(o.scenes, bench, [](std::string_view line) {
+    std::cerr << "probeproxy bench: " << line << "\n";
+  });
   const std::string json = benchReportJson(results);
   if (!o.out.empty()) {
     std::filesystem::create_directories(o.out);
@@ -48,7 +50,10 @@ Verb addBenchVerb(CLI::App& app) {
       "bench", "Measure speed against accuracy of every correction method on levels");
   bench->add_option("scenes", o->scenes, "scene files (*.scene.json)")->required();
   bench->add_flag("--json", o->json, "print the results as JSON on stdout");
-  bench->add_option("--out", o->out, "folder for bench.json (the charts' input)");
+  bench->add_option("--out", o->out,
+                    "folder for bench.json (the charts' input) and images/: each mirror view "
+                    "rebuilt with the infinite, authored and kept proxy (error heatmap, red miss "
+                    "mask, EXR)");
   bench
       ->add_option("--repetitions", o->bench.timing.repetitions,
                    "timing repetitions; ns per lookup is their median")
