@@ -30,6 +30,13 @@ ConvexProxy convexFromMesh(std::vector<glm::dvec3> vertices, std::vector<glm::uv
   return convex;
 }
 
+LevelMesh loadAuthoredProxyMesh(const AuthoredConvexMesh& mesh, const Scene& scene) {
+  // glTF is Y-up by its specification; other formats are in the scene file's frame.
+  const std::string ext = mesh.mesh.extension().string();
+  const UpAxis up = (ext == ".glb" || ext == ".gltf") ? UpAxis::Y : scene.fileUp;
+  return loadLevelMeshFile(mesh.mesh, up, scene.metersPerUnit);
+}
+
 std::optional<ProxyShape> authoredProxyShape(const ProxySpec& spec, const Scene& scene) {
   if (std::holds_alternative<AutoProxy>(spec)) return std::nullopt;
   if (std::holds_alternative<InfiniteProxy>(spec)) return InfiniteShape{};
@@ -43,10 +50,7 @@ std::optional<ProxyShape> authoredProxyShape(const ProxySpec& spec, const Scene&
     return SphereShape{sphere->centerMeters, glm::dvec3(sphere->radiusMeters),
                        glm::dquat(1, 0, 0, 0)};
   }
-  const auto& mesh = std::get<AuthoredConvexMesh>(spec);
-  const std::string ext = mesh.mesh.extension().string();
-  const UpAxis up = (ext == ".glb" || ext == ".gltf") ? UpAxis::Y : scene.fileUp;
-  const LevelMesh loaded = loadLevelMeshFile(mesh.mesh, up, scene.metersPerUnit);
+  const LevelMesh loaded = loadAuthoredProxyMesh(std::get<AuthoredConvexMesh>(spec), scene);
   std::vector<glm::dvec3> vertices(loaded.positionsMeters.begin(), loaded.positionsMeters.end());
   return convexFromMesh(std::move(vertices), loaded.triangles);
 }

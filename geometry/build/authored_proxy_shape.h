@@ -3,6 +3,7 @@
 
 #include "core/proxy/proxy_shape.h"
 #include "core/scene/scene.h"
+#include "geometry/level/level_mesh.h"
 
 #include <optional>
 
@@ -12,6 +13,10 @@ namespace probeproxy {
 // scene's units; glTF Y-up) and turned into one plane per distinct face plane; whether it
 // really is convex and closed is for the proxy mesh checks to say.
 std::optional<ProxyShape> authoredProxyShape(const ProxySpec& spec, const Scene& scene);
+
+// The authored convex mesh as it is in the file, in the world frame: what authoredProxyShape
+// turns into planes and what the proxy mesh checks inspect.
+LevelMesh loadAuthoredProxyMesh(const AuthoredConvexMesh& mesh, const Scene& scene);
 
 // Planes of a triangle mesh wound counter-clockwise from outside, near-duplicates merged.
 ConvexProxy convexFromMesh(std::vector<glm::dvec3> verticesMeters,

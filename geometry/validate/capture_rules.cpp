@@ -1,6 +1,6 @@
 // The rules about one probe's own pieces: its authored mesh, and where its capture point is.
 
-#include "geometry/level/load_level.h"
+#include "geometry/build/authored_proxy_shape.h"
 #include "geometry/validate/proxy_mesh_checks.h"
 #include "geometry/validate/validation_rules.h"
 
@@ -40,10 +40,7 @@ void checkAuthoredMesh(const Scene& scene, const Probe& probe,
                        std::vector<ValidationFinding>& out) {
   const auto* authored = std::get_if<AuthoredConvexMesh>(&probe.proxy);
   if (authored == nullptr) return;
-  // Read as authoredProxyShape reads it: glTF is Y-up by its specification.
-  const std::string ext = authored->mesh.extension().string();
-  const UpAxis up = (ext == ".glb" || ext == ".gltf") ? UpAxis::Y : scene.fileUp;
-  const LevelMesh mesh = loadLevelMeshFile(authored->mesh, up, scene.metersPerUnit);
+  const LevelMesh mesh = loadAuthoredProxyMesh(*authored, scene);
   for (ProxyMeshFinding& f : checkProxyMesh(mesh, probe.captureMeters)) {
     if (f.rule == "proxy_misses_capture") continue;  // capture_outside_proxy says it
     out.push_back({probe.name, std::move(f.rule), std::move(f.severity), f.value, f.limit,
@@ -53,20 +50,22 @@ void checkAuthoredMesh(const Scene& scene, const Probe& probe,
   }
 }
 
-void checkCaptureInsideProxy(const Probe& probe, const ProxyShape& authored,
-                             std::vector<ValidationFinding>& out) {
-  const double outside = metersOutside(authored, probe.captureMeters);
-  if (outside < 0.0) return;
+namespace {
+
+// "probe 'p' captures at (x, y, z), d m outside its <what>": the two capture rules' finding.
+ValidationFinding captureFinding(const Probe& probe, const char* rule, double outside,
+                                 const char* what, const char* hint) {
   char value[32];
   std::snprintf(value, sizeof value, "%.3f", outside);
-  out.push_back({probe.name, "capture_outside_proxy", "error", outside, 0.0,
-                 "probe '" + probe.name + "' captures at " + formatPoint(probe.captureMeters) +
-                     ", " + value + " m outside its authored proxy",
-                 "move the capture point into the proxy, or enlarge the proxy around it "
-                 "(parallax correction needs the capture point strictly inside)"});
+  return {probe.name,
+          rule,
+          "error",
+          outside,
+          0.0,
+          "probe '" + probe.name + "' captures at " + formatPoint(probe.captureMeters) + ", " +
+              value + " m outside its " + what,
+          hint};
 }
-
-namespace {
 
 // How far outside the outer range, metres (negative inside; for a box the largest excess over
 // the half-extents along its own axes).
@@ -82,16 +81,23 @@ double metersOutsideInfluence(const InfluenceVolume& influence, glm::dvec3 p) {
 
 }  // namespace
 
+void checkCaptureInsideProxy(const Probe& probe, const ProxyShape& authored,
+                             std::vector<ValidationFinding>& out) {
+  const double outside = metersOutside(authored, probe.captureMeters);
+  if (outside < 0.0) return;
+  out.push_back(captureFinding(probe, "capture_outside_proxy", outside, "authored proxy",
+                               "move the capture point into the proxy, or enlarge the proxy "
+                               "around it (parallax correction needs the capture point "
+                               "strictly inside)"));
+}
+
 void checkCaptureInsideInfluence(const Probe& probe, std::vector<ValidationFinding>& out) {
   if (insideInfluence(probe.influence, probe.captureMeters)) return;
   const double outside = metersOutsideInfluence(probe.influence, probe.captureMeters);
-  char value[32];
-  std::snprintf(value, sizeof value, "%.3f", outside);
-  out.push_back({probe.name, "capture_outside_influence", "error", outside, 0.0,
-                 "probe '" + probe.name + "' captures at " + formatPoint(probe.captureMeters) +
-                     ", " + value + " m outside its influence volume",
-                 "move the capture point into the influence volume, or the volume over it "
-                 "(build and export refuse this probe until then)"});
+  out.push_back(captureFinding(probe, "capture_outside_influence", outside, "influence volume",
+                               "move the capture point into the influence volume, or the "
+                               "volume over it (build and export refuse this probe until "
+                               "then)"));
 }
 
 }  // namespace probeproxy

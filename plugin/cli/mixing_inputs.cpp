@@ -5,7 +5,6 @@
 #include "core/proxy/proxy_shape.h"
 #include "geometry/build/authored_proxy_shape.h"
 #include "geometry/build/build_probe_proxy.h"
-#include "geometry/export/runtime_export.h"
 #include "geometry/level/load_level.h"
 #include "plugin/cli/number_list.h"
 
@@ -54,25 +53,32 @@ std::filesystem::path probeCubemapPath(const Scene& scene, const Probe& probe) {
   return cubemap.is_relative() ? scene.file.parent_path() / cubemap : cubemap;
 }
 
-ConvexProxy mixingProxy(const Scene& scene, const Probe& probe, const std::string& proxiesJson) {
-  if (!proxiesJson.empty()) {
-    const RuntimeExport runtime = readRuntimeExport(proxiesJson);
-    for (const RuntimeProbe& p : runtime.probes) {
+MixingProxies::MixingProxies(const Scene& scene, std::string proxiesJson)
+    : scene_(scene), proxiesJson_(std::move(proxiesJson)) {}
+
+MixingProxies::~MixingProxies() = default;
+
+ConvexProxy MixingProxies::proxyFor(const Probe& probe) {
+  if (!proxiesJson_.empty()) {
+    if (!runtime_) runtime_ = std::make_unique<RuntimeExport>(readRuntimeExport(proxiesJson_));
+    for (const RuntimeProbe& p : runtime_->probes) {
       if (p.name != probe.name) continue;
       if (p.box) return convexFromBox(*p.box);
-      return convexVolume(p.convex, proxiesJson, probe.name);
+      return convexVolume(p.convex, proxiesJson_, probe.name);
     }
     std::string problem = "no probe named '";
     problem += probe.name;
     problem += "'";
-    throw InputError(proxiesJson, problem);
+    throw InputError(proxiesJson_, problem);
   }
-  if (const std::optional<ProxyShape> authored = authoredProxyShape(probe.proxy, scene))
-    return convexVolume(*authored, scene.file, probe.name);
-  const LevelMesh level = loadLevel(scene);
-  const LevelRayCaster rayCaster(level);
-  const ProbeProxyBuild build = buildProbeProxy(rayCaster, probe, std::nullopt, {});
-  return convexVolume(build.candidates.at(build.kept).shape, scene.file, probe.name);
+  if (const std::optional<ProxyShape> authored = authoredProxyShape(probe.proxy, scene_))
+    return convexVolume(*authored, scene_.file, probe.name);
+  if (!rayCaster_) {
+    level_ = std::make_unique<LevelMesh>(loadLevel(scene_));
+    rayCaster_ = std::make_unique<LevelRayCaster>(*level_);
+  }
+  const ProbeProxyBuild build = buildProbeProxy(*rayCaster_, probe, std::nullopt, {});
+  return convexVolume(build.candidates.at(build.kept).shape, scene_.file, probe.name);
 }
 
 ReflectionPlane mixingPlane(const Scene& scene, const Probe& probe,
@@ -91,14 +97,14 @@ ReflectionPlane mixingPlane(const Scene& scene, const Probe& probe,
 
 ProbeCorrection correctProbe(const Scene& scene, const Probe& probe, const Cubemap& source,
                              glm::dvec3 cameraMeters, const std::string& planeOption,
-                             const std::string& proxiesJson, MixingMethod method) {
+                             MixingProxies& proxies, MixingMethod method) {
   ProbeCorrection c;
   c.plane = mixingPlane(scene, probe, planeOption);
   if (!(heightAbovePlaneMeters(cameraMeters, c.plane) > 0.0))
     throw InputError("--camera",
                      "the camera must be above the reflection plane (on the side "
                      "its normal points to)");
-  c.proxy = mixingProxy(scene, probe, proxiesJson);
+  c.proxy = proxies.proxyFor(probe);
   if (signedDistanceOutside(c.proxy.planes, probe.captureMeters) >= 0.0)
     throw InputError(scene.file, probeProblem(probe.name, "captures outside its proxy"));
   c.reflectedCameraMeters = reflectThroughPlane(cameraMeters, c.plane);

@@ -8,8 +8,12 @@
 #include "core/mixing/corrected_cubemap.h"
 #include "core/proxy/convex_proxy.h"
 #include "core/scene/scene.h"
+#include "geometry/export/runtime_export.h"
+#include "geometry/level/level_mesh.h"
+#include "geometry/raycast/level_ray_caster.h"
 
 #include <filesystem>
+#include <memory>
 #include <string>
 
 namespace probeproxy::cli {
@@ -19,10 +23,23 @@ const Probe& findProbe(const Scene& scene, const std::string& name);
 // The probe's `cubemap` resolved against the scene's folder (six files or one image).
 std::filesystem::path probeCubemapPath(const Scene& scene, const Probe& probe);
 
-// The proxy a probe is corrected with: the kept one of a `build` export when proxiesJson is
-// given, else the one the scene file authors, else (`auto`) one built now from the level. The
-// mixing step draws planes and triangles, so a sphere, cheap_k or infinite proxy is refused.
-ConvexProxy mixingProxy(const Scene& scene, const Probe& probe, const std::string& proxiesJson);
+// Where the mixing step's proxies come from: the kept ones of a `build` export when
+// proxiesJson is given, else the ones the scene file authors, else (`auto`) ones built now from
+// the level. The export and the level are read once, on first need, however many probes ask.
+// The mixing step draws planes and triangles, so a sphere, cheap_k or infinite proxy is refused.
+class MixingProxies {
+ public:
+  MixingProxies(const Scene& scene, std::string proxiesJson);
+  ~MixingProxies();
+  ConvexProxy proxyFor(const Probe& probe);
+
+ private:
+  const Scene& scene_;
+  std::string proxiesJson_;
+  std::unique_ptr<RuntimeExport> runtime_;
+  std::unique_ptr<LevelMesh> level_;
+  std::unique_ptr<LevelRayCaster> rayCaster_;
+};
 
 // `--plane PX,PY,PZ,NX,NY,NZ` when given, else the probe's first reflection_planes entry.
 ReflectionPlane mixingPlane(const Scene& scene, const Probe& probe, const std::string& planeOption);
@@ -35,10 +52,10 @@ struct ProbeCorrection {
 };
 
 // The probe's cubemap corrected by the mixing step for a camera over the plane (mixingPlane,
-// mixingProxy). Refuses a camera that is not above the plane and a capture point outside the
+// MixingProxies). Refuses a camera that is not above the plane and a capture point outside the
 // proxy.
 ProbeCorrection correctProbe(const Scene& scene, const Probe& probe, const Cubemap& source,
                              glm::dvec3 cameraMeters, const std::string& planeOption,
-                             const std::string& proxiesJson, MixingMethod method);
+                             MixingProxies& proxies, MixingMethod method);
 
 }  // namespace probeproxy::cli

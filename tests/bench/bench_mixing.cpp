@@ -8,7 +8,7 @@
 #include "core/mixing/corrected_cubemap.h"
 #include "core/mixing/reflected_camera.h"
 #include "core/proxy/proxy_shape.h"
-#include "geometry/fit/polytope_from_planes.h"
+#include "geometry/builtin/twenty_plane_proxy.h"
 
 #include <benchmark/benchmark.h>
 #include <glm/geometric.hpp>
@@ -34,27 +34,6 @@ Cubemap sourceCube(int n) {
   Cubemap cube = Cubemap::fromFaces(n, std::move(faces));
   cube.buildMipChain();
   return cube;
-}
-
-// Planes tangent to an ellipsoid at the 20 corners of a dodecahedron (as the unit tests).
-ConvexProxy twentyPlanes(glm::dvec3 center, glm::dvec3 radii) {
-  const double phi = (1.0 + std::sqrt(5.0)) / 2.0;
-  std::vector<glm::dvec3> dirs;
-  for (double x : {-1.0, 1.0})
-    for (double y : {-1.0, 1.0})
-      for (double z : {-1.0, 1.0}) dirs.emplace_back(x, y, z);
-  for (double a : {-1.0, 1.0})
-    for (double b : {-1.0, 1.0}) {
-      dirs.emplace_back(0.0, a / phi, b * phi);
-      dirs.emplace_back(a / phi, b * phi, 0.0);
-      dirs.emplace_back(a * phi, 0.0, b / phi);
-    }
-  std::vector<ProxyPlane> planes;
-  for (const glm::dvec3& d : dirs) {
-    const glm::dvec3 n = glm::normalize(d);
-    planes.push_back({n, glm::dot(n, center) + glm::length(radii * n)});
-  }
-  return polytopeFromPlanes(planes, center);
 }
 
 struct Workload {
@@ -102,7 +81,7 @@ int main(int argc, char** argv) {
                       {0.5, 0.3, 1.4},
                       reflected};
   static Workload convex{
-      box.source, twentyPlanes({0.0, 0.0, 1.5}, {3.5, 2.5, 1.8}), {0.5, 0.3, 1.4}, reflected};
+      box.source, twentyPlaneProxy({0.0, 0.0, 1.5}, {3.5, 2.5, 1.8}), {0.5, 0.3, 1.4}, reflected};
   const std::string suffix = "/" + std::to_string(faceSize) + "px_mips";
   for (auto [name, w] : {std::pair{"box", &box}, std::pair{"convex20", &convex}}) {
     benchmark::RegisterBenchmark(("mixing_plane/" + std::string(name) + suffix).c_str(), correct, w,

@@ -3,7 +3,7 @@
 // geometry/fit/polytope_from_planes.h. Links geometry for that polytope only.
 
 #include "core/mixing/reflected_camera.h"
-#include "geometry/fit/polytope_from_planes.h"
+#include "geometry/builtin/twenty_plane_proxy.h"
 #include "tests/unit/mixing_agreement.h"
 
 #include <gtest/gtest.h>
@@ -14,28 +14,6 @@
 
 namespace probeproxy {
 namespace {
-
-ConvexProxy twentyPlaneProxy(glm::dvec3 center, glm::dvec3 radii) {
-  const double phi = (1.0 + std::sqrt(5.0)) / 2.0;
-  std::vector<glm::dvec3> directions;
-  for (double x : {-1.0, 1.0})
-    for (double y : {-1.0, 1.0})
-      for (double z : {-1.0, 1.0}) directions.emplace_back(x, y, z);
-  for (double a : {-1.0, 1.0}) {
-    for (double b : {-1.0, 1.0}) {
-      directions.emplace_back(0.0, a / phi, b * phi);
-      directions.emplace_back(a / phi, b * phi, 0.0);
-      directions.emplace_back(a * phi, 0.0, b / phi);
-    }
-  }
-  std::vector<ProxyPlane> planes;
-  for (const glm::dvec3& d : directions) {
-    const glm::dvec3 n = glm::normalize(d);
-    // Support function of the ellipsoid: the tangent plane with normal n.
-    planes.push_back({n, glm::dot(n, center) + glm::length(radii * n)});
-  }
-  return polytopeFromPlanes(planes, center);
-}
 
 TEST(MixingStep, PerTexelAndRasterizedAgreeOnATwentyPlaneProxyAtEveryMipSize) {
   const glm::dvec3 center(0.4, -0.2, 1.6);

@@ -71,21 +71,19 @@ std::map<std::string, std::optional<double>> countInstructions(
   return byName;
 }
 
-// Mean PSNR over the probe's mirror views of the reflection rebuilt with this proxy.
-std::optional<double> psnrDb(const ImageReference& ref, const ProxyShape& shape,
-                             glm::dvec3 captureMeters) {
-  const RadianceLookup lookup = proxyRadianceLookup(ref.cube, shape, captureMeters);
-  return meanPsnrDb(ref.views, [&](const MirrorViewReference&) { return lookup; });
-}
-
-// The pictures a person opens to see where a proxy goes wrong (mirror_view_reconstruction.h).
-void writeViewImages(const std::filesystem::path& folder, const ImageReference& ref,
-                     const ProxyCandidate& candidate, glm::dvec3 captureMeters) {
+// Mean PSNR over the probe's mirror views of the reflection rebuilt with this proxy; with a
+// folder, the same reconstructions are written there as the pictures a person opens to see
+// where the proxy goes wrong (mirror_view_reconstruction.h).
+std::optional<double> psnrDb(const ImageReference& ref, const ProxyCandidate& candidate,
+                             glm::dvec3 captureMeters, const std::filesystem::path& picturesIn) {
   const RadianceLookup lookup = proxyRadianceLookup(ref.cube, candidate.shape, captureMeters);
-  for (const MirrorViewReference& view : ref.views) {
-    writeMirrorViewImages(folder, view.view.name + "_" + candidate.kind, view,
-                          reconstructMirrorView(view, lookup));
-  }
+  return meanPsnrDb(
+      ref.views, [&](const MirrorViewReference&) { return lookup; },
+      [&](const MirrorViewReference& view, const MirrorViewReconstruction& reconstruction) {
+        if (!picturesIn.empty())
+          writeMirrorViewImages(picturesIn, view.view.name + "_" + candidate.kind, view,
+                                reconstruction);
+      });
 }
 
 struct LoadedScene {
@@ -150,12 +148,11 @@ std::vector<BenchResult> benchScenes(const std::vector<std::string>& sceneFiles,
         row.error = candidate.error;
         if (images) {
           try {
-            row.psnrDb = psnrDb(*images, candidate.shape, probe.captureMeters);
             const bool pictured =
-                row.kept || candidate.kind == "infinite" || candidate.kind == "authored";
-            if (pictured && !options.imagesFolder.empty())
-              writeViewImages(options.imagesFolder / s.name, *images, candidate,
-                              probe.captureMeters);
+                !options.imagesFolder.empty() &&
+                (row.kept || candidate.kind == "infinite" || candidate.kind == "authored");
+            row.psnrDb = psnrDb(*images, candidate, probe.captureMeters,
+                                pictured ? options.imagesFolder / s.name : "");
           } catch (const std::invalid_argument&) {
             // a degenerate fit no shader could run: no image either
           }

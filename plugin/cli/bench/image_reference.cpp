@@ -16,11 +16,16 @@ std::optional<ImageReference> imageReference(const Scene& scene, const Probe& pr
   return ref;
 }
 
-double meanPsnrDb(const std::vector<MirrorViewReference>& views,
-                  const std::function<RadianceLookup(const MirrorViewReference&)>& lookupFor) {
+double meanPsnrDb(
+    const std::vector<MirrorViewReference>& views,
+    const std::function<RadianceLookup(const MirrorViewReference&)>& lookupFor,
+    const std::function<void(const MirrorViewReference&, const MirrorViewReconstruction&)>& seen) {
   double sum = 0.0;
-  for (const MirrorViewReference& view : views)
-    sum += reconstructMirrorView(view, lookupFor(view)).error.psnrDb;
+  for (const MirrorViewReference& view : views) {
+    const MirrorViewReconstruction reconstruction = reconstructMirrorView(view, lookupFor(view));
+    if (seen) seen(view, reconstruction);
+    sum += reconstruction.error.psnrDb;
+  }
   return sum / static_cast<double>(views.size());
 }
 

@@ -22,7 +22,10 @@ struct ImageReference {
 std::optional<ImageReference> imageReference(const Scene& scene, const Probe& probe);
 
 // Mean PSNR over the views of the reflection rebuilt with the lookup each view is given.
+// `seen` gets each view's reconstruction too (to write its pictures without rebuilding it).
 double meanPsnrDb(const std::vector<MirrorViewReference>& views,
-                  const std::function<RadianceLookup(const MirrorViewReference&)>& lookupFor);
+                  const std::function<RadianceLookup(const MirrorViewReference&)>& lookupFor,
+                  const std::function<void(const MirrorViewReference&,
+                                           const MirrorViewReconstruction&)>& seen = {});
 
 }  // namespace probeproxy::cli

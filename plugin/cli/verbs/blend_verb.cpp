@@ -98,6 +98,7 @@ int runBlend(const BlendVerbOptions& o) {
   if (!o.out.empty()) {
     std::vector<Cubemap> cubes;
     std::vector<std::string> patterns;
+    MixingProxies proxies(scene, o.proxies);  // read once for every probe corrected
     for (const ProbeWeight& w : weights) {
       const Probe& probe = scene.probes[w.probe];
       patterns.push_back(probeCubemapPath(scene, probe).string());
@@ -105,9 +106,8 @@ int runBlend(const BlendVerbOptions& o) {
       if (camera) {
         // Each probe seen from the reflected camera through its own proxy (seed 000's mixing
         // step), so the mix is already parallax-corrected for this camera and plane.
-        cubes.back() =
-            correctProbe(scene, probe, cubes.back(), *camera, o.plane, o.proxies, *method)
-                .corrected.cube;
+        cubes.back() = correctProbe(scene, probe, cubes.back(), *camera, o.plane, proxies, *method)
+                           .corrected.cube;
       }
       if (!sameCubemapLayout(cubes.back(), cubes.front())) {
         std::string problem = "face size ";

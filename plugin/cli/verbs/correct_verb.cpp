@@ -35,7 +35,8 @@ int runCorrect(const CorrectOptions& o) {
   if (o.out.find("{face}") == std::string::npos)
     throw InputError(o.out, "the output pattern needs {face} (px nx py ny pz nz)");
   const Cubemap source = readCubemapImage(probeCubemapPath(scene, probe));
-  const ProbeCorrection c = correctProbe(scene, probe, source, camera, o.plane, o.proxies, *method);
+  MixingProxies proxies(scene, o.proxies);
+  const ProbeCorrection c = correctProbe(scene, probe, source, camera, o.plane, proxies, *method);
   const CorrectedCubemap& corrected = c.corrected;
 
   // `{level}` in the pattern writes every mip level; without it, level 0 only.
