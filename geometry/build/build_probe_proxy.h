@@ -5,21 +5,13 @@
 
 #include "core/proxy/proxy_candidate.h"
 #include "core/scene/probe.h"
+#include "geometry/build/proxy_build_options.h"
 #include "geometry/evaluation/reflection_samples.h"
 #include "geometry/raycast/level_ray_caster.h"
 
 #include <optional>
 
 namespace probeproxy {
-
-struct ProxyBuildOptions {
-  double toleranceDeg = 0.25;  // keep the fewest planes whose mirror_floor p95 is under this
-  int maxPlanes = 64;          // never keep more planes than this
-  double maxMissRate = 0.001;  // a kept proxy may miss at most this share of visible samples
-  int depthFaceSize = 128;     // depth cube the candidates are fitted to
-  bool regenerate = false;     // build a proxy even where the scene file has an authored one
-  ReflectionSampleOptions samples;
-};
 
 // Candidates in a fixed order: `authored` (the scene file's proxy, if it has one), infinite,
 // cheap_k, sphere (fitted around the capture point), min_sphere (smallest enclosing), aabb,

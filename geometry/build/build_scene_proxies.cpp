@@ -14,6 +14,7 @@ namespace probeproxy {
 std::vector<ProbeProxyBuild> buildSceneProxies(
     const Scene& scene, const LevelRayCaster& level, const ProxyBuildOptions& options,
     const std::function<void(std::size_t, std::size_t)>& onProbeDone) {
+  options.check();
   // A probe outside its own influence volume has no reflections to fit a proxy to (the samples
   // live in the volume): bad input, said before any work. `validate` reports it as a finding.
   for (std::size_t i = 0; i < scene.probes.size(); ++i) {

@@ -1,5 +1,7 @@
 #include "geometry/evaluation/reflection_samples.h"
 
+#include "core/errors/option_checks.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -7,6 +9,15 @@
 #include <random>
 
 namespace probeproxy {
+
+void ReflectionSampleOptions::check() const {
+  requireInRange<std::size_t>("samples", targetSamples, 64, 1'000'000);
+  requireInRange("max_attempts_per_sample", maxAttemptsPerSample, 1, 1'000'000);
+  requirePositive("eye_height_m", eyeHeightMeters);
+  requireInRange("cameras_across", camerasAcross, 1, 10'000);
+  requirePositive("min_camera_spacing_m", minCameraSpacingMeters);
+  requireInRange("upward_cosine", upwardCosine, 0.0, 1.0);
+}
 
 std::string_view sampleSetName(SampleSet set) {
   return set == SampleSet::MirrorFloor ? "mirror_floor" : "all_surfaces";

@@ -18,6 +18,10 @@ struct ReflectionSampleOptions {
   double minCameraSpacingMeters = 0.25;
   double upwardCosine = 0.9;  // mirror_floor: normal.z at least this (about 25 degrees)
   std::uint32_t seed = 1;
+
+  // Throws InputError unless targetSamples ("samples") is in [64, 1000000] and the rest is
+  // usable (maxAttemptsPerSample >= 1, eye height and camera spacing positive).
+  void check() const;
 };
 
 std::vector<ReflectionSample> buildReflectionSamples(const LevelRayCaster& level,

@@ -1,5 +1,6 @@
 #include "geometry/validate/validate_scene.h"
 
+#include "core/errors/option_checks.h"
 #include "geometry/build/authored_proxy_shape.h"
 #include "geometry/validate/validation_rules.h"
 
@@ -16,8 +17,23 @@ bool hasError(const std::vector<ValidationFinding>& findings, std::size_t from) 
 
 }  // namespace
 
+void ValidateOptions::check() const {
+  requirePositive("tolerance_deg", toleranceDeg);
+  requireInRange("max_overlap", maxOverlap, 1, 64);
+  requireNonNegative("max_inner_overlap_m3", maxInnerOverlapCubicMeters);
+  requireNonNegative("max_uncovered_m2", maxUncoveredFloorSquareMeters);
+  requirePositive("max_weight_jump", maxWeightJumpPerCentimeter);
+  requireInRange("weight_grid_m", weightGridMeters, 1e-3, 1.0);
+  requireInRange("max_leak_share", maxLeakShare, 0.0, 1.0);
+  requireInRange("grid", gridSpacingMeters, 0.01, 10.0);
+  requireInRange<std::size_t>("grid_point_budget", gridPointBudget, 1, 100'000'000);
+  requirePositive("headroom_m", headroomMeters);
+  samples.check();
+}
+
 std::vector<ValidationFinding> validateScene(const Scene& scene, const LevelRayCaster& level,
                                              const ValidateOptions& options) {
+  options.check();
   std::vector<ValidationFinding> findings;
   const std::vector<FloorPoint> floor = walkableFloor(level, options);
   for (const Probe& probe : scene.probes) {

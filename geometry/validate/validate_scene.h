@@ -73,6 +73,12 @@ struct ValidateOptions {
   double headroomMeters = 1.0;
   // Samples and cameras of proxy_error_over_tolerance and reflected_camera_outside_proxy.
   ReflectionSampleOptions samples;
+
+  // Throws InputError naming the first option outside its range (the CLI flags' names in
+  // snake_case): tolerance_deg > 0, max_overlap in [1, 64], max_inner_overlap_m3 >= 0,
+  // max_uncovered_m2 >= 0, max_weight_jump > 0, max_leak_share in [0, 1], grid in
+  // [0.01, 10], samples in [64, 1000000].
+  void check() const;
 };
 
 // Findings in a fixed order: per probe in scene order (mesh checks, capture, error, leak,

@@ -5,20 +5,17 @@
 // with the GIL released; progress is reported on the calling thread.
 
 #include "core/errors/input_error.h"
-#include "geometry/build/build_scene_proxies.h"
 #include "geometry/export/runtime_export.h"
-#include "geometry/level/load_level.h"
-#include "geometry/raycast/level_ray_caster.h"
 #include "geometry/scene/scene_file.h"
-#include "geometry/validate/validate_scene.h"
-#include "plugin/cli/reports/build_report.h"
-#include "plugin/cli/reports/validate_report.h"
+#include "plugin/jobs/build/build_job.h"
+#include "plugin/jobs/build/build_report.h"
+#include "plugin/jobs/validate/validate_job.h"
+#include "plugin/jobs/validate/validate_report.h"
 #include "plugin/python/python_level.h"
 #include "plugin/python/python_options.h"
 
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
-#include <tbb/global_control.h>
 
 #include <condition_variable>
 #include <exception>
@@ -69,7 +66,7 @@ py::dict sceneDict(Scene scene, bool worldFrame) {
   return jsonLoads(sceneFileJson(scene));
 }
 
-using Progress = std::function<void(std::size_t, std::size_t)>;
+using Progress = jobs::Progress;
 
 // Runs `work` on a worker thread with the GIL released and calls `progress(done, total)` on
 // this thread as the work reports it (Blender's progress bar may only be touched from the
@@ -124,63 +121,41 @@ Result runWithProgress(const std::function<Result(const Progress&)>& work,
   return std::move(*result);
 }
 
-// The level parts of `level` (None: the scene's own meshes, as the CLI loads them).
-std::optional<std::vector<LevelSource>> optionalLevelSources(const Scene& scene,
-                                                             const py::object& level) {
-  if (level.is_none()) return std::nullopt;
-  return levelSources(scene, level.cast<py::list>());
+// The job's input: the dict's scene and the level parts of `level` (None: the scene's own
+// meshes, as the CLI loads them).
+jobs::SceneInput sceneInput(const py::dict& sceneData, const std::string& anchor,
+                            const py::object& level) {
+  jobs::SceneInput input;
+  input.scene = sceneFromDict(sceneData, anchor, std::nullopt, std::nullopt);
+  if (!level.is_none()) input.level = levelSources(*input.scene, level.cast<py::list>());
+  return input;
 }
 
-LevelMesh sceneLevel(const Scene& scene, const std::optional<std::vector<LevelSource>>& sources) {
-  return sources ? loadLevelSources(scene, *sources) : loadLevel(scene);
-}
-
-struct SceneBuild {
-  Scene scene;
-  std::vector<ProbeProxyBuild> builds;
-};
-
-// Loads the level (the scene's own meshes when `level` is None, as the CLI does) and builds
-// every probe's proxy; writes proxies.json + proxies.glb into `outFolder` when it is given.
-SceneBuild buildScene(const py::dict& sceneData, const std::string& anchor, const py::object& level,
-                      const py::dict& options, const py::object& progress,
-                      const std::optional<std::string>& outFolder) {
-  SceneBuild sb{sceneFromDict(sceneData, anchor, std::nullopt, std::nullopt), {}};
-  int threads = 0;
-  const ProxyBuildOptions o = buildOptions(options, threads);
-  const std::optional<std::vector<LevelSource>> sources = optionalLevelSources(sb.scene, level);
-
-  sb.builds = runWithProgress<std::vector<ProbeProxyBuild>>(
-      [&](const Progress& onProbeDone) {
-        std::optional<tbb::global_control> limit;
-        if (threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, threads);
-        const LevelMesh mesh = sceneLevel(sb.scene, sources);
-        const LevelRayCaster rayCaster(mesh);
-        std::vector<ProbeProxyBuild> builds =
-            buildSceneProxies(sb.scene, rayCaster, o, onProbeDone);
-        if (outFolder) writeRuntimeExport(sb.scene, builds, *outFolder);
-        return builds;
-      },
-      progress);
-  return sb;
+// The build job on the dict's scene; writes proxies.json + proxies.glb into `outFolder` when
+// it is given.
+jobs::BuildJobResult buildScene(const py::dict& sceneData, const std::string& anchor,
+                                const py::object& level, const py::dict& options,
+                                const py::object& progress,
+                                const std::optional<std::string>& outFolder) {
+  jobs::BuildJobOptions job;
+  job.input = sceneInput(sceneData, anchor, level);
+  readBuildOptions(options, job);
+  if (outFolder) job.outFolder = *outFolder;
+  return runWithProgress<jobs::BuildJobResult>(
+      [&](const Progress& onProbeDone) { return jobs::runBuildJob(job, onProbeDone); }, progress);
 }
 
 // `probeproxy validate --json`'s findings as dicts: the same report text, parsed, so every
 // value is the CLI's to the bit (a value that is not finite is None, as it is null there).
 py::list validateFindings(const py::dict& sceneData, const std::string& anchor,
                           const py::object& level, const py::dict& options) {
-  const Scene scene = sceneFromDict(sceneData, anchor, std::nullopt, std::nullopt);
-  int threads = 0;
-  const ValidateOptions o = validateOptions(options, threads);
-  const std::optional<std::vector<LevelSource>> sources = optionalLevelSources(scene, level);
+  jobs::ValidateJobOptions job;
+  job.input = sceneInput(sceneData, anchor, level);
+  readValidateOptions(options, job);
   std::string report;
   {
     py::gil_scoped_release release;
-    std::optional<tbb::global_control> limit;
-    if (threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, threads);
-    const LevelMesh mesh = sceneLevel(scene, sources);
-    const LevelRayCaster rayCaster(mesh);
-    report = cli::validateReportJson(validateScene(scene, rayCaster, o));
+    report = jobs::validateReportJson(jobs::runValidateJob(job).findings);
   }
   return jsonLoads(report)["findings"];
 }
@@ -190,8 +165,8 @@ py::tuple vec3(const glm::dvec3& v) { return py::make_tuple(v.x, v.y, v.z); }
 // The CLI's `build --json` probes, each with what Blender draws: the kept proxy's planes and
 // boundary mesh in world metres (the runtime export's, so a sphere is its icosphere) and the
 // build's findings.
-py::list probeResults(const SceneBuild& sb) {
-  py::list probes = jsonLoads(cli::buildReportJson(sb.builds))["probes"];
+py::list probeResults(const jobs::BuildJobResult& sb) {
+  py::list probes = jsonLoads(jobs::buildReportJson(sb.builds))["probes"];
   const RuntimeExport runtime = makeRuntimeExport(sb.scene, sb.builds);
   for (std::size_t i = 0; i < sb.builds.size(); ++i) {
     py::dict probe = probes[i].cast<py::dict>();

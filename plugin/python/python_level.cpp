@@ -1,7 +1,6 @@
 #include "plugin/python/python_level.h"
 
 #include "core/errors/input_error.h"
-#include "geometry/level/load_level.h"
 
 #include <cmath>
 #include <cstdint>
@@ -89,8 +88,8 @@ LevelMesh meshPart(const Scene& scene, const py::dict& part, std::size_t index) 
 
 }  // namespace
 
-std::vector<LevelSource> levelSources(const Scene& scene, const py::list& parts) {
-  std::vector<LevelSource> sources;
+std::vector<jobs::LevelSource> levelSources(const Scene& scene, const py::list& parts) {
+  std::vector<jobs::LevelSource> sources;
   for (std::size_t i = 0; i < parts.size(); ++i) {
     const py::dict part = parts[i].cast<py::dict>();
     if (!part.contains("scene_level")) {
@@ -107,18 +106,5 @@ std::vector<LevelSource> levelSources(const Scene& scene, const py::list& parts)
   return sources;
 }
 
-LevelMesh loadLevelSources(const Scene& scene, const std::vector<LevelSource>& sources) {
-  LevelMesh level;
-  for (const LevelSource& source : sources) {
-    if (const auto* index = std::get_if<std::size_t>(&source)) {
-      const LevelMeshRef& ref = scene.level[*index];
-      appendLevelMesh(level, loadLevelMeshFile(ref.path, ref.up, scene.metersPerUnit));
-    } else {
-      appendLevelMesh(level, std::get<LevelMesh>(source));
-    }
-  }
-  if (level.triangles.empty()) throw InputError(scene.file, "the level has no triangles");
-  return level;
-}
 
 }  // namespace probeproxy::python

@@ -9,25 +9,18 @@
 //       triangles: flat vertex indices, three per triangle (any integer buffer or sequence)
 
 #include "core/scene/scene.h"
-#include "geometry/level/level_mesh.h"
+#include "plugin/jobs/scene_input.h"
 
 #include <pybind11/pybind11.h>
 
-#include <variant>
 #include <vector>
 
 namespace probeproxy::python {
 
-// One part: an index into scene.level (loaded later) or triangles already copied out of Python.
-using LevelSource = std::variant<std::size_t, LevelMesh>;
-
 // Reads the parts out of Python (needs the GIL). Throws InputError (naming the scene file)
 // for a malformed part: an index out of range, a vertex count that is not a multiple of 3, a
 // triangle index past the vertices or a non-finite coordinate.
-std::vector<LevelSource> levelSources(const Scene& scene, const pybind11::list& parts);
-
-// Loads and appends the parts in order (no Python: runs with the GIL released). Throws
-// InputError for an unreadable mesh file or a level with no triangles.
-LevelMesh loadLevelSources(const Scene& scene, const std::vector<LevelSource>& sources);
+// The jobs load them (plugin/jobs/scene_input.h) with the GIL released.
+std::vector<jobs::LevelSource> levelSources(const Scene& scene, const pybind11::list& parts);
 
 }  // namespace probeproxy::python

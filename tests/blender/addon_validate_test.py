@@ -6,7 +6,7 @@
 # Imports the scene through Import Scene and asserts that the findings in the panel equal
 # `probeproxy validate --json`'s (same order, same values), that there are some, that exactly
 # the offending probes are selected (the first finding's active), and that the module's
-# validate_scene returns the CLI's findings too; a refused option raises ValueError, a missing
+# validate_scene returns the CLI's findings too; a refused option raises InputError, a missing
 # level mesh InputError with the library's one line.
 
 import os
@@ -36,9 +36,8 @@ def raised(work):
 
 data = native.module.read_scene(scene)
 e = raised(lambda: native.module.validate_scene(data, scene, options={"grid": 0}))
-check(e is not None and not isinstance(e, native.module.InputError)
-      and str(e) == "option grid = 0 is outside [0.01, 10.0]",
-      "an option the CLI refuses raises ValueError: %s" % e)
+check(isinstance(e, native.module.InputError) and str(e) == "option grid: 0 is outside [0.01, 10]",
+      "an option the CLI refuses raises the job's InputError, the CLI's line: %s" % e)
 data["level"] = ["no_such_level.obj"]
 e = raised(lambda: native.module.validate_scene(data, scene))
 missing = os.path.join(os.path.dirname(scene), "no_such_level.obj")

@@ -1,10 +1,9 @@
-#include "core/io/atomic_write.h"
-#include "plugin/cli/bench/bench_report.h"
-#include "plugin/cli/bench/bench_scenes.h"
-#include "plugin/cli/verb.h"
+// `probeproxy bench`: flags into the bench job (plugin/jobs/bench/), its table or JSON printed.
 
-#include <unistd.h>
-#include <filesystem>
+#include "plugin/cli/verb.h"
+#include "plugin/jobs/bench/bench_job.h"
+#include "plugin/jobs/bench/bench_report.h"
+
 #include <iostream>
 #include <memory>
 
@@ -16,28 +15,23 @@ struct BenchVerbOptions {
   std::vector<std::string> scenes;
   std::string out;
   bool json = false;
-  BenchOptions bench;
+  jobs::BenchJobOptions job;
 };
 
-int runBench(const BenchVerbOptions& o) {
-  BenchOptions bench = o.bench;
-  if (!o.out.empty()) bench.imagesFolder = std::filesystem::path(o.out) / "images";
-  const std::vector<BenchResult> results = benchScenes(o.scenes, bench, [](std::string_view line) {
-    std::cerr << "probeproxy bench: " << line << "\n";
-  });
-  const std::string json = benchReportJson(results);
-  if (!o.out.empty()) {
-    std::filesystem::create_directories(o.out);
-    const std::filesystem::path file = std::filesystem::path(o.out) / "bench.json";
-    writeFileAtomically(file, json);
-    std::cerr << "probeproxy bench: wrote " << file.string()
-              << " (charts: python3 scripts/bench_charts.py " << file.string() << " " << o.out
-              << ")\n";
+int runBench(BenchVerbOptions o) {
+  o.job.scenes.assign(o.scenes.begin(), o.scenes.end());
+  o.job.outFolder = o.out;
+  const jobs::BenchJobResult r = jobs::runBenchJob(
+      o.job, [](std::string_view line) { std::cerr << "probeproxy bench: " << line << "\n"; });
+  if (!r.benchJson.empty()) {
+    std::cerr << "probeproxy bench: wrote " << r.benchJson.string()
+              << " (charts: python3 scripts/bench_charts.py " << r.benchJson.string() << " "
+              << o.out << ")\n";
   }
   if (o.json) {
-    std::cout << json;
+    std::cout << r.json;
   } else {
-    printBenchTable(std::cout, results);
+    jobs::printBenchTable(std::cout, r.results);
   }
   return 0;
 }
@@ -55,21 +49,18 @@ Verb addBenchVerb(CLI::App& app) {
                     "rebuilt with the infinite, authored and kept proxy (error heatmap, red miss "
                     "mask, EXR)");
   bench
-      ->add_option("--repetitions", o->bench.timing.repetitions,
+      ->add_option("--repetitions", o->job.bench.timing.repetitions,
                    "timing repetitions; ns per lookup is their median")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 100));
+      ->capture_default_str();
   bench
-      ->add_option("--min-time", o->bench.timing.minTimeSeconds,
+      ->add_option("--min-time", o->job.bench.timing.minTimeSeconds,
                    "CPU seconds each timing repetition runs at least")
-      ->capture_default_str()
-      ->check(CLI::Range(0.001, 10.0));
+      ->capture_default_str();
   bench
-      ->add_option("--samples", o->bench.proxy.samples.targetSamples,
+      ->add_option("--samples", o->job.bench.proxy.samples.targetSamples,
                    "reflection samples per set (the error figures and the timed rays)")
-      ->capture_default_str()
-      ->check(CLI::Range(64, 1000000));
-  bench->add_flag("!--no-instructions", o->bench.countInstructions,
+      ->capture_default_str();
+  bench->add_flag("!--no-instructions", o->job.bench.countInstructions,
                   "skip instructions per lookup (callgrind); they are reported as null");
   return {bench, [o] { return runBench(*o); }};
 }

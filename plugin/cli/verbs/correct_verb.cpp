@@ -1,14 +1,9 @@
-// `probeproxy correct`: the mixing step of seed 000 for one probe, camera and reflection plane,
-// written as a cubemap (six EXRs) centred at the reflected camera.
+// `probeproxy correct`: flags into the correct job (plugin/jobs/correct/): seed 000's mixing
+// step for one probe, camera and reflection plane, written as a cubemap.
 
-#include "core/cube/cubemap_io.h"
-#include "core/errors/input_error.h"
-#include "core/mixing/corrected_cubemap.h"
-#include "core/mixing/reflected_camera.h"
-#include "geometry/scene/scene_file.h"
-#include "plugin/cli/mixing_inputs.h"
-#include "plugin/cli/number_list.h"
+#include "plugin/cli/command_line_values.h"
 #include "plugin/cli/verb.h"
+#include "plugin/jobs/correct/correct_job.h"
 
 #include <iostream>
 #include <memory>
@@ -18,53 +13,34 @@ namespace probeproxy::cli {
 
 namespace {
 
-struct CorrectOptions {
+struct CorrectVerbOptions {
   std::string scene, probe, camera, plane, out, method = "mixing_plane", proxies;
 };
 
-int runCorrect(const CorrectOptions& o) {
-  // Everything is read and checked first; the six files are written only at the end.
-  const Scene scene = readSceneFile(o.scene);
-  const Probe& probe = findProbe(scene, o.probe);
-  const std::optional<MixingMethod> method = mixingMethodFromName(o.method);
-  if (!method)
-    throw InputError("--method", "expected mixing_plane or raster_convex, got '" + o.method + "'");
-  const std::vector<double> xyz = parseNumberList(o.camera, 3, "--camera");
-  const glm::dvec3 camera(xyz[0], xyz[1], xyz[2]);
-
-  if (o.out.find("{face}") == std::string::npos)
-    throw InputError(o.out, "the output pattern needs {face} (px nx py ny pz nz)");
-  const Cubemap source = readCubemapImage(probeCubemapPath(scene, probe));
-  MixingProxies proxies(scene, o.proxies);
-  const ProbeCorrection c = correctProbe(scene, probe, source, camera, o.plane, proxies, *method);
-  const CorrectedCubemap& corrected = c.corrected;
-
-  // `{level}` in the pattern writes every mip level; without it, level 0 only.
-  const std::string levelKey = "{level}";
-  const std::size_t levelAt = o.out.find(levelKey);
-  const int levels = levelAt == std::string::npos ? 1 : corrected.cube.numLevels();
-  for (int level = 0; level < levels; ++level) {
-    std::string pattern = o.out;
-    if (levelAt != std::string::npos)
-      pattern.replace(levelAt, levelKey.size(), std::to_string(level));
-    const std::filesystem::path folder = std::filesystem::path(pattern).parent_path();
-    if (!folder.empty()) std::filesystem::create_directories(folder);
-    writeCubemap(corrected.cube, pattern, level);
-    std::cout << "wrote " << pattern << " (" << corrected.cube.faceSize(level) << " px)\n";
-  }
-  const ReflectedCameraCheck inside = reflectedCameraInsideProxy(camera, c.plane, c.proxy);
-  const glm::dvec3 reflected = c.reflectedCameraMeters;
-  std::cout << mixingMethodName(*method) << ": reflected camera (" << reflected.x << ", "
-            << reflected.y << ", " << reflected.z << ") " << (inside.inside ? "inside" : "outside")
-            << " the proxy, " << missCount(corrected) << " missed texels (red) over "
-            << corrected.cube.numLevels() << " levels\n";
+int runCorrect(const CorrectVerbOptions& o) {
+  jobs::CorrectJobOptions job;
+  job.scene = o.scene;
+  job.probe = o.probe;
+  job.cameraMeters = parsePoint(o.camera, "--camera");
+  job.plane = parseOptionalPlane(o.plane, "--plane");
+  job.outPattern = o.out;
+  job.method = parseMixingMethod(o.method);
+  job.proxiesJson = o.proxies;
+  const jobs::CorrectJobResult r = jobs::runCorrectJob(job);
+  for (std::size_t i = 0; i < r.written.size(); ++i)
+    std::cout << "wrote " << r.written[i] << " (" << r.faceSizes[i] << " px)\n";
+  const glm::dvec3 reflected = r.reflectedCameraMeters;
+  std::cout << o.method << ": reflected camera (" << reflected.x << ", " << reflected.y << ", "
+            << reflected.z << ") " << (r.reflectedCameraInsideProxy ? "inside" : "outside")
+            << " the proxy, " << r.missedTexels << " missed texels (red) over " << r.levels
+            << " levels\n";
   return 0;
 }
 
 }  // namespace
 
 Verb addCorrectVerb(CLI::App& app) {
-  auto o = std::make_shared<CorrectOptions>();
+  auto o = std::make_shared<CorrectVerbOptions>();
   CLI::App* correct = app.add_subcommand(
       "correct",
       "Write a parallax-corrected cubemap (EXR) for a probe, camera and reflection plane");

@@ -1,8 +1,9 @@
-#include "geometry/level/load_level.h"
-#include "geometry/scene/scene_file.h"
-#include "geometry/validate/validate_scene.h"
-#include "plugin/cli/reports/validate_report.h"
+// `probeproxy validate`: flags into the validate job (plugin/jobs/validate/), its findings
+// printed; exit 1 on any error or warning.
+
 #include "plugin/cli/verb.h"
+#include "plugin/jobs/validate/validate_job.h"
+#include "plugin/jobs/validate/validate_report.h"
 
 #include <iostream>
 #include <memory>
@@ -14,27 +15,25 @@ namespace {
 struct ValidateVerbOptions {
   std::string scene;
   bool json = false;
-  ValidateOptions validate;
+  jobs::ValidateJobOptions job;
 };
 
-int runValidate(const ValidateVerbOptions& o) {
-  const Scene scene = readSceneFile(o.scene);
-  const LevelMesh level = loadLevel(scene);
-  const LevelRayCaster rayCaster(level);
-  const std::vector<ValidationFinding> findings = validateScene(scene, rayCaster, o.validate);
+int runValidate(ValidateVerbOptions o) {
+  o.job.input.file = o.scene;
+  const jobs::ValidateJobResult result = jobs::runValidateJob(o.job);
   if (o.json)
-    std::cout << validateReportJson(findings);
+    std::cout << jobs::validateReportJson(result.findings);
   else
-    printFindings(std::cout, o.scene, findings);
+    jobs::printFindings(std::cout, o.scene, result.findings);
   // Errors and warnings fail a pipeline; info findings are reported but leave it clean.
-  return findingsFail(findings) ? 1 : 0;
+  return result.fails ? 1 : 0;
 }
 
 }  // namespace
 
 Verb addValidateVerb(CLI::App& app) {
   auto o = std::make_shared<ValidateVerbOptions>();
-  ValidateOptions& v = o->validate;
+  ValidateOptions& v = o->job.validate;
   CLI::App* verb = app.add_subcommand(
       "validate",
       "Check authored proxies and influence volumes against the level (exit 0 clean, 1 "
@@ -43,37 +42,31 @@ Verb addValidateVerb(CLI::App& app) {
   verb->add_flag("--json", o->json, "print the findings as JSON on stdout");
   verb->add_option("--tolerance-deg", v.toleranceDeg,
                    "proxy_error_over_tolerance: largest mirror_floor p95 angular error")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->capture_default_str();
   verb->add_option("--max-overlap", v.maxOverlap,
                    "too_many_overlaps: most influence volumes allowed at one point")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 64));
+      ->capture_default_str();
   verb->add_option("--max-uncovered-m2", v.maxUncoveredFloorSquareMeters,
                    "floor_not_covered: walkable floor allowed outside every influence volume")
-      ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->capture_default_str();
   verb->add_option("--max-leak-share", v.maxLeakShare,
                    "influence_leak: share of a volume's floor allowed hidden from its probe")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 1.0));
+      ->capture_default_str();
   verb->add_option("--max-inner-overlap-m3", v.maxInnerOverlapCubicMeters,
                    "inner_ranges_overlap: volume two inner ranges may share")
-      ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->capture_default_str();
   verb->add_option("--max-weight-jump", v.maxWeightJumpPerCentimeter,
                    "weight_jump: largest blend-weight change per centimetre")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->capture_default_str();
   verb->add_flag("--glossy", v.glossyReceivers,
                  "reflected_camera_outside_proxy: receivers are glossy, so the reflected "
                  "camera itself must be inside the proxy (seed 000)");
   verb->add_option("--grid", v.gridSpacingMeters, "grid spacing of the floor and volume rules, m")
-      ->capture_default_str()
-      ->check(CLI::Range(0.01, 10.0));
+      ->capture_default_str();
   verb->add_option("--samples", v.samples.targetSamples, "reflection samples per probe")
-      ->capture_default_str()
-      ->check(CLI::Range(64, 1000000));
+      ->capture_default_str();
+  verb->add_option("--threads", o->job.threads, "worker threads (0: all cores)")
+      ->capture_default_str();
   return {verb, [o] { return runValidate(*o); }};
 }
 

@@ -1,0 +1,50 @@
+#include "plugin/jobs/correct/correct_job.h"
+
+#include "core/cube/cubemap_io.h"
+#include "core/errors/input_error.h"
+#include "core/mixing/reflected_camera.h"
+#include "geometry/scene/scene_file.h"
+#include "plugin/jobs/mixing/mixing_inputs.h"
+
+namespace probeproxy::jobs {
+
+void CorrectJobOptions::check() const {
+  if (outPattern.find("{face}") == std::string::npos)
+    throw InputError(outPattern, "the output pattern needs {face} (px nx py ny pz nz)");
+}
+
+CorrectJobResult runCorrectJob(const CorrectJobOptions& o) {
+  o.check();
+  // Everything is read and checked first; the files are written only at the end.
+  const Scene scene = readSceneFile(o.scene);
+  const Probe& probe = findProbe(scene, o.probe);
+  const Cubemap source = readCubemapImage(probeCubemapPath(scene, probe));
+  MixingProxies proxies(scene, o.proxiesJson.string());
+  const ProbeCorrection c = correctProbe(scene, probe, source, o.cameraMeters, o.plane, proxies,
+                                         o.method);
+  const CorrectedCubemap& corrected = c.corrected;
+
+  CorrectJobResult result;
+  // `{level}` in the pattern writes every mip level; without it, level 0 only.
+  const std::string levelKey = "{level}";
+  const std::size_t levelAt = o.outPattern.find(levelKey);
+  const int levels = levelAt == std::string::npos ? 1 : corrected.cube.numLevels();
+  for (int level = 0; level < levels; ++level) {
+    std::string pattern = o.outPattern;
+    if (levelAt != std::string::npos)
+      pattern.replace(levelAt, levelKey.size(), std::to_string(level));
+    const std::filesystem::path folder = std::filesystem::path(pattern).parent_path();
+    if (!folder.empty()) std::filesystem::create_directories(folder);
+    writeCubemap(corrected.cube, pattern, level);
+    result.written.push_back(pattern);
+    result.faceSizes.push_back(corrected.cube.faceSize(level));
+  }
+  result.reflectedCameraMeters = c.reflectedCameraMeters;
+  result.reflectedCameraInsideProxy =
+      reflectedCameraInsideProxy(o.cameraMeters, c.plane, c.proxy).inside;
+  result.missedTexels = missCount(corrected);
+  result.levels = corrected.cube.numLevels();
+  return result;
+}
+
+}  // namespace probeproxy::jobs

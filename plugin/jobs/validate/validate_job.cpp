@@ -1,0 +1,22 @@
+#include "plugin/jobs/validate/validate_job.h"
+
+#include "geometry/raycast/level_ray_caster.h"
+#include "plugin/jobs/thread_limit.h"
+
+namespace probeproxy::jobs {
+
+void ValidateJobOptions::check() const { validate.check(); }
+
+ValidateJobResult runValidateJob(const ValidateJobOptions& o) {
+  o.check();
+  const ThreadLimit threads(o.threads);
+  const Scene scene = readSceneInput(o.input);
+  const LevelMesh level = loadSceneLevel(scene, o.input);
+  const LevelRayCaster rayCaster(level);
+  ValidateJobResult result;
+  result.findings = validateScene(scene, rayCaster, o.validate);
+  result.fails = findingsFail(result.findings);
+  return result;
+}
+
+}  // namespace probeproxy::jobs
