@@ -1,7 +1,7 @@
 #pragma once
-// The error of one correction method with one proxy over one sample set (DESIGN.md,
-// "Measures"). Angular error = angle(P - C, H - C) in degrees, over the samples that are
-// neither occluded nor missed.
+// The error of one correction method with one proxy over one sample set
+// (docs/methods_and_measures.md, "Measures"). Angular error = angle(P - C, H - C) in degrees, over
+// the samples that are neither occluded nor missed.
 
 #include <cstddef>
 #include <limits>

@@ -1,6 +1,6 @@
 #pragma once
-// Image error (DESIGN.md, "Measures"): a reconstructed reflection against a reference render
-// of the same view, over the pixels a mask selects, in linear HDR.
+// Image error (docs/methods_and_measures.md, "Measures"): a reconstructed reflection against a
+// reference render of the same view, over the pixels a mask selects, in linear HDR.
 //
 //   MSE  = mean over masked pixels and the 3 channels of (reconstruction - reference)^2
 //   PSNR = 10 log10(peak^2 / MSE) dB, peak = the reference's largest channel value over the mask

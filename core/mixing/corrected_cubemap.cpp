@@ -2,7 +2,7 @@
 
 #include "core/cube/cubemap_sampling.h"
 #include "core/mixing/mixing_plane.h"
-#include "core/raster/raster_convex.h"
+#include "core/mixing/raster_convex.h"
 
 #include <stdexcept>
 

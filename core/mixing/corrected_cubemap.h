@@ -20,7 +20,7 @@ namespace probeproxy {
 
 enum class MixingMethod { MixingPlane, RasterConvex };
 
-// DESIGN.md's ids: "mixing_plane", "raster_convex".
+// docs/methods_and_measures.md's ids: "mixing_plane", "raster_convex".
 std::string_view mixingMethodName(MixingMethod method);
 std::optional<MixingMethod> mixingMethodFromName(std::string_view name);
 

@@ -1,6 +1,6 @@
 #pragma once
-// One interface over the lookup methods of DESIGN.md's "Methods" table that run per pixel:
-// a PreparedProxy is built once per probe from its ProxyShape and capture point (float
+// One interface over the lookup methods of docs/methods_and_measures.md's "Methods" table that run
+// per pixel: a PreparedProxy is built once per probe from its ProxyShape and capture point (float
 // constants, relative to the capture point), then looked up one ray at a time (the seeds'
 // scalar shader ports, seed_lookups.h) or many at a time (batched_lookups.h).
 
@@ -17,7 +17,7 @@ namespace probeproxy {
 
 enum class Method { Infinite, CheapK, Sphere, Aabb, Obb, Convex };
 
-// DESIGN.md's id: "infinite", "cheap_k", "sphere", "aabb", "obb", "convex".
+// docs/methods_and_measures.md's id: "infinite", "cheap_k", "sphere", "aabb", "obb", "convex".
 std::string_view methodName(Method method);
 
 struct PreparedProxy {

@@ -32,8 +32,8 @@ struct BoxShape {
 
 using ProxyShape = std::variant<InfiniteShape, CheapKShape, SphereShape, BoxShape, ConvexProxy>;
 
-// The DESIGN.md method id a shape is evaluated with: "infinite", "cheap_k", "sphere",
-// "aabb" (a box whose rotation is the identity), "obb" or "convex".
+// The method id (docs/methods_and_measures.md) a shape is evaluated with: "infinite", "cheap_k",
+// "sphere", "aabb" (a box whose rotation is the identity), "obb" or "convex".
 std::string_view methodId(const ProxyShape& shape);
 
 // Planes a shader tests: 0 for infinite, cheap_k and sphere, 6 for boxes, k for convex.

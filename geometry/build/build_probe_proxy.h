@@ -1,11 +1,20 @@
 #pragma once
 // The proxy pipeline for one probe: look at the level from the capture point, fit every kind
 // of candidate to what it sees, measure each against the real level, keep the simplest one
-// that is accurate enough ("model no more than the scene needs").
+// that is accurate enough ("model no more than the scene needs"). Its stages, in order, each a
+// file of this folder with a test of its own:
+//   1. seeLevel           probe_view.h      the depth cube, the points and walls seen
+//   2. drawProbeSamples   probe_samples.h   reflection samples to fit on and to report on
+//   3. fitCandidates      fit_candidates.h  authored, infinite, cheap_k, spheres, boxes, hull
+//   4. simplifyHull       simplify_hull.h   convex_k for every plane count the error allows
+//   5. measure            evaluate_shape.h  each candidate's error on mirror_floor
+//   6. selectProxy        select_proxy.h    which one to keep
+//   7. finishKeptProxy    (here)            the kept convex's corners; the capture inside it
 
 #include "core/proxy/proxy_candidate.h"
 #include "core/scene/probe.h"
 #include "geometry/build/proxy_build_options.h"
+#include "geometry/build/select_proxy.h"
 #include "geometry/evaluation/reflection_samples.h"
 #include "geometry/raycast/level_ray_caster.h"
 
@@ -21,8 +30,9 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
                                 const std::optional<ProxyShape>& authored,
                                 const ProxyBuildOptions& options);
 
-// Index of the candidate to keep (see ProxyBuildOptions), given candidates built as above.
-std::size_t selectProxy(const std::vector<ProxyCandidate>& candidates,
-                        const ProxyBuildOptions& options);
+// Stage 7: the kept convex proxy gets its corners and triangles (engines and Blender draw
+// it); one that has none keeps the aabb candidate instead. A finding when the capture point is
+// not strictly inside the kept proxy.
+void finishKeptProxy(ProbeProxyBuild& build, glm::dvec3 captureMeters);
 
 }  // namespace probeproxy

@@ -1,5 +1,6 @@
 #include "geometry/evaluation/evaluate_shape.h"
 
+#include "core/errors/invariant_checks.h"
 #include "core/parallax/reference_lookup.h"
 
 #include <glm/geometric.hpp>
@@ -14,6 +15,8 @@ double angleBetweenDeg(glm::dvec3 a, glm::dvec3 b) {
 }
 
 double angularErrorDeg(const ProxyShape& shape, glm::dvec3 capture, const ReflectionSample& s) {
+  // Samples are built with unit reflection vectors; the sky's ideal lookup is r itself.
+  PROBEPROXY_DCHECK(std::abs(glm::length(s.reflected) - 1.0) < 1e-9);
   const std::optional<glm::dvec3> d = referenceLookup(shape, capture, s.xMeters, s.reflected);
   if (!d) return std::numeric_limits<double>::quiet_NaN();
   const glm::dvec3 ideal = s.hitsSky ? s.reflected : s.trueHitMeters - capture;

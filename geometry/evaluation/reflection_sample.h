@@ -1,7 +1,7 @@
 #pragma once
-// Reflection samples (DESIGN.md, "Measures"): a point x on a level surface with normal n,
-// seen from a camera at e, reflecting r = reflect(x - e, n), and where that ray really lands.
-// World frame (Z up), metres.
+// Reflection samples (docs/methods_and_measures.md, "Measures"): a point x on a level surface with
+// normal n, seen from a camera at e, reflecting r = reflect(x - e, n), and where that ray really
+// lands. World frame (Z up), metres.
 
 #include <glm/vec3.hpp>
 

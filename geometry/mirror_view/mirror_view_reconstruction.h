@@ -1,7 +1,7 @@
 #pragma once
-// Validation against an independent renderer (DESIGN.md "Image error"): the reflection a
-// mirror floor shows, rebuilt from a probe's cubemap by a correction method, against the
-// Cycles render of the same view.
+// Validation against an independent renderer (docs/methods_and_measures.md "Measures"): the
+// reflection a mirror floor shows, rebuilt from a probe's cubemap by a correction method, against
+// the Cycles render of the same view.
 //
 // For every pixel whose camera ray meets the mirror floor: x = where the ray meets the mirror
 // plane, r = the ray reflected about the plane's normal, and the method's radiance for (x, r)

@@ -11,9 +11,9 @@
 
 namespace probeproxy {
 
-// A per-pixel method (DESIGN.md "Methods": infinite, cheap_k, sphere, aabb, obb, convex) through
-// the one prepared-proxy interface (prepareProxy + lookupScalar, the float shader ports), then
-// a seam-aware bilinear fetch of the cubemap's sharpest level along d = P - C.
+// A per-pixel method (docs/methods_and_measures.md "Methods": infinite, cheap_k, sphere, aabb, obb,
+// convex) through the one prepared-proxy interface (prepareProxy + lookupScalar, the float shader
+// ports), then a seam-aware bilinear fetch of the cubemap's sharpest level along d = P - C.
 RadianceLookup proxyRadianceLookup(const Cubemap& cube, const ProxyShape& shape,
                                    glm::dvec3 captureMeters);
 

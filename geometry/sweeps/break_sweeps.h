@@ -25,7 +25,7 @@ struct SweepPoint {
 };
 
 struct SweepSeries {
-  std::string method;  // DESIGN.md's id, or "reference_double", "mixing_plane"
+  std::string method;  // docs/methods_and_measures.md's id, or "reference_double", "mixing_plane"
   std::vector<SweepPoint> points;
 };
 

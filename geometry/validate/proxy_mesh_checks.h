@@ -26,32 +26,34 @@ struct ProxyMeshFinding {
   std::string hint;      // one line: how to fix it
 };
 
+// clang-format off
 // Rules, in the order findings are returned (value / limit); proxy_empty also ends the list
 // when no triangle with an area is left:
-//   proxy_empty            error    no triangles, or none with an area: usable triangles / 1
-//   proxy_degenerate_face  warning  zero-area faces (kept for closedness, skipped for angles):
-//   count / 0 proxy_not_manifold     error    faces that do not fit one 2-manifold surface (an edge
-//   already
-//                                   shared by two faces, a vertex whose fan is closed); they are
-//                                   left out of the later checks: count / 0
-//   proxy_not_closed       error    edges used by one face only: count / 0
-//   proxy_not_oriented     error    faces wound against their neighbours (or a one-sided
-//                                   surface): count / 0
-//   proxy_separate_pieces  error    the surface is several pieces sharing no edge: pieces / 1
-//   proxy_flat             error    encloses no volume: |volume| m^3 / tolerance m^3
-//   proxy_inward_faces     error    signed volume negative: volume m^3 / 0
-//   proxy_concave_edge     error    worst inward bend between two faces: degrees / tolerance
-//   degrees proxy_not_convex       error    every edge bends outwards, yet the surface overlaps
-//   itself:
-//                                   the farthest a vertex lies outside a face's plane, metres /
-//                                   tolerance metres (plane tolerance + size * sin(angle
-//                                   tolerance))
-//   proxy_misses_capture   error    capture point outside or on the boundary: signed metres
-//                                   outside the worst face plane (negative inside) / -tolerance
+//   rule                         severity  what                                    value / limit
+//   proxy_empty                  error     no triangles, or none with an area      usable triangles / 1
+//   proxy_degenerate_face        warning   zero-area faces (kept for closedness,   count / 0
+//                                          skipped for angles)
+//   proxy_not_manifold           error     faces that do not fit one 2-manifold    count / 0
+//                                          surface (an edge already shared by two
+//                                          faces, a vertex whose fan is closed);
+//                                          left out of the later checks
+//   proxy_not_closed             error     edges used by one face only             count / 0
+//   proxy_not_oriented           error     faces wound against their neighbours    count / 0
+//                                          (or a one-sided surface)
+//   proxy_separate_pieces        error     several pieces sharing no edge          pieces / 1
+//   proxy_flat                   error     encloses no volume                      |volume| m^3 / tolerance m^3
+//   proxy_inward_faces           error     signed volume negative                  volume m^3 / 0
+//   proxy_concave_edge           error     worst inward bend between two faces     degrees / tolerance degrees
+//   proxy_not_convex             error     every edge bends outwards, yet the      metres / tolerance metres
+//                                          surface overlaps itself: the farthest a (plane tolerance + size *
+//                                          vertex lies outside a face's plane      sin(angle tolerance))
+//   proxy_misses_capture         error     capture point outside or on the         signed metres outside the
+//                                          boundary                                worst face plane / -tolerance
 // checkConvexProxy adds:
-//   proxy_bad_plane        error    a plane normal that is not unit length: length / 1
-//   proxy_face_off_planes  error    triangles on none of the planes: worst metres off / tolerance
-//   proxy_vertex_outside_planes  error  vertices outside a plane: worst metres outside / tolerance
+//   proxy_bad_plane              error     a plane normal that is not unit length  length / 1
+//   proxy_face_off_planes        error     triangles on none of the planes         worst metres off / tolerance
+//   proxy_vertex_outside_planes  error     vertices outside a plane                worst metres outside / tolerance
+// clang-format on
 struct ProxyMeshCheckOptions {
   // An edge is concave when its two faces bend inwards by more than this (0 = coplanar).
   double convexToleranceDegrees = 0.5;

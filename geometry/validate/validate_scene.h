@@ -1,5 +1,5 @@
 #pragma once
-// Validation of the volumes an artist authored (DESIGN.md, "Validate artist volumes"): every
+// Validation of the volumes an artist authored (README "Validation"): every
 // rule below looks at the scene and the real level and reports what breaks it, which probe,
 // by how much, and how to fix it. A clean scene gives no findings. The CLI (`probeproxy
 // validate`) and the Blender add-on both call validateScene.

@@ -17,8 +17,8 @@ namespace probeproxy::jobs {
 using LevelSource = std::variant<std::size_t, LevelMesh>;
 
 struct SceneInput {
-  std::filesystem::path file;  // read when `scene` is empty
-  std::optional<Scene> scene;  // in memory, already checked (parseSceneFile)
+  std::filesystem::path file;                     // read when `scene` is empty
+  std::optional<Scene> scene;                     // in memory, already checked (parseSceneFile)
   std::optional<std::vector<LevelSource>> level;  // parts in order; empty: the scene's meshes
 };
 

@@ -106,5 +106,4 @@ std::vector<jobs::LevelSource> levelSources(const Scene& scene, const py::list& 
   return sources;
 }
 
-
 }  // namespace probeproxy::python

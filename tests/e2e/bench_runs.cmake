@@ -1,7 +1,7 @@
 cmake_minimum_required(VERSION 3.20)
-# `probeproxy bench --json --out` on one level: every method of DESIGN.md's table has a row
+# `probeproxy bench --json --out` on one level: every method of docs/methods_and_measures.md's table has a row
 # (mixing_plane, raster_convex and pointcloud included),
-# each row starts with DESIGN.md's names in order, both lookup paths are timed, instructions
+# each row starts with docs/methods_and_measures.md's names in order, both lookup paths are timed, instructions
 # are counted (valgrind is in scripts/setup.sh), psnr_db against Cycles is there, a figure not
 # measured would be null, and bench.json holds what stdout printed.
 file(REMOVE_RECURSE ${OUT})
@@ -21,7 +21,7 @@ string(REGEX MATCHALL "\"scene\": \"[^\"]*\",${s}\"method\": \"[^\"]*\",${s}\"pl
   ordered "${json}")
 list(LENGTH ordered ordered_rows)
 if(NOT ordered_rows EQUAL rows OR rows LESS 8)
-  message(FATAL_ERROR "${ordered_rows} of ${rows} rows start with DESIGN.md's names in order")
+  message(FATAL_ERROR "${ordered_rows} of ${rows} rows start with docs/methods_and_measures.md's names in order")
 endif()
 set(methods "")
 math(EXPR last "${rows} - 1")

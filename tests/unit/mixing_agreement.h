@@ -6,8 +6,8 @@
 
 #include "core/mixing/lookup_cube.h"
 #include "core/mixing/mixing_plane.h"
+#include "core/mixing/raster_convex.h"
 #include "core/proxy/convex_proxy.h"
-#include "core/raster/raster_convex.h"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>

@@ -4,10 +4,10 @@
 
 #include "core/mixing/corrected_cubemap.h"
 #include "core/mixing/mixing_plane.h"
+#include "core/mixing/raster_convex.h"
 #include "core/mixing/reflected_camera.h"
 #include "core/parallax/reference_lookup.h"
 #include "core/raster/face_rasterizer.h"
-#include "core/raster/raster_convex.h"
 #include "tests/unit/mixing_agreement.h"
 
 #include <gtest/gtest.h>

@@ -28,7 +28,8 @@ int runBlend(const BlendVerbOptions& o) {
   job.outPattern = o.out;
   job.weightsPng = o.weightsPng;
   const std::optional<BlendScheme> scheme = blendSchemeFromName(o.scheme);
-  if (!scheme) throw InputError("--scheme", "expected lagarde or enlighten, got '" + o.scheme + "'");
+  if (!scheme)
+    throw InputError("--scheme", "expected lagarde or enlighten, got '" + o.scheme + "'");
   job.blend = {*scheme, o.maxProbes};
   if (!o.camera.empty()) job.cameraMeters = parsePoint(o.camera, "--camera");
   job.plane = parseOptionalPlane(o.plane, "--plane");

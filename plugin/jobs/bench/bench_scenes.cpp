@@ -5,9 +5,9 @@
 #include "geometry/mirror_view/mirror_view_reconstruction.h"
 #include "geometry/mirror_view/radiance_lookups.h"
 #include "geometry/scene/scene_file.h"
+#include "plugin/cost/instructions_per_lookup.h"
 #include "plugin/jobs/bench/image_reference.h"
 #include "plugin/jobs/bench/mixing_pointcloud_rows.h"
-#include "plugin/cost/instructions_per_lookup.h"
 
 #include <tbb/parallel_for.h>
 

@@ -82,7 +82,8 @@ Cubemap mixProbes(const Scene& scene, const std::vector<ProbeWeight>& weights,
 
 void BlendJobOptions::check() const {
   if (outPattern.empty() && weightsPng.empty())
-    throw InputError("--out", "nothing to write: give --out PATTERN.exr, --weights-png FILE or both");
+    throw InputError("--out",
+                     "nothing to write: give --out PATTERN.exr, --weights-png FILE or both");
   if (!outPattern.empty() && outPattern.find(kFace) == std::string::npos)
     throw InputError(outPattern, "output pattern has no {face} (e.g. out/blend_{face}.exr)");
   requireInRange("max_probes", blend.maxProbes, 1, 64);
@@ -118,7 +119,8 @@ BlendJobResult runBlendJob(const BlendJobOptions& o) {
   if (!o.weightsPng.empty()) {
     std::vector<glm::dvec3> captures;
     for (const Probe& p : scene.probes) captures.push_back(p.captureMeters);
-    const WeightPicture picture = renderWeightPicture(volumes, o.atMeters.z, o.blend, 800, captures);
+    const WeightPicture picture =
+        renderWeightPicture(volumes, o.atMeters.z, o.blend, 800, captures);
     writePng(o.weightsPng, picture.width, picture.height, picture.rgb8);
     result.written.push_back(o.weightsPng.string());
   }

@@ -1,5 +1,6 @@
 #pragma once
-// What `probeproxy build` prints: a table for people, or the DESIGN.md JSON for tools.
+// What `probeproxy build` prints: a table for people, or the JSON of docs/methods_and_measures.md
+// for tools.
 
 #include "core/proxy/proxy_candidate.h"
 

@@ -20,8 +20,8 @@ CorrectJobResult runCorrectJob(const CorrectJobOptions& o) {
   const Probe& probe = findProbe(scene, o.probe);
   const Cubemap source = readCubemapImage(probeCubemapPath(scene, probe));
   MixingProxies proxies(scene, o.proxiesJson.string());
-  const ProbeCorrection c = correctProbe(scene, probe, source, o.cameraMeters, o.plane, proxies,
-                                         o.method);
+  const ProbeCorrection c =
+      correctProbe(scene, probe, source, o.cameraMeters, o.plane, proxies, o.method);
   const CorrectedCubemap& corrected = c.corrected;
 
   CorrectJobResult result;

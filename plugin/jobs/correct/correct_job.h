@@ -15,12 +15,12 @@ namespace probeproxy::jobs {
 struct CorrectJobOptions {
   std::filesystem::path scene;
   std::string probe;
-  glm::dvec3 cameraMeters{0.0};           // world frame
-  std::optional<ReflectionPlane> plane;   // default: the probe's first reflection_planes entry
-  std::string outPattern;                 // needs {face}; with {level} every mip level is written
+  glm::dvec3 cameraMeters{0.0};          // world frame
+  std::optional<ReflectionPlane> plane;  // default: the probe's first reflection_planes entry
+  std::string outPattern;                // needs {face}; with {level} every mip level is written
   MixingMethod method = MixingMethod::MixingPlane;
-  std::filesystem::path proxiesJson;      // a build's export: use its kept proxy; empty: the
-                                          // scene's proxy (built now where it is `auto`)
+  std::filesystem::path proxiesJson;  // a build's export: use its kept proxy; empty: the
+                                      // scene's proxy (built now where it is `auto`)
 
   void check() const;  // throws InputError: a pattern without {face}
 };

@@ -2,9 +2,9 @@
 
 #include "core/blend/weight_picture.h"
 #include "core/cube/write_depth_cube.h"
-#include "core/image/write_png.h"
 #include "core/errors/input_error.h"
 #include "core/errors/option_checks.h"
+#include "core/image/write_png.h"
 #include "core/io/atomic_write.h"
 #include "geometry/build/build_scene_proxies.h"
 #include "geometry/builtin/box_room.h"
@@ -25,8 +25,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <iomanip>
-#include <ostream>
 #include <memory>
+#include <ostream>
 
 namespace probeproxy::jobs {
 

@@ -1,6 +1,6 @@
 #pragma once
-// What `probeproxy validate` prints: one block per finding for people, or the DESIGN.md JSON
-// for tools.
+// What `probeproxy validate` prints: one block per finding for people, or the JSON of
+// docs/methods_and_measures.md for tools.
 
 #include "geometry/validate/validate_scene.h"
 

@@ -1,4 +1,4 @@
-#include "core/raster/raster_convex.h"
+#include "core/mixing/raster_convex.h"
 
 #include "core/raster/face_rasterizer.h"
 

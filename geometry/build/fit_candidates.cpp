@@ -1,0 +1,63 @@
+#include "geometry/build/fit_candidates.h"
+
+#include "geometry/build/stopwatch.h"
+#include "geometry/fit/bounding_sphere_fit.h"
+#include "geometry/fit/convex_hull_proxy.h"
+#include "geometry/fit/fit_error.h"
+#include "geometry/fit/oriented_box_fit.h"
+#include "geometry/fit/polytope_from_planes.h"
+#include "geometry/tune/one_dimensional_fits.h"
+#include "geometry/tune/snap_box_to_walls.h"
+
+namespace probeproxy {
+
+FittedCandidates fitCandidates(const ProbeView& view, std::span<const ReflectionSample> fitSamples,
+                               const std::optional<ProxyShape>& authored) {
+  FittedCandidates f;
+  const glm::dvec3 capture = view.captureMeters;
+  const auto add = [&](std::string kind, ProxyShape shape, double buildMs) {
+    f.candidates.push_back({std::move(kind), std::move(shape), {}, {}, buildMs});
+  };
+  if (authored) add("authored", *authored, 0.0);
+
+  // The hull of what the probe sees comes first: boxes and spheres around the points are
+  // boxes and spheres around the hull's corners, a few hundred points instead of 10^5.
+  try {
+    const Stopwatch hullTime;
+    f.hull = convexHullProxy(view.pointsMeters, view.toleranceMeters);
+    f.hullMs = hullTime.ms();
+    if (signedDistanceOutside(f.hull->planes, capture) >= 0) {
+      f.hull.reset();
+      throw FitError("the capture point is outside everything it sees: it is outside the level");
+    }
+  } catch (const FitError& e) {
+    // A probe that sees one plane only (or nothing) gets no hull; the other candidates stand.
+    f.findings.push_back(std::string("no convex proxy: ") + e.what());
+  }
+  const std::span<const glm::dvec3> corners =
+      f.hull ? std::span<const glm::dvec3>(f.hull->verticesMeters)
+             : std::span<const glm::dvec3>(view.pointsMeters);
+  const double snapMeters = 10 * view.toleranceMeters;
+
+  const Stopwatch fitTime;
+  add("infinite", InfiniteShape{}, 0.0);
+  // One free parameter needs far fewer samples than a plane set: every fourth will do.
+  std::vector<ReflectionSample> sparse;
+  for (std::size_t i = 0; i < fitSamples.size(); i += 4) sparse.push_back(fitSamples[i]);
+  Stopwatch each;
+  add("cheap_k", fitCheapK(capture, sparse, 0.5 * (view.nearestMeters + view.farthestMeters)),
+      each.lap());
+  add("sphere", fitCaptureSphere(capture, sparse, view.nearestMeters, view.farthestMeters),
+      each.lap());
+  if (!corners.empty()) {
+    add("min_sphere", minimumEnclosingSphere(corners), each.lap());
+    add("aabb", snapBoxToWalls(axisAlignedBoxFit(corners), view.wallPlanes, snapMeters),
+        each.lap());
+    add("obb", snapBoxToWalls(orientedBoxFit(corners), view.wallPlanes, snapMeters), each.lap());
+  }
+  f.fitMs = fitTime.ms();
+  if (f.hull) add("hull", *f.hull, f.hullMs);
+  return f;
+}
+
+}  // namespace probeproxy

@@ -1,0 +1,28 @@
+#pragma once
+// Stage 3 of the proxy build: one candidate of every kind fitted to what the probe sees, in a
+// fixed order: `authored` (when the scene authors one), infinite, cheap_k, sphere (around the
+// capture point), min_sphere (smallest enclosing), aabb, obb, hull. The boxes' faces move onto
+// the walls they nearly match (geometry/tune/snap_box_to_walls.h).
+
+#include "core/proxy/proxy_candidate.h"
+#include "geometry/build/probe_view.h"
+#include "geometry/evaluation/reflection_sample.h"
+
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace probeproxy {
+
+struct FittedCandidates {
+  std::vector<ProxyCandidate> candidates;  // errors not measured yet
+  std::optional<ConvexProxy> hull;         // none when the probe sees one plane or nothing
+  double hullMs = 0.0, fitMs = 0.0;
+  std::vector<std::string> findings;  // why there is no hull, when there is none
+};
+
+FittedCandidates fitCandidates(const ProbeView& view, std::span<const ReflectionSample> fitSamples,
+                               const std::optional<ProxyShape>& authored);
+
+}  // namespace probeproxy

@@ -1,0 +1,20 @@
+#include "geometry/build/probe_samples.h"
+
+namespace probeproxy {
+
+ProbeSamples drawProbeSamples(const LevelRayCaster& level, const Probe& probe,
+                              const ProxyBuildOptions& o) {
+  ProbeSamples s;
+  const ReflectionSampleOptions& fitOptions = o.samples;
+  ReflectionSampleOptions reportOptions = o.samples;
+  reportOptions.seed = o.samples.seed + 1000;
+  s.fit = buildReflectionSamples(level, probe, SampleSet::MirrorFloor, fitOptions);
+  for (const ReflectionSample& r :
+       buildReflectionSamples(level, probe, SampleSet::AllSurfaces, fitOptions))
+    s.fit.push_back(r);
+  s.floor = buildReflectionSamples(level, probe, SampleSet::MirrorFloor, reportOptions);
+  s.all = buildReflectionSamples(level, probe, SampleSet::AllSurfaces, reportOptions);
+  return s;
+}
+
+}  // namespace probeproxy

@@ -1,0 +1,70 @@
+#include "geometry/build/simplify_hull.h"
+
+#include "geometry/build/stopwatch.h"
+#include "geometry/fit/polytope_from_planes.h"
+#include "geometry/tune/greedy_plane_removal.h"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <numeric>
+#include <string>
+
+namespace probeproxy {
+
+std::vector<ProxyPlane> startingPlanes(const ConvexProxy& hull, const ProbeView& view) {
+  // The hull has a thin bevel plane wherever two walls meet between texels; they cost no
+  // accuracy and only slow the simplification, so planes under 0.2% of the hull's area start
+  // out dropped (kept if the rest would not be bounded).
+  std::vector<ProxyPlane> planes;
+  const std::vector<double> areas = planeAreasSquareMeters(hull);
+  const double totalArea = std::accumulate(areas.begin(), areas.end(), 0.0);
+  for (std::size_t i = 0; i < hull.planes.size(); ++i) {
+    if (areas[i] >= 0.002 * totalArea) planes.push_back(hull.planes[i]);
+  }
+  if (!isBounded(planes)) planes = hull.planes;
+  // A hull facet on a wall passes through three texel hits and tilts by up to a texel's
+  // angle; the wall's own plane (every texel on it averaged) is exact. So a wall plane
+  // replaces the hull facets it matches, and the proxy's walls coincide with the level's.
+  const double offsetTolerance = 10 * view.toleranceMeters;
+  for (const ProxyPlane& p : view.wallPlanes) {
+    const auto matches = [&](const ProxyPlane& q) {
+      return glm::dot(p.normal, q.normal) > 0.9998 &&
+             std::abs(p.offsetMeters - q.offsetMeters) < offsetTolerance;
+    };
+    const std::vector<ProxyPlane> before = planes;
+    std::erase_if(planes, matches);
+    planes.push_back(p);
+    if (!isBounded(planes)) planes = before;
+  }
+  return planes;
+}
+
+std::vector<ProxyCandidate> simplifyHull(const ConvexProxy& hull, const ProbeView& view,
+                                         std::span<const ReflectionSample> fitSamples,
+                                         double& simplifyMs) {
+  const Stopwatch time;
+  const glm::dvec3 capture = view.captureMeters;
+  // A proxy may reach past what the probe sees (an open end of a corridor), but not far:
+  // twice the farthest point seen.
+  const auto acceptable = [&](const std::vector<ProxyPlane>& p) {
+    return isBounded(p) && farthestExitMeters(p, capture) <= 2.0 * view.farthestMeters;
+  };
+  const std::vector<PlaneRemovalStep> steps =
+      greedyPlaneRemoval(startingPlanes(hull, view), capture, fitSamples, 4, acceptable);
+  simplifyMs = time.ms();
+  const double perStepMs = steps.size() > 1 ? simplifyMs / double(steps.size() - 1) : 0.0;
+  std::vector<ProxyCandidate> candidates;
+  for (std::size_t s = 1; s < steps.size(); ++s) {
+    ConvexProxy simplified;
+    simplified.planes = steps[s].planes;
+    candidates.push_back({"convex_" + std::to_string(steps[s].planes.size()),
+                          std::move(simplified),
+                          {},
+                          {},
+                          perStepMs * double(s)});
+  }
+  return candidates;
+}
+
+}  // namespace probeproxy

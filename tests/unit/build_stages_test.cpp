@@ -1,0 +1,172 @@
+// Each stage of the proxy build (geometry/build/build_probe_proxy.h) on its own, in a box room
+// where every answer is exact.
+
+#include "core/errors/invariant_checks.h"
+#include "geometry/build/build_probe_proxy.h"
+#include "geometry/build/fit_candidates.h"
+#include "geometry/build/probe_samples.h"
+#include "geometry/build/probe_view.h"
+#include "geometry/build/select_proxy.h"
+#include "geometry/build/simplify_hull.h"
+#include "geometry/builtin/box_room.h"
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace probeproxy {
+namespace {
+
+const glm::dvec3 kLo(-4, -2, 0), kHi(6, 3, 3), kCapture(1, 0.5, 1.6);
+
+const LevelRayCaster& room() {
+  static const LevelMesh mesh = boxRoom(glm::vec3(kLo), glm::vec3(kHi));
+  static const LevelRayCaster caster(mesh);
+  return caster;
+}
+
+Probe probe() {
+  Probe p;
+  p.name = "probe";
+  p.captureMeters = kCapture;
+  BoxInfluence influence;
+  influence.centerMeters = 0.5 * (kLo + kHi);
+  influence.halfExtentsMeters = influence.innerHalfExtentsMeters = 0.5 * (kHi - kLo);
+  p.influence = influence;
+  return p;
+}
+
+ProxyBuildOptions options() {
+  ProxyBuildOptions o;
+  o.depthFaceSize = 32;
+  o.samples.targetSamples = 256;
+  return o;
+}
+
+// The room's six walls as outward planes (n . x <= d inside).
+bool isRoomWall(const ProxyPlane& p, double tolerance) {
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int side = 0; side < 2; ++side) {
+      glm::dvec3 n(0.0);
+      n[axis] = side == 0 ? -1.0 : 1.0;
+      const double d = side == 0 ? -kLo[axis] : kHi[axis];
+      if (glm::dot(p.normal, n) > 1 - 1e-9 && std::abs(p.offsetMeters - d) < tolerance) return true;
+    }
+  }
+  return false;
+}
+
+TEST(BuildStages, SeeLevelFindsEveryTexelOnTheWallsAndTheSixWallPlanes) {
+  const ProbeView view = seeLevel(room(), kCapture, 32);
+  EXPECT_EQ(view.hits.size(), 6u * 32 * 32);
+  EXPECT_EQ(view.pointsMeters.size(), view.hits.size());  // a closed room has no sky
+  EXPECT_EQ(view.skyShare, 0.0);
+  for (const glm::dvec3& p : view.pointsMeters) {
+    const glm::dvec3 inside = glm::min(p - kLo, kHi - p);
+    EXPECT_LT(std::min({inside.x, inside.y, inside.z}), 1e-5);  // on a wall
+  }
+  EXPECT_NEAR(view.nearestMeters, 1.4, 1e-2);  // the ceiling, straight up (a texel centre)
+  EXPECT_LT(view.farthestMeters, glm::distance(kCapture, kLo) + 1e-5);
+  ASSERT_EQ(view.wallPlanes.size(), 6u);
+  for (const ProxyPlane& p : view.wallPlanes) EXPECT_TRUE(isRoomWall(p, 1e-5));
+}
+
+TEST(BuildStages, FitAndReportSamplesAreDrawnWithDifferentSeeds) {
+  const ProbeSamples s = drawProbeSamples(room(), probe(), options());
+  ASSERT_FALSE(s.floor.empty());
+  ASSERT_FALSE(s.all.empty());
+  EXPECT_EQ(s.fit.size() > s.floor.size(), true);  // mirror_floor and all_surfaces together
+  for (const ReflectionSample& r : s.floor) EXPECT_NEAR(r.normal.z, 1.0, 1e-6);
+  EXPECT_NE(s.fit.front().xMeters, s.floor.front().xMeters);
+}
+
+TEST(BuildStages, FitCandidatesComeInTheirFixedOrderAndTheBoxIsTheRoom) {
+  const ProbeView view = seeLevel(room(), kCapture, 32);
+  const ProbeSamples s = drawProbeSamples(room(), probe(), options());
+  const FittedCandidates f = fitCandidates(view, s.fit, ProxyShape(InfiniteShape{}));
+  std::vector<std::string> kinds;
+  for (const ProxyCandidate& c : f.candidates) kinds.push_back(c.kind);
+  EXPECT_EQ(kinds, (std::vector<std::string>{"authored", "infinite", "cheap_k", "sphere",
+                                             "min_sphere", "aabb", "obb", "hull"}));
+  ASSERT_TRUE(f.hull.has_value());
+  EXPECT_TRUE(f.findings.empty());
+  const BoxShape& box = std::get<BoxShape>(f.candidates[5].shape);
+  for (int axis = 0; axis < 3; ++axis) {
+    EXPECT_NEAR(box.centerMeters[axis] - box.halfExtentsMeters[axis], kLo[axis], 1e-5);
+    EXPECT_NEAR(box.centerMeters[axis] + box.halfExtentsMeters[axis], kHi[axis], 1e-5);
+  }
+}
+
+TEST(BuildStages, SimplificationStartsFromTheWallsAndNamesEachStepByItsPlanes) {
+  const ProbeView view = seeLevel(room(), kCapture, 32);
+  const ProbeSamples s = drawProbeSamples(room(), probe(), options());
+  const FittedCandidates f = fitCandidates(view, s.fit, std::nullopt);
+  const std::vector<ProxyPlane> start = startingPlanes(*f.hull, view);
+  // The hull's facets on the walls are replaced by the walls' own planes (float hits averaged).
+  EXPECT_EQ(std::count_if(start.begin(), start.end(),
+                          [](const ProxyPlane& p) { return isRoomWall(p, 1e-5); }),
+            6);
+  double ms = -1.0;
+  const std::vector<ProxyCandidate> steps = simplifyHull(*f.hull, view, s.fit, ms);
+  EXPECT_GE(ms, 0.0);
+  for (const ProxyCandidate& c : steps) {
+    const auto& convex = std::get<ConvexProxy>(c.shape);
+    EXPECT_EQ(c.kind, "convex_" + std::to_string(convex.planes.size()));
+    EXPECT_GE(convex.planes.size(), 4u);
+    EXPECT_LT(convex.planes.size(), start.size());
+  }
+}
+
+ProxyCandidate candidate(std::string kind, ProxyShape shape, double p95, double mean,
+                         double missRate = 0.0) {
+  ProxyCandidate c{std::move(kind), std::move(shape), {}, {}, 0.0};
+  c.error.p95Deg = p95;
+  c.error.meanCostDeg = mean;
+  c.error.missRate = missRate;
+  return c;
+}
+
+ConvexProxy planes(int count) {
+  ConvexProxy c;
+  c.planes.resize(static_cast<std::size_t>(count), ProxyPlane{{0, 0, 1}, 1.0});
+  return c;
+}
+
+TEST(BuildStages, SelectionKeepsTheFewestPlanesWithinToleranceElseTheMostAccurate) {
+  ProxyBuildOptions o;
+  o.toleranceDeg = 1.0;
+  std::vector<ProxyCandidate> c = {
+      candidate("infinite", InfiniteShape{}, 50, 20), candidate("aabb", BoxShape{}, 0.9, 0.3),
+      candidate("convex_5", planes(5), 0.5, 0.2), candidate("convex_4", planes(4), 2.0, 0.5)};
+  EXPECT_EQ(selectProxy(c, o), 2u);  // 5 planes under the tolerance beat the 6-plane box
+  c[2].error.missRate = 0.5;         // ... unless it misses
+  EXPECT_EQ(selectProxy(c, o), 1u);
+  o.toleranceDeg = 0.1;  // nothing meets it: the most accurate by mean, sparing planes
+  EXPECT_EQ(selectProxy(c, o), 1u);
+  c.insert(c.begin(), candidate("authored", BoxShape{}, 90, 90));
+  EXPECT_EQ(selectProxy(c, o), 0u);  // the artist's, unless asked to regenerate
+  o.regenerate = true;
+  EXPECT_EQ(selectProxy(c, o), 2u);
+}
+
+TEST(BuildStages, FinishingTheKeptConvexGivesItCornersAndChecksTheCapture) {
+  ProbeProxyBuild b;
+  ConvexProxy box = convexFromBox({0.5 * (kLo + kHi), 0.5 * (kHi - kLo), {1, 0, 0, 0}});
+  box.verticesMeters.clear();
+  box.triangles.clear();
+  b.candidates.push_back({"convex_6", box, {}, {}, 0.0});
+  finishKeptProxy(b, kCapture);
+  const auto& kept = std::get<ConvexProxy>(b.candidates[0].shape);
+  EXPECT_EQ(kept.verticesMeters.size(), 8u);
+  EXPECT_EQ(kept.triangles.size(), 12u);
+  EXPECT_TRUE(b.findings.empty());
+  finishKeptProxy(b, kHi + glm::dvec3(1.0));
+  EXPECT_EQ(b.findings, std::vector<std::string>{"the capture point is not inside the kept proxy"});
+  b.kept = 3;  // past the candidates: an invariant, not a crash
+  EXPECT_THROW(finishKeptProxy(b, kCapture), InvariantError);
+}
+
+}  // namespace
+}  // namespace probeproxy
