@@ -20,6 +20,18 @@ ErrorFigures summarizeErrors(std::vector<double> errorsDeg, std::size_t occluded
     double sum = 180.0 * static_cast<double>(visible - hits);
     for (std::size_t i = 0; i < hits; ++i) sum += errorsDeg[i];
     figures.meanCostDeg = sum / static_cast<double>(visible);
+    // Misses sort last (180 degrees is as wrong as a lookup gets): the p95 rank lands on one
+    // once they are more than 5% of the visible samples.
+    const auto k = static_cast<std::size_t>(std::ceil(0.95 * static_cast<double>(visible)));
+    const std::size_t rank = std::clamp<std::size_t>(k, 1, visible);
+    if (rank > hits) {
+      figures.p95WithMissesDeg = 180.0;
+    } else {
+      std::vector<double> sorted(errorsDeg.begin(), missed);
+      std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(rank - 1),
+                       sorted.end());
+      figures.p95WithMissesDeg = sorted[rank - 1];
+    }
   }
   if (hits == 0) return figures;
 

@@ -16,6 +16,9 @@ struct ErrorFigures {
   // Mean over the visible samples with each miss counted as 180 degrees: one number for "how
   // wrong overall", used to rank proxies when none meets the tolerance.
   double meanCostDeg = std::numeric_limits<double>::quiet_NaN();
+  // p95 over the visible samples with each miss counted as 180 degrees: what a player sees of
+  // a proxy that misses (the seeds' red pixels), the rank used when none meets the tolerance.
+  double p95WithMissesDeg = std::numeric_limits<double>::quiet_NaN();
   double missRate = 0.0;      // misses / (samples - occluded): no proxy hit (the seed's red pixel)
   double occludedRate = 0.0;  // occluded / samples: H hidden from C, right for no proxy
   std::size_t samples = 0;    // all samples of the set, occluded and missed included

@@ -44,6 +44,9 @@ void finishKeptProxy(ProbeProxyBuild& build, glm::dvec3 capture) {
       convex != nullptr && convex->verticesMeters.empty()) {
     try {
       *convex = polytopeFromPlanes(convex->planes, capture);
+      // Planes that bound no facet of their own are left out: the name says what remains.
+      std::string& kind = build.candidates[build.kept].kind;
+      if (kind.rfind("convex_", 0) == 0) kind = "convex_" + std::to_string(convex->planes.size());
     } catch (const FitError& e) {
       // Without corners the runtime could not draw or load it: keep the fitted box instead.
       build.findings.push_back(std::string("the kept proxy has no boundary mesh, keeping the "

@@ -38,22 +38,38 @@ std::size_t selectProxy(const std::vector<ProxyCandidate>& candidates, const Pro
     if (best == candidates.size() || complexity(i) < complexity(best)) best = i;
   }
   if (best != candidates.size()) return best;
-  // None does: the most accurate within the plane budget, by mean error (misses at 180
-  // degrees), sparing the planes that buy less than 5% of it: a concave room that no convex
-  // proxy models gets a simple proxy, not 30 planes for a hundredth of a degree.
+  // None does: what a player would see decides, the p95 with each miss at 180 degrees (a
+  // proxy that misses a few rays can still beat one that never misses but is wrong
+  // everywhere, as cheap_k is in a real room). Among those within noise of the best (2% +
+  // 0.05 degrees) and missing no more than it does (plus the allowed rate), the simplest: a
+  // concave room that no convex proxy models gets a simple proxy, not 30 planes for a
+  // hundredth of a degree.
+  const auto p95Of = [&](std::size_t i) {
+    const double p = candidates[i].error.p95WithMissesDeg;
+    return std::isfinite(p) ? p : 1e300;
+  };
   const auto meanOf = [&](std::size_t i) {
     const double m = candidates[i].error.meanCostDeg;
     return std::isfinite(m) ? m : 1e300;
   };
+  // Misses show as 180 degrees here; past ten times the allowed rate they are a proxy that
+  // does not hold the room, whatever its p95 says.
+  const auto admissible = [&](std::size_t i) {
+    return generated(i) && candidates[i].error.missRate <= 10 * o.maxMissRate;
+  };
   std::size_t mostAccurate = candidates.size();
   for (std::size_t i = 0; i < candidates.size(); ++i) {
-    if (!generated(i) || candidates[i].error.missRate > o.maxMissRate) continue;
-    if (mostAccurate == candidates.size() || meanOf(i) < meanOf(mostAccurate)) mostAccurate = i;
+    if (!admissible(i)) continue;
+    if (mostAccurate == candidates.size() ||
+        std::make_pair(p95Of(i), meanOf(i)) <
+            std::make_pair(p95Of(mostAccurate), meanOf(mostAccurate)))
+      mostAccurate = i;
   }
-  if (mostAccurate == candidates.size()) return 0;  // nothing but misses: keep the first
-  const double goodEnough = 1.05 * meanOf(mostAccurate) + 0.01;
+  if (mostAccurate == candidates.size()) return 0;  // none admissible: keep the first
+  const double goodEnough = 1.02 * p95Of(mostAccurate) + 0.05;
+  const double missesAllowed = candidates[mostAccurate].error.missRate + o.maxMissRate;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
-    if (!generated(i) || candidates[i].error.missRate > o.maxMissRate || meanOf(i) > goodEnough)
+    if (!admissible(i) || p95Of(i) > goodEnough || candidates[i].error.missRate > missesAllowed)
       continue;
     if (best == candidates.size() || complexity(i) < complexity(best)) best = i;
   }

@@ -12,10 +12,12 @@ namespace probeproxy {
 // 1. the authored one, unless options.regenerate;
 // 2. else the fewest planes (then the simpler test: infinite < cheap_k < sphere < aabb < obb <
 //    convex) among those meeting the tolerance (p95 and miss rate) within the plane budget;
-// 3. else the most accurate within the budget by mean error (misses at 180 degrees), sparing
-//    the planes that buy less than 5% of it: a concave room that no convex proxy models gets a
-//    simple proxy, not 30 planes for a hundredth of a degree;
-// 4. else (nothing but misses) the first.
+// 3. else, within the budget and missing at most ten times max_miss_rate, the simplest whose p95
+// with misses at 180 degrees
+//    (ErrorFigures::p95WithMissesDeg, what a player sees) is within 2% + 0.05 degrees of the
+//    best and that misses at most max_miss_rate more than the best: so the kept proxy is never
+//    worse than the aabb candidate by more than that noise;
+// 4. else (none admissible) the first.
 std::size_t selectProxy(const std::vector<ProxyCandidate>& candidates,
                         const ProxyBuildOptions& options);
 

@@ -110,7 +110,10 @@ TEST(BreakSweeps, ConcaveRoomBreaksTheArtistBoxNotTheBuild) {
     // fit to a 128 px depth cube: 1e-4 deg where the box is exact).
     EXPECT_LE(kept[i].error.p95Deg, box[i].error.p95Deg + 0.01) << arm;
     EXPECT_LE(cornerKept[i].error.p95Deg, cornerBox[i].error.p95Deg + 0.01) << arm;
-    EXPECT_LE(kept[i].error.missRate, 0.001) << arm;
+    // Where no proxy meets the tolerance the build may trade a few misses (at most ten times
+    // the allowed 0.1%) for a p95 the player sees as better, misses counted at 180 degrees.
+    EXPECT_LE(kept[i].error.missRate, 0.01) << arm;
+    EXPECT_LE(kept[i].error.p95WithMissesDeg, box[i].error.p95WithMissesDeg + 0.05) << arm;
     // Once the probe's influence lies in the arm alone, the build's box of it is exact.
     if (arm >= 6.0) {
       EXPECT_LT(kept[i].error.p95Deg, 0.01) << arm;

@@ -125,6 +125,7 @@ ProxyCandidate candidate(std::string kind, ProxyShape shape, double p95, double 
   c.error.p95Deg = p95;
   c.error.meanCostDeg = mean;
   c.error.missRate = missRate;
+  c.error.p95WithMissesDeg = missRate > 0.05 ? 180.0 : p95;
   return c;
 }
 
@@ -141,10 +142,18 @@ TEST(BuildStages, SelectionKeepsTheFewestPlanesWithinToleranceElseTheMostAccurat
       candidate("infinite", InfiniteShape{}, 50, 20), candidate("aabb", BoxShape{}, 0.9, 0.3),
       candidate("convex_5", planes(5), 0.5, 0.2), candidate("convex_4", planes(4), 2.0, 0.5)};
   EXPECT_EQ(selectProxy(c, o), 2u);  // 5 planes under the tolerance beat the 6-plane box
-  c[2].error.missRate = 0.5;         // ... unless it misses
+  c[2] = candidate("convex_5", planes(5), 0.5, 0.2, 0.5);  // ... unless it misses
   EXPECT_EQ(selectProxy(c, o), 1u);
-  o.toleranceDeg = 0.1;  // nothing meets it: the most accurate by mean, sparing planes
+  o.toleranceDeg = 0.1;  // nothing meets it: the best p95 with misses, sparing planes
   EXPECT_EQ(selectProxy(c, o), 1u);
+  // A proxy that misses 1% of rays (10x the allowed rate) but is right elsewhere beats a
+  // never-missing cheap_k that is wrong everywhere: the player sees p95, misses included.
+  std::vector<ProxyCandidate> real = {candidate("cheap_k", CheapKShape{}, 60, 20),
+                                      candidate("aabb", BoxShape{}, 40, 12),
+                                      candidate("convex_6", planes(6), 14, 5, 0.01)};
+  EXPECT_EQ(selectProxy(real, o), 2u);
+  real[1] = candidate("aabb", BoxShape{}, 14.2, 5);  // within noise of the best: the simpler box
+  EXPECT_EQ(selectProxy(real, o), 1u);
   c.insert(c.begin(), candidate("authored", BoxShape{}, 90, 90));
   EXPECT_EQ(selectProxy(c, o), 0u);  // the artist's, unless asked to regenerate
   o.regenerate = true;

@@ -76,6 +76,17 @@ TEST(ErrorFigures, NearestRankPercentilesAndRates) {
   EXPECT_EQ(e.maxDeg, 100.0);
   EXPECT_DOUBLE_EQ(e.missRate, 1.0 / 101.0);
   EXPECT_DOUBLE_EQ(e.occludedRate, 9.0 / 110.0);
+  // With the miss at 180 degrees among 101 visible samples, rank ceil(0.95 * 101) = 96.
+  EXPECT_EQ(e.p95WithMissesDeg, 96.0);
+}
+
+TEST(ErrorFigures, P95WithMissesIsAMissOnceMissesPassFivePercent) {
+  std::vector<double> errors(94, 1.0);
+  errors.insert(errors.end(), 6, std::nan(""));
+  EXPECT_EQ(summarizeErrors(errors, 0).p95WithMissesDeg, 180.0);
+  EXPECT_EQ(summarizeErrors(errors, 0).p95Deg, 1.0);  // the hits alone look perfect
+  errors.resize(96);  // 94 hits, 2 misses: rank 92 is a hit
+  EXPECT_EQ(summarizeErrors(errors, 0).p95WithMissesDeg, 1.0);
 }
 
 class BoxRoomEvaluation : public ::testing::Test {
