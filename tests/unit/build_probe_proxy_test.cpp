@@ -5,6 +5,7 @@
 #include "geometry/builtin/box_room.h"
 #include "geometry/tune/snap_box_to_walls.h"
 #include "geometry/validate/proxy_mesh_checks.h"
+#include "tests/unit/room_probe.h"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -13,17 +14,6 @@
 
 namespace probeproxy {
 namespace {
-
-Probe probeAt(glm::dvec3 capture, glm::dvec3 lo, glm::dvec3 hi) {
-  Probe probe;
-  probe.name = "probe";
-  probe.captureMeters = capture;
-  BoxInfluence influence;
-  influence.centerMeters = 0.5 * (lo + hi);
-  influence.halfExtentsMeters = influence.innerHalfExtentsMeters = 0.5 * (hi - lo);
-  probe.influence = influence;
-  return probe;
-}
 
 ProxyBuildOptions fastOptions() {
   ProxyBuildOptions o;

@@ -9,6 +9,7 @@
 #include "geometry/build/select_proxy.h"
 #include "geometry/build/simplify_hull.h"
 #include "geometry/builtin/box_room.h"
+#include "tests/unit/room_probe.h"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -27,16 +28,7 @@ const LevelRayCaster& room() {
   return caster;
 }
 
-Probe probe() {
-  Probe p;
-  p.name = "probe";
-  p.captureMeters = kCapture;
-  BoxInfluence influence;
-  influence.centerMeters = 0.5 * (kLo + kHi);
-  influence.halfExtentsMeters = influence.innerHalfExtentsMeters = 0.5 * (kHi - kLo);
-  p.influence = influence;
-  return p;
-}
+Probe probe() { return probeAt(kCapture, kLo, kHi); }
 
 ProxyBuildOptions options() {
   ProxyBuildOptions o;
