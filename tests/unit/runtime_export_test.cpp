@@ -132,7 +132,7 @@ Scene roomScene(const fs::path& folder, UpAxis up, double metersPerUnit) {
   scene.file = folder / "room.scene.json";
   scene.fileUp = up;
   scene.metersPerUnit = metersPerUnit;
-  scene.level.push_back({folder / "room.glb", "room.glb", UpAxis::Y, false});
+  scene.level.push_back({folder / "room.glb", "room.glb", UpAxis::Y, false, {}});
   for (int i = 0; i < 6; ++i) {
     Probe probe;
     probe.name = kKeptNames[i];

@@ -283,7 +283,7 @@ TEST_F(SceneFileTest, GltfMeshesDefaultToYUpOthersToTheScenes) {
 
   // A Scene built in memory that does not say upWasExplicit still keeps its up axis.
   Scene built = zScene;
-  built.level = {LevelMeshRef{folder_ / "f.glb", "f.glb", UpAxis::Z, false}};
+  built.level = {LevelMeshRef{folder_ / "f.glb", "f.glb", UpAxis::Z, false, {}}};
   EXPECT_EQ(lineWith(sceneFileJson(built), "\"level\""),
             R"(  "level": [ { "mesh": "f.glb", "up": "Z" } ],)");
 }
@@ -369,7 +369,7 @@ TEST_F(SceneFileTest, WrittenFilesAreAFixedPoint) {
   Scene scene;
   scene.fileUp = UpAxis::Y;
   scene.metersPerUnit = 0.0254;
-  scene.level = {LevelMeshRef{folder_ / "level.glb", "level.glb", UpAxis::Y, false}};
+  scene.level = {LevelMeshRef{folder_ / "level.glb", "level.glb", UpAxis::Y, false, {}}};
   for (int i = 0; i < 60; ++i) {
     Probe probe;
     probe.name = "probe_" + std::to_string(i);
