@@ -143,7 +143,8 @@ class FaceReader {
         }
         corner[k] = base + std::uint32_t(local);
       }
-      // Quake 3 winds front faces clockwise; swap two corners for counter-clockwise.
+      // Quake 3 winds front faces clockwise (checked against the stored vertex normals);
+      // swap two corners for counter-clockwise.
       triangles.emplace_back(corner[0], corner[2], corner[1]);
     }
   }
@@ -165,10 +166,9 @@ class FaceReader {
         tessellateBezierPatch(control, w, h, options_.patchSubdivisions);
     const auto base = std::uint32_t(positions.size());
     for (const glm::dvec3& p : patch.points) positions.emplace_back(p * options_.metersPerUnit);
-    // The control grid runs clockwise seen from the front, as the game's polygons do.
-    for (const glm::uvec3& t : patch.triangles) {
-      triangles.emplace_back(base + t.x, base + t.z, base + t.y);
-    }
+    // Unlike the game's polygons, a control grid runs counter-clockwise seen from the front
+    // (checked against the stored vertex normals of the Nexuiz maps): no swap.
+    for (const glm::uvec3& t : patch.triangles) triangles.push_back(t + glm::uvec3(base));
   }
 
   const BspLumps& lumps_;

@@ -8,7 +8,7 @@
 // solid world by its flags (bsp_surface_flags.h); sky faces go to LevelMesh::skyTriangles.
 // Billboards (flares) are skipped. Triangles are grouped into one LevelPart per shader, named
 // after it, in shader order. Windings are turned to the counter-clockwise-from-the-front
-// convention the rest of the library uses (Quake 3 stores them clockwise).
+// convention the rest of the library uses (Quake 3 stores polygons and meshes clockwise).
 //
 // Bad or truncated files throw InputError(file, "lump N (name): ...") naming the lump that is
 // wrong; every offset, length and index is checked before it is read.
