@@ -30,7 +30,8 @@ namespace fs = std::filesystem;
 constexpr int kFormatVersion = 1;
 constexpr double kUnitQuaternionTolerance = 1e-3;  // how far from length 1 a typed-in
                                                    // quaternion may be before we refuse it
-constexpr char kMeshExtensionsText[] = ".glb, .gltf, .obj, .ply, .off, .bsp or .pk3";
+constexpr char kMeshExtensionsText[] = ".glb, .gltf, .obj, .ply or .off";
+constexpr char kLevelExtensionsText[] = ".glb, .gltf, .obj, .ply, .off, .bsp or .pk3";
 constexpr char kFacePlaceholder[] = "{face}";
 
 // ------------------------------------------------------------------------------------------
@@ -106,8 +107,7 @@ std::string lowercase(std::string text) {
 bool hasMeshExtension(const fs::path& mesh) {
   const std::string extension = lowercase(mesh.extension().string());
   return extension == ".glb" || extension == ".gltf" || extension == ".obj" ||
-         extension == ".ply" || extension == ".off" || extension == ".bsp" ||
-         extension == ".pk3";
+         extension == ".ply" || extension == ".off";
 }
 
 bool hasExtension(const fs::path& file, const char* extension) {
@@ -115,7 +115,8 @@ bool hasExtension(const fs::path& file, const char* extension) {
 }
 
 // Quake 3 levels: a .bsp, or a .pk3 archive with the .bsp named by "map". They fix their
-// own frame (Z up, 1/32 m per unit), so they take no "up".
+// own frame (Z up, 1/32 m per unit), so they take no "up". Only the level takes them: a
+// convex proxy is a mesh.
 bool isBspLevel(const fs::path& mesh) {
   return hasExtension(mesh, ".bsp") || hasExtension(mesh, ".pk3");
 }
@@ -329,6 +330,14 @@ fs::path meshPathAsWritten(const Json& value, const std::string& path) {
   return fs::path(value.get<std::string>());
 }
 
+fs::path levelPathAsWritten(const Json& value, const std::string& path) {
+  if (!value.is_string() ||
+      !(hasMeshExtension(value.get<std::string>()) || isBspLevel(value.get<std::string>()))) {
+    failExpected(path, std::string("a mesh path ending in ") + kLevelExtensionsText, value);
+  }
+  return fs::path(value.get<std::string>());
+}
+
 fs::path resolvedAgainst(const fs::path& pathAsWritten, const fs::path& folder) {
   if (pathAsWritten.is_absolute()) return pathAsWritten.lexically_normal();
   return (folder / pathAsWritten).lexically_normal();
@@ -395,14 +404,14 @@ LevelMeshRef readLevelMesh(const Json& value, const std::string& path, UpAxis sc
                            const fs::path& folder) {
   LevelMeshRef mesh;
   if (value.is_string()) {  // "corridor.glb" is short for {"mesh": "corridor.glb"}
-    mesh.pathAsWritten = meshPathAsWritten(value, path);
+    mesh.pathAsWritten = levelPathAsWritten(value, path);
     if (hasExtension(mesh.pathAsWritten, ".pk3")) {
       failExpected(path, "an object {\"mesh\": \"<archive>.pk3\", \"map\": \"maps/<name>.bsp\"}",
                    value);
     }
   } else if (value.is_object()) {
     mesh.pathAsWritten =
-        meshPathAsWritten(requiredMember(value, path, "mesh"), jsonMemberPath(path, "mesh"));
+        levelPathAsWritten(requiredMember(value, path, "mesh"), jsonMemberPath(path, "mesh"));
     if (hasExtension(mesh.pathAsWritten, ".pk3")) {
       rejectUnknownMembers(value, path, {"mesh", "map"});
       mesh.map = mapInArchive(requiredMember(value, path, "map"), jsonMemberPath(path, "map"));

@@ -620,7 +620,7 @@ TEST_F(RuntimeExport, RefusesToOverwriteTheSceneFileOrALevelMesh) {
 
   scene = roomScene(folder_, UpAxis::Z, 1.0);
   scene.level.push_back(
-      {out() / "sub" / ".." / "proxies.glb", "export/proxies.glb", UpAxis::Y, false});
+      {out() / "sub" / ".." / "proxies.glb", "export/proxies.glb", UpAxis::Y, false, {}});
   try {
     writeRuntimeExport(scene, roomBuilds(), out());
     FAIL() << "expected InputError";

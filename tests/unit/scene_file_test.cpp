@@ -506,7 +506,8 @@ std::vector<ErrorCase> errorCases() {
       {"empty_level", sceneJson("", R"("probeproxy_scene": 1, "up": "Z", "level": [])"),
        "$.level: expected a non-empty array of meshes, got []"},
       {"mesh_extension", sceneJson("", R"("probeproxy_scene": 1, "up": "Z", "level": ["a.fbx"])"),
-       R"($.level[0]: expected a mesh path ending in .glb, .gltf, .obj, .ply or .off, got "a.fbx")"},
+       R"($.level[0]: expected a mesh path ending in .glb, .gltf, .obj, .ply, .off, .bsp or )"
+       R"(.pk3, got "a.fbx")"},
       {"level_entry_type", sceneJson("", R"("probeproxy_scene": 1, "up": "Z", "level": [3])"),
        R"($.level[0]: expected a mesh path or an object with "mesh", got 3)"},
       {"level_up",
