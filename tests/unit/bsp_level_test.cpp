@@ -1,16 +1,16 @@
 // The Quake 3 BSP loader on small files written here (synthetic_bsp.h): no game data needed.
+#include "geometry/level/bsp/bsp_level.h"
 #include "core/errors/input_error.h"
 #include "geometry/level/bsp/bezier_patch.h"
-#include "geometry/level/bsp/bsp_level.h"
 #include "geometry/level/bsp/bsp_surface_flags.h"
 #include "geometry/level/load_level.h"
 #include "geometry/scene/scene_file.h"
 #include "synthetic_bsp.h"
 #include "test_files.h"
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 #include <zip.h>
+#include <glm/geometric.hpp>
 
 #include <map>
 #include <utility>
@@ -176,10 +176,11 @@ TEST(BspLevel, ATruncatedLumpIsOneLineNamingIt) {
   std::string bytes = bsp.bytes();
   const SyntheticBsp::Layout l = bsp.layout();
   bytes.resize(bytes.size() - 10);  // the surfaces lump is the last one with data
-  const std::string expected = "room.bsp: lump 13 (surfaces): runs past the end of the file "
-                               "(offset " + std::to_string(l.offset[13]) + " + length " +
-                               std::to_string(l.length[13]) + " > " +
-                               std::to_string(bytes.size()) + " bytes)";
+  const std::string expected =
+      "room.bsp: lump 13 (surfaces): runs past the end of the file "
+      "(offset " +
+      std::to_string(l.offset[13]) + " + length " + std::to_string(l.length[13]) + " > " +
+      std::to_string(bytes.size()) + " bytes)";
   EXPECT_EQ(loadError(bytes, "room.bsp"), expected);
 }
 

@@ -72,12 +72,21 @@ struct SyntheticBsp {
     Layout l;
     const std::uint32_t sizes[17] = {std::uint32_t(entities.size() + 1),
                                      std::uint32_t(shaders.size() * 72),
-                                     0, 0, 0, 0, 0, 0, 0, 0,
+                                     0,
+                                     0,
+                                     0,
+                                     0,
+                                     0,
+                                     0,
+                                     0,
+                                     0,
                                      std::uint32_t(vertsUnits.size() * 44),
                                      std::uint32_t(indexes.size() * 4),
                                      0,
                                      std::uint32_t(faces.size() * 104),
-                                     0, 0, 0};
+                                     0,
+                                     0,
+                                     0};
     std::uint32_t at = 8 + 8 * 17;
     for (int i = 0; i < 17; ++i) {
       l.offset[i] = at;
@@ -108,7 +117,8 @@ struct SyntheticBsp {
     std::memcpy(out.data() + l.offset[0], entities.data(), entities.size());
     for (std::size_t i = 0; i < shaders.size(); ++i) {
       const std::size_t at = l.offset[1] + i * 72;
-      std::memcpy(out.data() + at, shaders[i].name.data(), std::min<std::size_t>(63, shaders[i].name.size()));
+      std::memcpy(out.data() + at, shaders[i].name.data(),
+                  std::min<std::size_t>(63, shaders[i].name.size()));
       put32(at + 64, shaders[i].surfaceFlags);
       put32(at + 68, shaders[i].contentFlags);
     }

@@ -42,8 +42,8 @@ class EntityTokens {
       return token;
     }
     const std::size_t start = at_;
-    while (at_ < text_.size() && !isSpace(text_[at_]) && text_[at_] != '"' &&
-           text_[at_] != '{' && text_[at_] != '}') {
+    while (at_ < text_.size() && !isSpace(text_[at_]) && text_[at_] != '"' && text_[at_] != '{' &&
+           text_[at_] != '}') {
       ++at_;
     }
     return std::string(text_.substr(start, at_ - start));
@@ -122,8 +122,7 @@ double numberKey(const BspEntity& entity, std::size_t index, const char* key, do
 }
 
 // "angles" (pitch yaw roll) when present, else "angle" as the yaw, as the game reads them.
-glm::dvec3 anglesOf(const BspEntity& entity, std::size_t index,
-                    const std::filesystem::path& file) {
+glm::dvec3 anglesOf(const BspEntity& entity, std::size_t index, const std::filesystem::path& file) {
   if (entity.value("angles")) return vectorKey(entity, index, "angles", {}, file);
   return {0.0, numberKey(entity, index, "angle", 0.0, file), 0.0};
 }

@@ -27,16 +27,16 @@ struct BspEntity {
 // `info_player_intermission` is a camera for the score screen, not a spawn point.
 struct BspSpawnPoint {
   std::string classname;
-  glm::dvec3 originMeters{0.0};    // world frame; the player's origin, about 0.75 m over its feet
-  glm::dvec3 anglesDegrees{0.0};   // pitch, yaw, roll ("angles", or "angle" as the yaw)
+  glm::dvec3 originMeters{0.0};   // world frame; the player's origin, about 0.75 m over its feet
+  glm::dvec3 anglesDegrees{0.0};  // pitch, yaw, roll ("angles", or "angle" as the yaw)
 };
 
 // A point light (`light` entities; q3map bakes them, the runtime never sees them).
 struct BspLight {
   glm::dvec3 originMeters{0.0};
-  double intensity = 300.0;        // "light" key, q3map's units; 300 when absent, as q3map
-  glm::dvec3 color{1.0};           // "_color" as written (q3map normalizes it)
-  glm::dvec3 anglesDegrees{0.0};   // pitch, yaw, roll, for spot lights that have them
+  double intensity = 300.0;       // "light" key, q3map's units; 300 when absent, as q3map
+  glm::dvec3 color{1.0};          // "_color" as written (q3map normalizes it)
+  glm::dvec3 anglesDegrees{0.0};  // pitch, yaw, roll, for spot lights that have them
 };
 
 // Throws InputError(file, "lump 0 (entities): ...") on text it cannot read (an unclosed

@@ -16,8 +16,8 @@ namespace probeproxy {
 namespace {
 
 // Record sizes and field offsets of qfiles.h's dshader_t, drawVert_t and dsurface_t.
-constexpr std::size_t kShaderBytes = 72;       // char shader[64]; int surfaceFlags, contentFlags
-constexpr std::size_t kDrawVertBytes = 44;     // xyz[3], st[2], lightmap[2], normal[3], color[4]
+constexpr std::size_t kShaderBytes = 72;    // char shader[64]; int surfaceFlags, contentFlags
+constexpr std::size_t kDrawVertBytes = 44;  // xyz[3], st[2], lightmap[2], normal[3], color[4]
 constexpr std::size_t kDrawIndexBytes = 4;
 constexpr std::size_t kSurfaceBytes = 104;
 constexpr std::size_t kSurfaceShader = 0, kSurfaceType = 8, kSurfaceFirstVert = 12,
@@ -154,16 +154,15 @@ class FaceReader {
     const int w = face.patchWidth, h = face.patchHeight;
     const bool oddSizes = w >= 3 && h >= 3 && w % 2 == 1 && h % 2 == 1;
     if (!oddSizes || std::int64_t(w) * h != face.numVerts) {
-      failFace(faceIndex, "is a " + std::to_string(w) + " x " + std::to_string(h) +
-                              " patch with " + std::to_string(face.numVerts) +
+      failFace(faceIndex, "is a " + std::to_string(w) + " x " + std::to_string(h) + " patch with " +
+                              std::to_string(face.numVerts) +
                               " control points (expected odd sizes of at least 3, "
                               "width x height points)");
     }
     std::vector<glm::dvec3> control;
     control.reserve(std::size_t(face.numVerts));
     for (std::int64_t v = 0; v < face.numVerts; ++v) control.push_back(vertex(face.firstVert + v));
-    const TessellatedPatch patch =
-        tessellateBezierPatch(control, w, h, options_.patchSubdivisions);
+    const TessellatedPatch patch = tessellateBezierPatch(control, w, h, options_.patchSubdivisions);
     const auto base = std::uint32_t(positions.size());
     for (const glm::dvec3& p : patch.points) positions.emplace_back(p * options_.metersPerUnit);
     // Unlike the game's polygons, a control grid runs counter-clockwise seen from the front
@@ -204,10 +203,9 @@ void readFaces(const BspLumps& lumps, const BspLoadOptions& options, BspLevel& l
       continue;
     }
     if (f.shader < 0 || std::size_t(f.shader) >= shaders.size()) {
-      lumps.fail(BspLump::Surfaces, "face " + std::to_string(i) + " uses shader " +
-                                        std::to_string(f.shader) + " of " +
-                                        std::to_string(shaders.size()) + " in " +
-                                        bspLumpName(BspLump::Shaders));
+      lumps.fail(BspLump::Surfaces,
+                 "face " + std::to_string(i) + " uses shader " + std::to_string(f.shader) + " of " +
+                     std::to_string(shaders.size()) + " in " + bspLumpName(BspLump::Shaders));
     }
     facesByShader[std::size_t(f.shader)].push_back(i);
   }
@@ -261,8 +259,9 @@ BspLevel parseBspLevel(std::span<const std::byte> bytes, const std::filesystem::
                        const BspLoadOptions& options) {
   if (!(options.metersPerUnit > 0.0) || !std::isfinite(options.metersPerUnit) ||
       options.patchSubdivisions < 1 || options.patchSubdivisions > 64) {
-    throw InputError(file, "BSP load options: metres per unit must be positive and patch "
-                           "subdivisions 1..64");
+    throw InputError(file,
+                     "BSP load options: metres per unit must be positive and patch "
+                     "subdivisions 1..64");
   }
   const BspLumps lumps(bytes, file);
   BspLevel level;
@@ -273,8 +272,8 @@ BspLevel parseBspLevel(std::span<const std::byte> bytes, const std::filesystem::
   return level;
 }
 
-BspLevel readBspLevel(const std::filesystem::path& file,
-                      const std::filesystem::path& mapInArchive, const BspLoadOptions& options) {
+BspLevel readBspLevel(const std::filesystem::path& file, const std::filesystem::path& mapInArchive,
+                      const BspLoadOptions& options) {
   if (mapInArchive.empty()) return parseBspLevel(readWholeBinaryFile(file), file, options);
   const std::vector<std::byte> bytes = readFileFromPk3(file, mapInArchive);
   return parseBspLevel(bytes, file.string() + ":" + mapInArchive.generic_string(), options);

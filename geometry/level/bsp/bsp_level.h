@@ -34,7 +34,7 @@ struct BspLoadOptions {
 
 // What the faces were, for reports and tests.
 struct BspFaceCounts {
-  std::size_t polygons = 0;   // kept faces by type
+  std::size_t polygons = 0;  // kept faces by type
   std::size_t meshes = 0;
   std::size_t patches = 0;
   std::size_t billboards = 0;      // skipped: a flare has no surface

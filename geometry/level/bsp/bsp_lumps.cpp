@@ -10,9 +10,9 @@ namespace probeproxy {
 namespace {
 
 constexpr const char* kLumpNames[kBspLumpCount] = {
-    "entities",  "shaders",   "planes",      "nodes",    "leafs",     "leafsurfaces",
-    "leafbrushes", "models",  "brushes",     "brushsides", "drawverts", "drawindexes",
-    "fogs",      "surfaces",  "lightmaps",   "lightgrid", "visibility"};
+    "entities",    "shaders",  "planes",    "nodes",      "leafs",     "leafsurfaces",
+    "leafbrushes", "models",   "brushes",   "brushsides", "drawverts", "drawindexes",
+    "fogs",        "surfaces", "lightmaps", "lightgrid",  "visibility"};
 
 std::uint32_t littleEndianU32(std::span<const std::byte> bytes, std::size_t offset) {
   std::uint8_t b[4];
@@ -48,22 +48,21 @@ BspLumps::BspLumps(std::span<const std::byte> bytes, std::filesystem::path file)
   }
   const std::int32_t version = bspInt32(bytes, 4);
   if (version != kBspVersion) {
-    throw InputError(file_, "unsupported BSP version " + std::to_string(version) +
-                                " (expected 46, Quake III)");
+    throw InputError(
+        file_, "unsupported BSP version " + std::to_string(version) + " (expected 46, Quake III)");
   }
   for (int i = 0; i < kBspLumpCount; ++i) {
     const auto lump = static_cast<BspLump>(i);
     const std::int64_t offset = bspInt32(bytes, 8 + 8 * i);
     const std::int64_t length = bspInt32(bytes, 12 + 8 * i);
     if (offset < 0 || length < 0) {
-      fail(lump, "negative offset " + std::to_string(offset) + " or length " +
-                     std::to_string(length));
+      fail(lump,
+           "negative offset " + std::to_string(offset) + " or length " + std::to_string(length));
     }
     // 64-bit sums: offset + length cannot overflow what the header can say.
     if (offset + length > static_cast<std::int64_t>(bytes.size())) {
-      fail(lump, "runs past the end of the file (offset " + std::to_string(offset) +
-                     " + length " + std::to_string(length) + " > " +
-                     std::to_string(bytes.size()) + " bytes)");
+      fail(lump, "runs past the end of the file (offset " + std::to_string(offset) + " + length " +
+                     std::to_string(length) + " > " + std::to_string(bytes.size()) + " bytes)");
     }
     offsets_[i] = static_cast<std::size_t>(offset);
     lengths_[i] = static_cast<std::size_t>(length);

@@ -33,8 +33,8 @@ std::vector<std::byte> readFileFromPk3(const std::filesystem::path& archive,
                                        const std::filesystem::path& entry) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(archive, ec)) {
-    throw InputError(archive, std::filesystem::exists(archive, ec) ? "not a regular file"
-                                                                   : "archive not found");
+    throw InputError(
+        archive, std::filesystem::exists(archive, ec) ? "not a regular file" : "archive not found");
   }
   int openError = 0;
   const std::unique_ptr<zip_t, ArchiveCloser> zip(
@@ -65,9 +65,8 @@ std::vector<std::byte> readFileFromPk3(const std::filesystem::path& archive,
     done += zip_uint64_t(got);
   }
   if (done != stat.size) {
-    throw InputError(archive, "\"" + name + "\": archive entry ends after " +
-                                  std::to_string(done) + " of " + std::to_string(stat.size) +
-                                  " bytes");
+    throw InputError(archive, "\"" + name + "\": archive entry ends after " + std::to_string(done) +
+                                  " of " + std::to_string(stat.size) + " bytes");
   }
   return bytes;
 }

@@ -59,21 +59,20 @@ int runLevelInfo(const LevelInfoOptions& o) {
                       {"color", vec3Json(l.color)}});
   }
   const BspFaceCounts& f = level.faces;
-  const nlohmann::json report = {
-      {"level", o.level},
-      {"map", o.map},
-      {"triangles", level.mesh.triangles.size()},
-      {"sky_triangles", level.mesh.skyTriangles.size()},
-      {"load_ms", loadMs},
-      {"faces",
-       {{"polygons", f.polygons},
-        {"meshes", f.meshes},
-        {"patches", f.patches},
-        {"billboards", f.billboards},
-        {"skipped_by_flags", f.skippedByFlags},
-        {"sky", f.sky}}},
-      {"spawn_points", spawns},
-      {"lights", lights}};
+  const nlohmann::json report = {{"level", o.level},
+                                 {"map", o.map},
+                                 {"triangles", level.mesh.triangles.size()},
+                                 {"sky_triangles", level.mesh.skyTriangles.size()},
+                                 {"load_ms", loadMs},
+                                 {"faces",
+                                  {{"polygons", f.polygons},
+                                   {"meshes", f.meshes},
+                                   {"patches", f.patches},
+                                   {"billboards", f.billboards},
+                                   {"skipped_by_flags", f.skippedByFlags},
+                                   {"sky", f.sky}}},
+                                 {"spawn_points", spawns},
+                                 {"lights", lights}};
   std::cout << report.dump(2) << "\n";
   return 0;
 }
