@@ -7,13 +7,19 @@
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-build="${1:-${PROBEPROXY_BUILD_DIR:-$here/build}}"
+build=$(realpath -m "${1:-${PROBEPROXY_BUILD_DIR:-$here/build}}")
 corpus="$build/corpus"
 tree="$corpus/nexuiz-data"
 stamp="$tree/.unpacked"
 
 if [ ! -f "$stamp" ]; then
   mkdir -p "$corpus"
+  # A fresh machine may have no package lists yet: apt-get download needs them.
+  if ! apt-cache policy nexuiz-data 2>/dev/null | grep -q 'Candidate: [0-9]'; then
+    sudo=""
+    [ "$(id -u)" -eq 0 ] || sudo="sudo"
+    $sudo apt-get update >&2
+  fi
   # apt-get download writes into the current folder; a partial .deb from an interrupted run
   # is replaced, never unpacked.
   (cd "$corpus" && rm -f nexuiz-data_*.deb.partial && apt-get download nexuiz-data >&2)

@@ -169,6 +169,15 @@ TEST(BspLevel, SkyIsRecordedAndNonSolidFacesAreSkippedByTheirFlags) {
   for (const glm::uvec3& t : level.mesh.skyTriangles) {
     for (int k = 0; k < 3; ++k) EXPECT_FLOAT_EQ(level.mesh.positionsMeters[t[k]].z, 90.0f / 32);
   }
+
+  // Appended after another mesh (a scene's second level entry), sky indices move with it.
+  LevelMesh both = parseBspLevel(asBytes(boxRoomBsp({64, 64, 64}).bytes()), "first.bsp").mesh;
+  appendLevelMesh(both, level.mesh);
+  ASSERT_EQ(both.skyTriangles.size(), 2u);
+  EXPECT_EQ(measureLevelMesh(both).skyTriangles, 2u);
+  for (const glm::uvec3& t : both.skyTriangles) {
+    for (int k = 0; k < 3; ++k) EXPECT_FLOAT_EQ(both.positionsMeters[t[k]].z, 90.0f / 32);
+  }
 }
 
 TEST(BspLevel, ATruncatedLumpIsOneLineNamingIt) {
