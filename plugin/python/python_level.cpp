@@ -112,7 +112,7 @@ LevelMesh loadLevelSources(const Scene& scene, const std::vector<LevelSource>& s
   for (const LevelSource& source : sources) {
     if (const auto* index = std::get_if<std::size_t>(&source)) {
       const LevelMeshRef& ref = scene.level[*index];
-      appendLevelMesh(level, loadLevelMeshRef(ref, scene.metersPerUnit));
+      appendLevelMesh(level, loadLevelMeshFile(ref.path, ref.up, scene.metersPerUnit));
     } else {
       appendLevelMesh(level, std::get<LevelMesh>(source));
     }
