@@ -4,6 +4,7 @@
 #include "geometry/level/bsp/bezier_patch.h"
 #include "geometry/level/bsp/bsp_surface_flags.h"
 #include "geometry/level/load_level.h"
+#include "geometry/raycast/floor_below.h"
 #include "geometry/scene/scene_file.h"
 #include "synthetic_bsp.h"
 #include "test_files.h"
@@ -250,6 +251,11 @@ TEST(BspLevel, EntityLumpGivesSpawnPointsAndLights) {
   EXPECT_EQ(level.spawnPoints[1].originMeters, glm::dvec3(-1.0, 0.0, 0.25));
   EXPECT_EQ(level.spawnPoints[1].anglesDegrees, glm::dvec3(10.0, 180.0, 0.0));
   EXPECT_EQ(level.spawnPoints[2].classname, "team_CTF_redspawn");
+  // The floor under each spawn point: the room's floor at z = 0, 0.75 m (24 units) below the
+  // first one's origin; nothing under a point outside the room.
+  const LevelRayCaster caster(level.mesh);
+  EXPECT_EQ(floorHeightBelow(caster, level.spawnPoints[0].originMeters, 64.0f), 0.0);
+  EXPECT_EQ(floorHeightBelow(caster, level.spawnPoints[1].originMeters, 64.0f), std::nullopt);
   ASSERT_EQ(level.lights.size(), 1u);
   EXPECT_EQ(level.lights[0].originMeters, glm::dvec3(0.5, 0.5, 2.5));
   EXPECT_EQ(level.lights[0].intensity, 450.0);

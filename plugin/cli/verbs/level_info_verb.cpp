@@ -5,6 +5,7 @@
 // the floor under it (the first level surface straight below, within 64 m; null if none).
 
 #include "geometry/level/bsp/bsp_level.h"
+#include "geometry/raycast/floor_below.h"
 #include "geometry/raycast/level_ray_caster.h"
 #include "plugin/cli/verb.h"
 
@@ -27,15 +28,9 @@ struct LevelInfoOptions {
 
 nlohmann::json vec3Json(const glm::dvec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
 
-// The height of the first surface straight below `pointMeters`, or null.
 nlohmann::json floorBelow(const LevelRayCaster& caster, const glm::dvec3& pointMeters) {
-  Ray down;
-  down.originMeters = pointMeters;
-  down.direction = {0.0f, 0.0f, -1.0f};
-  down.tMax = kFloorSearchMeters;
-  const RayHit hit = caster.firstHit(down);
-  if (!hit.hit()) return nullptr;
-  return pointMeters.z - double(hit.t);
+  const std::optional<double> z = floorHeightBelow(caster, pointMeters, kFloorSearchMeters);
+  return z ? nlohmann::json(*z) : nlohmann::json(nullptr);
 }
 
 int runLevelInfo(const LevelInfoOptions& o) {
