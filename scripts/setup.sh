@@ -4,7 +4,7 @@
 # into build/, then runs what was asked:
 #   scripts/setup.sh demo    the main job: `probeproxy demo` on the built-in level
 #   scripts/setup.sh test    every test (CTest)
-#   scripts/setup.sh build   install and build only
+#   scripts/setup.sh build   install, build and fetch the real-map corpus only
 # Idempotent: a second run installs nothing and rebuilds only what changed.
 set -euo pipefail
 
@@ -18,6 +18,7 @@ packages=(
   libopenmesh-dev                                    # convexity checks, simplification
   libembree-dev libtbb-dev                           # ray casting, threads
   libassimp-dev                                      # glTF/GLB, OBJ, PLY, OFF level meshes
+  libzip-dev                                         # Quake 3 .pk3 archives (zip)
   libopenimageio-dev openimageio-tools               # EXR/HDR/PNG cubemaps and reports
   libglm-dev nlohmann-json3-dev libcli11-dev
   pybind11-dev python3-dev                           # the Blender add-on's module
@@ -40,6 +41,13 @@ fi
 
 cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build" -j"$(nproc)"
+
+# The real-map corpus: Debian's nexuiz-data, downloaded (not installed) and unpacked under
+# build/corpus/ once, then one scene per map with a probe per spawn point. Cached: a second
+# run fetches nothing and rewrites no scene whose bytes are the same.
+data=$("$here/scripts/corpus/fetch_nexuiz.sh" "$build")
+/usr/bin/python3 "$here/scripts/corpus/write_scenes.py" "$build/plugin/cli/probeproxy" \
+  "$data/data.pk3" "$build/corpus/scenes"
 
 case "$job" in
   demo) "$build/plugin/cli/probeproxy" demo --out "$build/demo" ;;

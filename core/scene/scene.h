@@ -16,6 +16,9 @@ struct LevelMeshRef {
   std::filesystem::path pathAsWritten;
   UpAxis up = UpAxis::Z;       // the mesh file's own up axis
   bool upWasExplicit = false;  // written back only when the file said it
+  // For a .pk3 (a zip of game data): the Quake 3 .bsp inside it, e.g. "maps/downer.bsp";
+  // empty for every other mesh file.
+  std::filesystem::path map;
 };
 
 struct Scene {

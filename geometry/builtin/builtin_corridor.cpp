@@ -14,7 +14,7 @@ BuiltinLevel builtinCorridor() {
   built.meshFileName = "corridor.obj";
   built.level = boxRoom(glm::vec3(lo), glm::vec3(hi), "corridor");
   built.scene.fileUp = UpAxis::Z;
-  built.scene.level.push_back({built.meshFileName, built.meshFileName, UpAxis::Z, false});
+  built.scene.level.push_back({built.meshFileName, built.meshFileName, UpAxis::Z, false, {}});
 
   const char* names[3] = {"corridor_a", "corridor_b", "corridor_c"};
   for (int i = 0; i < 3; ++i) {

@@ -11,6 +11,7 @@ LevelMeshStats measureLevelMesh(const LevelMesh& level) {
   LevelMeshStats stats;
   stats.vertices = level.positionsMeters.size();
   stats.triangles = level.triangles.size();
+  stats.skyTriangles = level.skyTriangles.size();
   glm::vec3 lo(std::numeric_limits<float>::infinity());
   glm::vec3 hi(-std::numeric_limits<float>::infinity());
   for (const glm::vec3& p : level.positionsMeters) {
@@ -36,6 +37,7 @@ void appendLevelMesh(LevelMesh& level, const LevelMesh& part) {
   level.positionsMeters.insert(level.positionsMeters.end(), part.positionsMeters.begin(),
                                part.positionsMeters.end());
   for (const glm::uvec3& t : part.triangles) level.triangles.push_back(t + vertexOffset);
+  for (const glm::uvec3& t : part.skyTriangles) level.skyTriangles.push_back(t + vertexOffset);
   for (LevelPart p : part.parts) {
     p.firstTriangle += triangleOffset;
     level.parts.push_back(std::move(p));

@@ -24,12 +24,17 @@ struct LevelMesh {
   std::vector<glm::vec3> positionsMeters;  // world frame
   std::vector<glm::uvec3> triangles;       // indices into positionsMeters
   std::vector<LevelPart> parts;            // in load order; together they cover `triangles`
+  // Sky surfaces (BSP levels: faces whose shader has the sky flag), apart from `triangles`:
+  // they are not a wall a proxy should fit and rays pass them as they pass any opening, but a
+  // reflection that reaches one is known to see the sky. Indices into positionsMeters.
+  std::vector<glm::uvec3> skyTriangles;
 };
 
 struct LevelMeshStats {
   std::size_t vertices = 0;
   std::size_t triangles = 0;
   std::size_t degenerateTriangles = 0;  // zero area (repeated or collinear corners)
+  std::size_t skyTriangles = 0;
   glm::vec3 boundsMinMeters{0.0f};
   glm::vec3 boundsMaxMeters{0.0f};
 };

@@ -1,6 +1,7 @@
 #include "geometry/level/load_level.h"
 
 #include "core/errors/input_error.h"
+#include "geometry/level/bsp/bsp_level.h"
 
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -162,11 +163,26 @@ LevelMesh loadLevelMeshFile(const std::filesystem::path& file, UpAxis fileUp,
   return level;
 }
 
+LevelMesh loadLevelMeshRef(const LevelMeshRef& ref, double sceneMetersPerUnit) {
+  const std::string ext = lowerExtension(ref.path);
+  if (ext != ".bsp" && ext != ".pk3") {
+    return loadLevelMeshFile(ref.path, ref.up, sceneMetersPerUnit);
+  }
+  BspLevel bsp = readBspLevel(ref.path, ref.map);
+  if (bsp.mesh.triangles.empty()) {
+    const std::filesystem::path named =
+        ref.map.empty() ? ref.path
+                        : std::filesystem::path(ref.path.string() + ":" + ref.map.generic_string());
+    throw InputError(named, "BSP has no solid faces");
+  }
+  return std::move(bsp.mesh);
+}
+
 LevelMesh loadLevel(const Scene& scene) {
   if (scene.level.empty()) throw InputError(scene.file, "the level lists no meshes");
   LevelMesh level;
   for (const LevelMeshRef& ref : scene.level) {
-    appendLevelMesh(level, loadLevelMeshFile(ref.path, ref.up, scene.metersPerUnit));
+    appendLevelMesh(level, loadLevelMeshRef(ref, scene.metersPerUnit));
   }
   return level;
 }

@@ -31,6 +31,7 @@ constexpr int kFormatVersion = 1;
 constexpr double kUnitQuaternionTolerance = 1e-3;  // how far from length 1 a typed-in
                                                    // quaternion may be before we refuse it
 constexpr char kMeshExtensionsText[] = ".glb, .gltf, .obj, .ply or .off";
+constexpr char kLevelExtensionsText[] = ".glb, .gltf, .obj, .ply, .off, .bsp or .pk3";
 constexpr char kFacePlaceholder[] = "{face}";
 
 // ------------------------------------------------------------------------------------------
@@ -109,10 +110,22 @@ bool hasMeshExtension(const fs::path& mesh) {
          extension == ".ply" || extension == ".off";
 }
 
+bool hasExtension(const fs::path& file, const char* extension) {
+  return lowercase(file.extension().string()) == extension;
+}
+
+// Quake 3 levels: a .bsp, or a .pk3 archive with the .bsp named by "map". They fix their
+// own frame (Z up, 1/32 m per unit), so they take no "up". Only the level takes them: a
+// convex proxy is a mesh.
+bool isBspLevel(const fs::path& mesh) {
+  return hasExtension(mesh, ".bsp") || hasExtension(mesh, ".pk3");
+}
+
 // The glTF 2.0 specification fixes +Y up, and Blender's exporter converts to it; other
 // formats carry no up axis, so they are taken to be in the scene's frame.
 UpAxis defaultMeshUp(const fs::path& mesh, UpAxis sceneUp) {
   const std::string extension = lowercase(mesh.extension().string());
+  if (isBspLevel(mesh)) return UpAxis::Z;
   return extension == ".glb" || extension == ".gltf" ? UpAxis::Y : sceneUp;
 }
 
@@ -317,6 +330,14 @@ fs::path meshPathAsWritten(const Json& value, const std::string& path) {
   return fs::path(value.get<std::string>());
 }
 
+fs::path levelPathAsWritten(const Json& value, const std::string& path) {
+  if (!value.is_string() ||
+      !(hasMeshExtension(value.get<std::string>()) || isBspLevel(value.get<std::string>()))) {
+    failExpected(path, std::string("a mesh path ending in ") + kLevelExtensionsText, value);
+  }
+  return fs::path(value.get<std::string>());
+}
+
 fs::path resolvedAgainst(const fs::path& pathAsWritten, const fs::path& folder) {
   if (pathAsWritten.is_absolute()) return pathAsWritten.lexically_normal();
   return (folder / pathAsWritten).lexically_normal();
@@ -370,15 +391,35 @@ std::string kindOf(const Json& object, const std::string& path,
   failExpected(jsonMemberPath(path, "kind"), expectedText, kind);
 }
 
+// "maps/downer.bsp": a relative path inside the archive, kept as written.
+fs::path mapInArchive(const Json& value, const std::string& path) {
+  const bool bspName = value.is_string() && hasExtension(value.get<std::string>(), ".bsp");
+  if (!bspName || fs::path(value.get<std::string>()).is_absolute()) {
+    failExpected(path, "the path of a .bsp inside the .pk3, e.g. \"maps/downer.bsp\"", value);
+  }
+  return fs::path(value.get<std::string>());
+}
+
 LevelMeshRef readLevelMesh(const Json& value, const std::string& path, UpAxis sceneUp,
                            const fs::path& folder) {
   LevelMeshRef mesh;
   if (value.is_string()) {  // "corridor.glb" is short for {"mesh": "corridor.glb"}
-    mesh.pathAsWritten = meshPathAsWritten(value, path);
+    mesh.pathAsWritten = levelPathAsWritten(value, path);
+    if (hasExtension(mesh.pathAsWritten, ".pk3")) {
+      failExpected(path, "an object {\"mesh\": \"<archive>.pk3\", \"map\": \"maps/<name>.bsp\"}",
+                   value);
+    }
   } else if (value.is_object()) {
-    rejectUnknownMembers(value, path, {"mesh", "up"});
     mesh.pathAsWritten =
-        meshPathAsWritten(requiredMember(value, path, "mesh"), jsonMemberPath(path, "mesh"));
+        levelPathAsWritten(requiredMember(value, path, "mesh"), jsonMemberPath(path, "mesh"));
+    if (hasExtension(mesh.pathAsWritten, ".pk3")) {
+      rejectUnknownMembers(value, path, {"mesh", "map"});
+      mesh.map = mapInArchive(requiredMember(value, path, "map"), jsonMemberPath(path, "map"));
+    } else if (isBspLevel(mesh.pathAsWritten)) {
+      rejectUnknownMembers(value, path, {"mesh"});
+    } else {
+      rejectUnknownMembers(value, path, {"mesh", "up"});
+    }
     if (const Json* up = optionalMember(value, "up")) {
       mesh.up = upAxis(*up, jsonMemberPath(path, "up"));
       mesh.upWasExplicit = true;
@@ -676,8 +717,10 @@ JsonLayoutValue pathJson(const fs::path& path) { return jsonString(path.generic_
 JsonLayoutValue levelMeshJson(const LevelMeshRef& mesh, UpAxis sceneUp) {
   const fs::path spelled = spelledPath(mesh.path, mesh.pathAsWritten);
   Members members{{"mesh", pathJson(spelled)}};
+  if (!mesh.map.empty()) members.emplace_back("map", pathJson(mesh.map));
   // A Scene built in memory may not say upWasExplicit; an up the default would not give back
-  // must still be written.
+  // must still be written. A BSP level has no up of its own to write: it is always Z.
+  if (isBspLevel(spelled)) return jsonObject(std::move(members));
   if (mesh.upWasExplicit || mesh.up != defaultMeshUp(spelled, sceneUp)) {
     members.emplace_back("up", upJson(mesh.up));
   }

@@ -22,5 +22,6 @@ Verb addValidateVerb(CLI::App& app);
 Verb addCorrectVerb(CLI::App& app);
 Verb addBlendVerb(CLI::App& app);
 Verb addBenchVerb(CLI::App& app);
+Verb addLevelInfoVerb(CLI::App& app);  // hidden: BSP figures and spawn points for scripts
 
 }  // namespace probeproxy::cli

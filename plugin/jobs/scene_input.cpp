@@ -20,7 +20,7 @@ LevelMesh loadSceneLevel(const Scene& scene, const SceneInput& input) {
       if (*index >= scene.level.size())
         throw InputError(scene.file, "the scene has no level mesh " + std::to_string(*index));
       const LevelMeshRef& ref = scene.level[*index];
-      appendLevelMesh(level, loadLevelMeshFile(ref.path, ref.up, scene.metersPerUnit));
+      appendLevelMesh(level, loadLevelMeshRef(ref, scene.metersPerUnit));
     } else {
       appendLevelMesh(level, std::get<LevelMesh>(source));
     }

@@ -163,8 +163,8 @@ TEST_F(LevelLoading, SceneLevelConcatenatesMeshesInOrder) {
   scene.file = folder_ / "two.scene.json";
   writeLevelMeshFile(boxRoom({0, 0, 0}, {1, 1, 1}, "a"), folder_ / "a.obj", UpAxis::Z);
   writeLevelMeshFile(boxRoom({5, 0, 0}, {6, 1, 1}, "b"), folder_ / "b.glb", UpAxis::Y);
-  scene.level = {{folder_ / "a.obj", "a.obj", UpAxis::Z, false},
-                 {folder_ / "b.glb", "b.glb", UpAxis::Y, false}};
+  scene.level = {{folder_ / "a.obj", "a.obj", UpAxis::Z, false, {}},
+                 {folder_ / "b.glb", "b.glb", UpAxis::Y, false, {}}};
   const LevelMesh level = loadLevel(scene);
   EXPECT_EQ(level.triangles.size(), 24u);
   ASSERT_EQ(level.parts.size(), 2u);

@@ -132,7 +132,7 @@ Scene roomScene(const fs::path& folder, UpAxis up, double metersPerUnit) {
   scene.file = folder / "room.scene.json";
   scene.fileUp = up;
   scene.metersPerUnit = metersPerUnit;
-  scene.level.push_back({folder / "room.glb", "room.glb", UpAxis::Y, false});
+  scene.level.push_back({folder / "room.glb", "room.glb", UpAxis::Y, false, {}});
   for (int i = 0; i < 6; ++i) {
     Probe probe;
     probe.name = kKeptNames[i];
@@ -620,7 +620,7 @@ TEST_F(RuntimeExport, RefusesToOverwriteTheSceneFileOrALevelMesh) {
 
   scene = roomScene(folder_, UpAxis::Z, 1.0);
   scene.level.push_back(
-      {out() / "sub" / ".." / "proxies.glb", "export/proxies.glb", UpAxis::Y, false});
+      {out() / "sub" / ".." / "proxies.glb", "export/proxies.glb", UpAxis::Y, false, {}});
   try {
     writeRuntimeExport(scene, roomBuilds(), out());
     FAIL() << "expected InputError";

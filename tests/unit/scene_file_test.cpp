@@ -283,7 +283,7 @@ TEST_F(SceneFileTest, GltfMeshesDefaultToYUpOthersToTheScenes) {
 
   // A Scene built in memory that does not say upWasExplicit still keeps its up axis.
   Scene built = zScene;
-  built.level = {LevelMeshRef{folder_ / "f.glb", "f.glb", UpAxis::Z, false}};
+  built.level = {LevelMeshRef{folder_ / "f.glb", "f.glb", UpAxis::Z, false, {}}};
   EXPECT_EQ(lineWith(sceneFileJson(built), "\"level\""),
             R"(  "level": [ { "mesh": "f.glb", "up": "Z" } ],)");
 }
@@ -369,7 +369,7 @@ TEST_F(SceneFileTest, WrittenFilesAreAFixedPoint) {
   Scene scene;
   scene.fileUp = UpAxis::Y;
   scene.metersPerUnit = 0.0254;
-  scene.level = {LevelMeshRef{folder_ / "level.glb", "level.glb", UpAxis::Y, false}};
+  scene.level = {LevelMeshRef{folder_ / "level.glb", "level.glb", UpAxis::Y, false, {}}};
   for (int i = 0; i < 60; ++i) {
     Probe probe;
     probe.name = "probe_" + std::to_string(i);
@@ -506,7 +506,8 @@ std::vector<ErrorCase> errorCases() {
       {"empty_level", sceneJson("", R"("probeproxy_scene": 1, "up": "Z", "level": [])"),
        "$.level: expected a non-empty array of meshes, got []"},
       {"mesh_extension", sceneJson("", R"("probeproxy_scene": 1, "up": "Z", "level": ["a.fbx"])"),
-       R"($.level[0]: expected a mesh path ending in .glb, .gltf, .obj, .ply or .off, got "a.fbx")"},
+       R"($.level[0]: expected a mesh path ending in .glb, .gltf, .obj, .ply, .off, .bsp or )"
+       R"(.pk3, got "a.fbx")"},
       {"level_entry_type", sceneJson("", R"("probeproxy_scene": 1, "up": "Z", "level": [3])"),
        R"($.level[0]: expected a mesh path or an object with "mesh", got 3)"},
       {"level_up",
