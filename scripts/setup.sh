@@ -5,6 +5,7 @@
 #   scripts/setup.sh demo    the main job: `probeproxy demo` on the built-in level
 #   scripts/setup.sh test    every test (CTest)
 #   scripts/setup.sh build   install and build only
+#   scripts/setup.sh module  install and build only the Python module (the Blender add-on's)
 # Idempotent: a second run installs nothing and rebuilds only what changed.
 set -euo pipefail
 
@@ -39,11 +40,13 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build" -j"$(nproc)"
+targets=()
+[ "$job" = module ] && targets=(--target probeproxy_py)
+cmake --build "$build" -j"$(nproc)" "${targets[@]}"
 
 case "$job" in
   demo) "$build/plugin/cli/probeproxy" demo --out "$build/demo" ;;
   test) ctest --test-dir "$build" --output-on-failure -j"$(nproc)" ;;
-  build) ;;
-  *) echo "usage: scripts/setup.sh [demo|test|build]" >&2; exit 2 ;;
+  build | module) ;;
+  *) echo "usage: scripts/setup.sh [demo|test|build|module]" >&2; exit 2 ;;
 esac
