@@ -322,9 +322,11 @@ class PROBEPROXY_OT_export_proxies(_NeedsModule, bpy.types.Operator):
         return _run(self, work)
 
 
-def _import_level_mesh(path, up, meters_per_unit):
+def _import_level_mesh(path, up, meters_per_unit, meters_per_bu):
     """Imports one level mesh with Blender's importer; returns the objects it made.
-    `meters_per_unit`: the file's unit in Blender units (metres per file unit / Unit Scale)."""
+    `meters_per_unit`: the scene file's unit; `meters_per_bu`: the Blender scene's Unit Scale.
+    Blender's glTF importer already turns metres into Blender units (it divides by the Unit
+    Scale, io_scene_gltf2 gltf2_blender_gltf.py); the OBJ and PLY importers do not."""
     before = set(bpy.data.objects)
     ext = os.path.splitext(path)[1].lower()
     if ext in (".glb", ".gltf"):
@@ -333,16 +335,19 @@ def _import_level_mesh(path, up, meters_per_unit):
             np.bool = bool
         bpy.ops.import_scene.gltf(filepath=path)
         file_up = "Y"  # the importer turns glTF's +Y up into Blender's +Z
+        to_bu = meters_per_unit
     elif ext == ".obj":
         bpy.ops.wm.obj_import(filepath=path, up_axis=up, forward_axis="NEGATIVE_Z" if up == "Y" else "Y")
         file_up = up
+        to_bu = meters_per_unit / meters_per_bu
     elif ext == ".ply":
         bpy.ops.import_mesh.ply(filepath=path, axis_up=up, axis_forward="-Z" if up == "Y" else "Y")
         file_up = up
+        to_bu = meters_per_unit / meters_per_bu
     else:
         raise native.module.InputError("%s: Blender has no importer for %s meshes" % (path, ext))
     made = [o for o in bpy.data.objects if o not in before]
-    fix = Matrix.Scale(meters_per_unit, 4)
+    fix = Matrix.Scale(to_bu, 4)
     if up != file_up:  # the scene says the file's up differs from what the importer assumed
         fix = fix @ Matrix.Rotation(math.pi / 2 if up == "Y" else -math.pi / 2, 4, "X")
     if fix != Matrix.Identity(4):
@@ -370,8 +375,8 @@ def import_scene(context, path):
         mesh_path = os.path.join(folder, entry["mesh"])
         ext = os.path.splitext(mesh_path)[1].lower()
         up = entry.get("up") or ("Y" if ext in (".glb", ".gltf") else as_written["up"])
-        made = _import_level_mesh(mesh_path, up,
-                                  as_written.get("meters_per_unit", 1.0) / scene_io.meters_per_bu(scene))
+        made = _import_level_mesh(mesh_path, up, as_written.get("meters_per_unit", 1.0),
+                                  scene_io.meters_per_bu(scene))
         for obj in made:
             for c in list(obj.users_collection):
                 c.objects.unlink(obj)

@@ -42,8 +42,9 @@ def add(a, b):
 
 
 def meters_per_bu(scene):
-    """Metres per Blender unit: the scene's Unit Scale."""
-    scale = scene.unit_settings.scale_length
+    """Metres per Blender unit: the scene's Unit Scale, as typed (Blender stores 0.01 as the
+    32-bit 0.0099999998; the shortest decimal of it is the 0.01 the artist meant)."""
+    scale = f32(scene.unit_settings.scale_length)
     return scale if scale > 0 else 1.0
 
 
