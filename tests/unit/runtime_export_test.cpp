@@ -4,6 +4,7 @@
 // glb a DCC tool opens; and every refusal to overwrite what an artist made.
 
 #include "geometry/export/runtime_export.h"
+#include "core/scene/file_frame.h"
 #include "core/errors/input_error.h"
 #include "geometry/export/engine_probes.h"
 #include "geometry/export/kept_box.h"
@@ -444,6 +445,40 @@ TEST_F(RuntimeExport, EllipsoidUnitTransformAndIcosphereWinding) {
 // ------------------------------------------------------------------------------------------
 // Engines, for known boxes. The room box: centre (0, 0, 1.5), half-extents (3, 2, 1.5),
 // capture (1, 0.5, 1.2): box centre - capture = (-1, -0.5, 0.3) m.
+
+// Issue 16: one frame conversion for the scene file, proxies.json and the engines
+// (core/scene/file_frame.h). Each frame's rotation conversion is R' = A R A^T, exact: checked
+// against the matrix product for a turned box, in a right-handed and a left-handed frame.
+TEST_F(RuntimeExport, OneFrameConversionForFilesAndEngines) {
+  const glm::dquat q = glm::normalize(glm::angleAxis(0.7, glm::normalize(glm::dvec3(1, 2, 3))));
+  for (const FileFrame& frame : {FileFrame(UpAxis::Y, 0.01), FileFrame(UpAxis::Z, 2.0),
+                                 gltfFrame(), unityFrame(), unrealFrame()}) {
+    // A: file from world, as a matrix, from how points convert.
+    glm::dmat3 a(0.0);
+    for (int c = 0; c < 3; ++c) {
+      glm::dvec3 e(0.0);
+      e[c] = 1.0;
+      a[c] = fileDirectionFromWorld(frame, e);
+    }
+    const double det = glm::determinant(a);
+    EXPECT_EQ(std::abs(det), 1.0);
+    EXPECT_EQ(det, frame.determinant);
+    const glm::dmat3 expected = a * glm::mat3_cast(q) * glm::transpose(a);
+    const glm::dmat3 got = glm::mat3_cast(fileRotationFromWorld(frame, q));
+    for (int c = 0; c < 3; ++c) expectClose(got[c], expected[c], 1e-15);
+    // Exact round trips: the axes are a copy and a sign; the unit divides and multiplies.
+    const glm::dvec3 p(1.25, -3.5, 0.75);
+    EXPECT_EQ(worldDirectionFromFile(frame, fileDirectionFromWorld(frame, p)), p);
+    EXPECT_EQ(worldRotationFromFile(frame, fileRotationFromWorld(frame, q)), q);
+    // Half-extents are permuted, never negated.
+    const glm::dvec3 h = fileHalfExtentsFromWorld(frame, glm::dvec3(1, 2, 3));
+    EXPECT_TRUE(glm::all(glm::greaterThan(h, glm::dvec3(0.0))));
+  }
+  // The frames the engines document: Unity (x, y, z) = world (-x, z, -y); Unreal (x, -y, z) cm.
+  expectClose(filePointFromWorld(unityFrame(), {1, 2, 3}), {-1, 3, -2}, 0.0);
+  expectClose(filePointFromWorld(unrealFrame(), {1, 2, 3}), {100, -200, 300}, 1e-12);
+  expectClose(filePointFromWorld(gltfFrame(), {1, 2, 3}), {1, 3, -2}, 0.0);
+}
 
 TEST_F(RuntimeExport, UnityBoxIsLeftHandedYUpRelativeToTheProbe) {
   const UnityReflectionProbe u = unityReflectionProbe(kRoomBox, kCapture);
