@@ -86,36 +86,47 @@ class PROBEPROXY_PT_probe(_Sidebar, bpy.types.Panel):
             box.label(text="Kept: %s (%s)" % (r["candidate"], r["kind"]))
             box.label(text="%d planes, %d vertices" % (r["planes"], r["vertices"]))
             box.label(text="p95 %s deg" % _deg(e["p95_deg"]))
-            box.label(text="median %s, max %s deg" % (_deg(e["median_deg"]), _deg(e["max_deg"])))
+            box.label(text="median %s deg" % _deg(e["median_deg"]))
+            box.label(text="max %s deg" % _deg(e["max_deg"]))
             box.label(text="miss %.2f%%, occluded %.2f%%" % (
                 100 * e["miss_rate"], 100 * e["occluded_rate"]))
             box.label(text="%d mirror_floor samples" % e["samples"])
             for finding in r.get("findings", []):
-                for i, line in enumerate(_wrap(finding, _chars(context) - 2)):
+                for i, line in enumerate(_wrap(finding, _chars(context) - 4)):
                     box.label(text=line, icon="ERROR" if i == 0 else "BLANK1")
         if s.proxy_mode == "MESH" and s.proxy_mesh.endswith("_proxy_edited.obj"):
             for i, line in enumerate(_wrap("Proxy: your edit of the generated mesh, exported as "
-                                           "authored (" + s.proxy_mesh + ")", _chars(context))):
+                                           "authored (" + s.proxy_mesh + ")", _chars(context) - 4)):
                 layout.label(text=line, icon="GREASEPENCIL" if i == 0 else "BLANK1")
-        layout.prop(obj, "location", text="Capture")
-        layout.prop(s, "influence_shape")
-        layout.prop(s, "influence_offset")
+        # Each vector under its own label, its components stacked: at the sidebar's default
+        # width a label beside three fields leaves room for neither.
+        _vector(layout, obj, "location", "Capture")
+        layout.label(text="Influence:")
+        layout.prop(s, "influence_shape", text="")
+        _vector(layout, s, "influence_offset", "Centre offset")
         if s.influence_shape == "BOX":
-            layout.prop(s, "half_extents")
-            layout.prop(s, "inner_half_extents")
+            _vector(layout, s, "half_extents", "Outer half-extents")
+            _vector(layout, s, "inner_half_extents", "Inner half-extents")
         else:
             layout.prop(s, "radius")
             layout.prop(s, "inner_radius")
-        layout.prop(s, "proxy_mode")
+        layout.label(text="Proxy:")
+        layout.prop(s, "proxy_mode", text="")
         if s.proxy_mode == "BOX":
-            layout.prop(s, "proxy_center")
-            layout.prop(s, "proxy_half_extents")
-            layout.prop(s, "proxy_rotation")
+            _vector(layout, s, "proxy_center", "Proxy centre")
+            _vector(layout, s, "proxy_half_extents", "Proxy half-extents")
+            _vector(layout, s, "proxy_rotation", "Proxy rotation (w, x, y, z)")
         elif s.proxy_mode == "SPHERE":
-            layout.prop(s, "proxy_center")
-            layout.prop(s, "proxy_radius")
+            _vector(layout, s, "proxy_center", "Proxy centre")
+            layout.prop(s, "proxy_radius", text="Radius")
         elif s.proxy_mode == "MESH":
-            layout.prop(s, "proxy_mesh")
+            layout.prop(s, "proxy_mesh", text="")
+
+
+def _vector(layout, data, name, label):
+    col = layout.column(align=True)
+    col.label(text=label)
+    col.prop(data, name, text="")
 
 
 class PROBEPROXY_PT_findings(_Sidebar, bpy.types.Panel):
@@ -133,7 +144,11 @@ class PROBEPROXY_PT_findings(_Sidebar, bpy.types.Panel):
         if not findings:
             self.layout.label(text="No findings: every volume passes", icon="CHECKMARK")
             return
-        self.layout.label(text=findings_summary([f.severity for f in findings]), icon="ERROR")
+        summary = findings_summary([f.severity for f in findings])
+        head, _, counts = summary.partition(" (")
+        self.layout.label(text=head, icon="ERROR")
+        if counts:
+            self.layout.label(text=counts.rstrip(")"))
         icons = {"error": "CANCEL", "warning": "ERROR", "info": "INFO"}
         for f in findings:
             box = self.layout.box()
@@ -147,7 +162,7 @@ class PROBEPROXY_PT_findings(_Sidebar, bpy.types.Panel):
             for line in _wrap(f.message, width):
                 col.label(text=line)
             if f.hint:
-                for i, line in enumerate(_wrap("Fix: " + f.hint, width)):
+                for i, line in enumerate(_wrap("Fix: " + f.hint, width - 4)):
                     col.label(text=line, icon="LIGHT" if i == 0 else "BLANK1")
 
 
