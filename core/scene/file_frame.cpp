@@ -51,8 +51,8 @@ FileFrame::FileFrame(UpAxis up, double metersPerUnit_)
 
 FileFrame::FileFrame(std::array<int, 3> axis_, std::array<double, 3> sign_, double metersPerUnit_)
     : axis(axis_), sign(sign_), determinant(1.0), metersPerUnit(metersPerUnit_) {
-  const bool inRange = axis[0] >= 0 && axis[0] < 3 && axis[1] >= 0 && axis[1] < 3 &&
-                       axis[2] >= 0 && axis[2] < 3;
+  const bool inRange =
+      axis[0] >= 0 && axis[0] < 3 && axis[1] >= 0 && axis[1] < 3 && axis[2] >= 0 && axis[2] < 3;
   if (!inRange || axis[0] == axis[1] || axis[1] == axis[2] || axis[0] == axis[2]) {
     throw std::invalid_argument("FileFrame: the axes must be a permutation of 0, 1, 2");
   }

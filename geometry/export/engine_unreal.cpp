@@ -29,8 +29,7 @@ UnrealBoxReflectionCapture unrealBoxReflectionCapture(const BoxShape& box, glm::
   capture.rotation = fileRotationFromWorld(unreal, box.worldFromBox);
   capture.scale3D = fileHalfExtentsFromWorld(unreal, box.halfExtentsMeters);
   capture.captureOffset = filePointFromWorld(unreal, captureMeters - box.centerMeters);
-  capture.boxTransitionDistance =
-      fileLengthFromWorld(unreal, transitionDistanceMeters(influence));
+  capture.boxTransitionDistance = fileLengthFromWorld(unreal, transitionDistanceMeters(influence));
   return capture;
 }
 

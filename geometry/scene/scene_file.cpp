@@ -415,7 +415,9 @@ ProxySpec readProxy(const Json& value, const std::string& path, const FileFrame&
     rejectUnknownMembers(value, path, {"kind", "center", "half_extents", "rotation"});
     AuthoredObb obb{pointMember(value, path, "center", frame),
                     halfExtentsMember(value, path, "half_extents", frame)};
-    obb.worldFromBox = worldRotationFromFile(frame, unitQuaternion(requiredMember(value, path, "rotation"), jsonMemberPath(path, "rotation")));
+    obb.worldFromBox = worldRotationFromFile(
+        frame,
+        unitQuaternion(requiredMember(value, path, "rotation"), jsonMemberPath(path, "rotation")));
     return obb;
   }
   if (kind == "sphere") {
@@ -460,7 +462,7 @@ std::vector<ReflectionPlane> readReflectionPlanes(const Json& value, const std::
     plane.pointMeters = pointMember(planeJson, planePath, "point", frame);
     plane.normal =
         worldDirectionFromFile(frame, unitDirection(requiredMember(planeJson, planePath, "normal"),
-                                             jsonMemberPath(planePath, "normal")));
+                                                    jsonMemberPath(planePath, "normal")));
     planes.push_back(plane);
   }
   return planes;

@@ -128,8 +128,9 @@ void checkCaptureInsideLevel(const LevelRayCaster& level, const Probe& probe,
   f.limit = kLimit;
   char text[64];
   std::snprintf(text, sizeof text, "%.0f%%", 100.0 * share);
-  f.message = "probe '" + probe.name + "' captures at " + formatPoint(probe.captureMeters) +
-              ": " + text + " of its directions see no level or the back of a surface; it is "
+  f.message = "probe '" + probe.name + "' captures at " + formatPoint(probe.captureMeters) + ": " +
+              text +
+              " of its directions see no level or the back of a surface; it is "
               "outside the level or inside a wall";
   f.hint = "move the capture point into the room it serves";
   out.push_back(std::move(f));

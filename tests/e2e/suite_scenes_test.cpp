@@ -233,8 +233,7 @@ double cornerDistance(const std::vector<glm::dvec3>& a, const std::vector<glm::d
 TEST_P(SuiteLevel, EnginePresetsAreTheKeptBox) {
   const Scene scene = readSceneFile(sceneFile());
   const LevelRayCaster caster(loadLevel(scene));
-  const std::vector<ProbeProxyBuild> builds =
-      buildSceneProxies(scene, caster, ProxyBuildOptions{});
+  const std::vector<ProbeProxyBuild> builds = buildSceneProxies(scene, caster, ProxyBuildOptions{});
   const std::filesystem::path out =
       std::filesystem::temp_directory_path() / "probeproxy-suite-engines" / GetParam();
   std::filesystem::remove_all(out);
@@ -249,9 +248,9 @@ TEST_P(SuiteLevel, EnginePresetsAreTheKeptBox) {
     const RuntimeEngines& e = back.probes[i].engines;
     const std::optional<BoxShape> box = keptBox(kept.shape);
     // The rooms of the issue: a kept convex_6 that is the room is a box.
-    const bool issueRoom = b.probe == "arm_x" || b.probe == "arm_y" ||
-                           b.probe == "ground_south" || b.probe == "ground_north" ||
-                           b.probe == "upper_south" || b.probe == "upper_north";
+    const bool issueRoom = b.probe == "arm_x" || b.probe == "arm_y" || b.probe == "ground_south" ||
+                           b.probe == "ground_north" || b.probe == "upper_south" ||
+                           b.probe == "upper_north";
     if (issueRoom) {
       EXPECT_TRUE(box.has_value()) << b.probe << " kept " << kept.kind;
     }
@@ -285,11 +284,11 @@ TEST_P(SuiteLevel, EnginePresetsAreTheKeptBox) {
     // Bevy: the unit cube (1 x 1 x 1) under the Transform, glTF axes.
     ASSERT_TRUE(e.bevy) << b.probe;
     std::vector<glm::dvec3> bevy;
-    for (const glm::dvec3& c : boxCorners(e.bevy->translation, e.bevy->rotation, e.bevy->scale / 2.0))
+    for (const glm::dvec3& c :
+         boxCorners(e.bevy->translation, e.bevy->rotation, e.bevy->scale / 2.0))
       bevy.push_back({c.x, -c.z, c.y});
     EXPECT_LE(cornerDistance(bevy, keptCorners), kTolerance) << b.probe << " bevy";
-    for (const EngineSource* source :
-         {&e.unrealBox->source, &e.godot->source, &e.bevy->source}) {
+    for (const EngineSource* source : {&e.unrealBox->source, &e.godot->source, &e.bevy->source}) {
       EXPECT_TRUE(source->keptProxy) << b.probe;
       EXPECT_EQ(source->candidate, kept.kind) << b.probe;
       EXPECT_EQ(source->error.p95Deg, kept.error.p95Deg) << b.probe;

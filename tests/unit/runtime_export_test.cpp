@@ -4,8 +4,8 @@
 // glb a DCC tool opens; and every refusal to overwrite what an artist made.
 
 #include "geometry/export/runtime_export.h"
-#include "core/scene/file_frame.h"
 #include "core/errors/input_error.h"
+#include "core/scene/file_frame.h"
 #include "geometry/export/engine_probes.h"
 #include "geometry/export/kept_box.h"
 #include "geometry/export/unit_transform.h"
@@ -451,8 +451,8 @@ TEST_F(RuntimeExport, EllipsoidUnitTransformAndIcosphereWinding) {
 // against the matrix product for a turned box, in a right-handed and a left-handed frame.
 TEST_F(RuntimeExport, OneFrameConversionForFilesAndEngines) {
   const glm::dquat q = glm::normalize(glm::angleAxis(0.7, glm::normalize(glm::dvec3(1, 2, 3))));
-  for (const FileFrame& frame : {FileFrame(UpAxis::Y, 0.01), FileFrame(UpAxis::Z, 2.0),
-                                 gltfFrame(), unityFrame(), unrealFrame()}) {
+  for (const FileFrame& frame : {FileFrame(UpAxis::Y, 0.01), FileFrame(UpAxis::Z, 2.0), gltfFrame(),
+                                 unityFrame(), unrealFrame()}) {
     // A: file from world, as a matrix, from how points convert.
     glm::dmat3 a(0.0);
     for (int c = 0; c < 3; ++c) {
@@ -564,8 +564,7 @@ TEST_F(RuntimeExport, TransitionDistanceIsTheSmallestFadeOverTheAxesThatFade) {
   EXPECT_DOUBLE_EQ(transitionDistanceMeters(box({3.55, 2.0, 1.5})), 1.45);  // l_room's arm_x
   EXPECT_DOUBLE_EQ(transitionDistanceMeters(box({4.0, 1.5, 1.5})), 0.5);    // x 1, y 0.5
   EXPECT_EQ(transitionDistanceMeters(box({5.0, 2.0, 1.5})), 0.0);           // no fade at all
-  EXPECT_DOUBLE_EQ(
-      transitionDistanceMeters(SphereInfluence{{0, 0, 0}, 3.0, 2.25}), 0.75);
+  EXPECT_DOUBLE_EQ(transitionDistanceMeters(SphereInfluence{{0, 0, 0}, 3.0, 2.25}), 0.75);
   const UnrealBoxReflectionCapture u =
       unrealBoxReflectionCapture(kRoomBox, kCapture, box({3.55, 2.0, 1.5}));
   EXPECT_DOUBLE_EQ(u.boxTransitionDistance, 145.0);  // cm
@@ -629,8 +628,8 @@ TEST_F(RuntimeExport, EnginesTakeTheKeptBoxElseTheBestBoxAndUnityAnAabb) {
 
   // Kept aabb: every box engine takes it, though the obb's p95 is lower.
   const RuntimeEngines& aabb = runtime.probes[3].engines;
-  for (const EngineSource* s : {&aabb.unity->source, &aabb.unrealBox->source,
-                                &aabb.godot->source, &aabb.bevy->source}) {
+  for (const EngineSource* s :
+       {&aabb.unity->source, &aabb.unrealBox->source, &aabb.godot->source, &aabb.bevy->source}) {
     EXPECT_EQ(s->candidate, "aabb");
     EXPECT_TRUE(s->keptProxy);
   }
@@ -646,8 +645,8 @@ TEST_F(RuntimeExport, EnginesTakeTheKeptBoxElseTheBestBoxAndUnityAnAabb) {
 
   // A kept convex that is the room box: the engines get that box with its error.
   std::vector<ProbeProxyBuild> convexBuilds = roomBuilds();
-  convexBuilds[5].candidates[5] = {"convex_6", convexFromBox(kRoomBox),
-                                   figures(0.0, 1e-5, 1e-4, 0.0, 4096), {}, 0.5};
+  convexBuilds[5].candidates[5] = {
+      "convex_6", convexFromBox(kRoomBox), figures(0.0, 1e-5, 1e-4, 0.0, 4096), {}, 0.5};
   const Runtime convex = makeRuntimeExport(roomScene(folder_, UpAxis::Z, 1.0), convexBuilds);
   const RuntimeEngines& c6 = convex.probes[5].engines;
   EXPECT_EQ(c6.unrealBox->source.candidate, "convex_6");
