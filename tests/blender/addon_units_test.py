@@ -229,4 +229,50 @@ compare("Euler XYZ", p3, q3)
 for o in (q, q2, q3):
     bpy.data.objects.remove(o)
 check(bpy.ops.probeproxy.generate_proxies() == {"FINISHED"}, "Generate with the transformed probes")
+
+# A level modelled here in centimetres, saved: Blender's glTF exporter writes Blender units, so
+# the scene file's unit is the Unit Scale, and `probeproxy build` on it keeps what Generate kept.
+import subprocess  # noqa: E402
+
+import bmesh  # noqa: E402
+
+for obj in list(bpy.data.objects):
+    bpy.data.objects.remove(obj)
+scene.probeproxy.level_json = "[]"
+scene.probeproxy.scene_file = ""
+scene.probeproxy.meters_per_unit = 1.0
+scene.unit_settings.scale_length = 0.01
+bm = bmesh.new()
+bmesh.ops.create_cube(bm, size=1.0)
+for v in bm.verts:  # a 6 x 4 x 3 m room, in centimetres
+    v.co = [lo if c < 0 else hi for c, lo, hi in zip(v.co, (-300, -200, 0), (300, 200, 300))]
+bmesh.ops.reverse_faces(bm, faces=bm.faces)
+mesh = bpy.data.meshes.new("room_cm")
+bm.to_mesh(mesh)
+bm.free()
+scene.collection.objects.link(bpy.data.objects.new("room_cm", mesh))
+scene.cursor.location = (75.0, -50.0, 150.0)
+check(bpy.ops.probeproxy.add_probe() == {"FINISHED"}, "cm room: Add Probe")
+cm_probe = bpy.context.view_layer.objects.active
+cm_probe.probeproxy.half_extents = (300.0, 200.0, 150.0)
+cm_probe.probeproxy.inner_half_extents = (250.0, 150.0, 100.0)
+cm_probe.probeproxy.influence_offset = (-75.0, 50.0, 0.0)
+check(bpy.ops.probeproxy.generate_proxies() == {"FINISHED"}, "cm room: Generate")
+generated = json.loads(cm_probe.probeproxy.result_json)
+room_saved = os.path.join(work, "room_cm.scene.json")
+check(bpy.ops.probeproxy.save_scene(filepath=room_saved) == {"FINISHED"}, "cm room: Save Scene")
+with open(room_saved) as f:
+    written = json.load(f)
+check(written["meters_per_unit"] == 0.01 and written["probes"][0]["capture"] == [75, -50, 150],
+      "cm room: the scene file is in centimetres (meters_per_unit %r, capture %r)"
+      % (written["meters_per_unit"], written["probes"][0]["capture"]))
+run = subprocess.run([os.path.abspath(args.cli), "build", room_saved, "--out",
+                      os.path.join(work, "room_cm_cli"), "--json"], capture_output=True, text=True)
+check(run.returncode == 0, "cm room: probeproxy build on it: " + run.stderr.strip())
+cli = json.loads(run.stdout or '{"probes": [{}]}')["probes"][0]
+check({k: cli.get("proxy", {}).get(k) for k in ("kind", "candidate", "planes")}
+      == {k: generated[k] for k in ("kind", "candidate", "planes")}
+      and cli.get("error") == generated["error"],
+      "cm room: the CLI keeps Generate's proxy with its figures (p95 %r)"
+      % generated["error"]["p95_deg"])
 finish()
