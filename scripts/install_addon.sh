@@ -10,7 +10,8 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build="${PROBEPROXY_BUILD_DIR:-$here/build}"
 blender="${BLENDER:-blender}"
 
-"$here/scripts/setup.sh" build >/dev/null
+# Only the module: the tests, benchmarks and the Blender suite are not needed to install.
+"$here/scripts/setup.sh" module >/dev/null
 
 ask() {  # runs a Python expression in Blender, prints its value
   "$blender" -b --factory-startup --python-expr "import sys, bpy; print('probeproxy:', $1)" 2>/dev/null |

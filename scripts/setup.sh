@@ -5,6 +5,7 @@
 #   scripts/setup.sh demo    the main job: `probeproxy demo` on the built-in level
 #   scripts/setup.sh test    every test (CTest)
 #   scripts/setup.sh build   install, build and fetch the real-map corpus only
+#   scripts/setup.sh module  install and build only the Python module (the Blender add-on's)
 # Idempotent: a second run installs nothing and rebuilds only what changed.
 set -euo pipefail
 
@@ -40,18 +41,23 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build" -j"$(nproc)"
+targets=()
+[ "$job" = module ] && targets=(--target probeproxy_py)
+cmake --build "$build" -j"$(nproc)" "${targets[@]}"
 
 # The real-map corpus: Debian's nexuiz-data, downloaded (not installed) and unpacked under
 # build/corpus/ once, then one scene per map with a probe per spawn point. Cached: a second
 # run fetches nothing and rewrites no scene whose bytes are the same.
-data=$("$here/scripts/corpus/fetch_nexuiz.sh" "$build")
-/usr/bin/python3 "$here/scripts/corpus/write_scenes.py" "$build/plugin/cli/probeproxy" \
-  "$data/data.pk3" "$build/corpus/scenes"
+# The demo and the add-on's module do not need it.
+if [ "$job" = test ] || [ "$job" = build ]; then
+  data=$("$here/scripts/corpus/fetch_nexuiz.sh" "$build")
+  /usr/bin/python3 "$here/scripts/corpus/write_scenes.py" "$build/plugin/cli/probeproxy" \
+    "$data/data.pk3" "$build/corpus/scenes"
+fi
 
 case "$job" in
   demo) "$build/plugin/cli/probeproxy" demo --out "$build/demo" ;;
   test) ctest --test-dir "$build" --output-on-failure -j"$(nproc)" ;;
-  build) ;;
-  *) echo "usage: scripts/setup.sh [demo|test|build]" >&2; exit 2 ;;
+  build | module) ;;
+  *) echo "usage: scripts/setup.sh [demo|test|build|module]" >&2; exit 2 ;;
 esac

@@ -1,22 +1,21 @@
 #include "geometry/export/engine_probes.h"
 
-#include "geometry/export/export_frame.h"
+#include "core/scene/file_frame.h"
 
 #include <glm/geometric.hpp>
 
 namespace probeproxy {
 
 namespace {
-const ExportFrame kGltfFrame{UpAxis::Y, 1.0};  // glTF's axes, metres
-constexpr double kSamePointMeters = 1e-6;      // capture point "at" the box centre
+constexpr double kSamePointMeters = 1e-6;  // capture point "at" the box centre
 }  // namespace
 
 BevyLightProbe bevyLightProbe(const BoxShape& box, glm::dvec3 captureMeters) {
+  const FileFrame gltf = gltfFrame();  // Bevy's axes are glTF's, metres
   BevyLightProbe probe;
-  probe.translation = yUpFromZUp(box.centerMeters);
-  probe.rotation = fileRotationFromWorld(kGltfFrame, box.worldFromBox);  // exact
-  const glm::dvec3 h = box.halfExtentsMeters;
-  probe.scale = 2.0 * glm::dvec3(h.x, h.z, h.y);
+  probe.translation = filePointFromWorld(gltf, box.centerMeters);
+  probe.rotation = fileRotationFromWorld(gltf, box.worldFromBox);  // exact
+  probe.scale = 2.0 * fileHalfExtentsFromWorld(gltf, box.halfExtentsMeters);
   probe.exact = glm::distance(captureMeters, box.centerMeters) <= kSamePointMeters;
   return probe;
 }

@@ -1,7 +1,9 @@
 #pragma once
 // Runtimes that accept only a box or a sphere, in their own parameters, units and axes.
 // probeproxy's world is right-handed, Z up, metres; each engine's frame is fixed below so that
-// the probe lines up with the level imported through that engine's usual glTF path.
+// the probe lines up with the level imported through that engine's usual glTF path. The frames
+// are core/scene/file_frame.h's (gltfFrame, unityFrame, unrealFrame): one conversion for the
+// scene file, proxies.json and the engines.
 //
 //   Unity:  left-handed, Y up, metres; world (x, y, z) -> (-x, z, -y): glTF's axes with x
 //           negated, as UnityGLTF and glTFast import glTF (UnityGLTF issue #257:
@@ -30,9 +32,14 @@ namespace probeproxy {
 
 // Which candidate an engine entry was made from, and the error that candidate was measured
 // with (mirror_floor). It holds in the engine only where the entry says `exact`.
+// `keptProxy`: the entry is the kept proxy itself (a box, or a convex that is one to within
+// kBoxCornerToleranceMeters, keptBox() in kept_box.h), so its error is the kept proxy's;
+// otherwise the engine cannot take the kept shape and `candidate` / `error` say what it gets
+// instead and what that costs against the probe's own error.
 struct EngineSource {
   std::string candidate;  // ProxyCandidate::kind
   ErrorFigures error;
+  bool keptProxy = false;
 };
 
 // Unity ReflectionProbe with box projection (ScriptReference: ReflectionProbe.center "relative
@@ -59,8 +66,8 @@ struct UnrealBoxReflectionCapture {
   glm::dquat rotation{1, 0, 0, 0};     // actor rotation, Unreal axes
   glm::dvec3 scale3D{1.0};             // = box half-extents, cm
   glm::dvec3 captureOffset{0.0};       // cm, Unreal world axes: capture point - location
-  double boxTransitionDistance = 0.0;  // cm: the probe's influence fade (outer - inner range,
-                                       // smallest axis), applied inside the box as Unreal does
+  double boxTransitionDistance = 0.0;  // cm: transitionDistanceMeters(influence), applied
+                                       // inside the box on every axis, as Unreal does
 };
 
 // Unreal SphereReflectionCapture: InfluenceRadius (cm) is both the area that receives the
@@ -84,6 +91,8 @@ struct GodotReflectionProbe {
   glm::dquat rotation{1, 0, 0, 0};  // node basis, Godot axes
   glm::dvec3 size{0.0};             // full size in the node's frame, metres
   glm::dvec3 originOffset{0.0};     // capture point - origin, in the node's frame, metres
+  double blendDistance = 0.0;       // metres: transitionDistanceMeters(influence); Godot 4.3+
+                                    // fades the probe over it inside the box on every axis
   bool boxProjection = true;
   bool exact = true;
 };
@@ -103,12 +112,15 @@ struct BevyLightProbe {
   bool exact = true;
 };
 
-struct RuntimeEngines {  // empty where no candidate of the needed kind was built
-  std::optional<UnityReflectionProbe> unity;                  // best `aabb`
-  std::optional<UnrealBoxReflectionCapture> unrealBox;        // best `aabb`/`obb`
+// Which shape each engine gets (make_runtime_export.cpp, enginesFor): the kept proxy when it is
+// a box (keptBox); Unity only when that box is also axis-aligned. Otherwise, as before, the
+// candidate of the kind the engine takes with the lowest p95. Empty where there is none.
+struct RuntimeEngines {
+  std::optional<UnityReflectionProbe> unity;                  // kept box if aabb, else best `aabb`
+  std::optional<UnrealBoxReflectionCapture> unrealBox;        // kept box, else best `aabb`/`obb`
   std::optional<UnrealSphereReflectionCapture> unrealSphere;  // best true sphere
-  std::optional<GodotReflectionProbe> godot;                  // best `aabb`/`obb`
-  std::optional<BevyLightProbe> bevy;                         // best `aabb`/`obb`
+  std::optional<GodotReflectionProbe> godot;                  // kept box, else best `aabb`/`obb`
+  std::optional<BevyLightProbe> bevy;                         // kept box, else best `aabb`/`obb`
 };
 
 // One small free function per engine (engine_<name>.cpp). World frame in, engine frame out.
@@ -117,10 +129,23 @@ UnrealBoxReflectionCapture unrealBoxReflectionCapture(const BoxShape& box, glm::
                                                       const InfluenceVolume& influence);
 UnrealSphereReflectionCapture unrealSphereReflectionCapture(const SphereShape& sphere,
                                                             glm::dvec3 captureMeters);
-GodotReflectionProbe godotReflectionProbe(const BoxShape& box, glm::dvec3 captureMeters);
+GodotReflectionProbe godotReflectionProbe(const BoxShape& box, glm::dvec3 captureMeters,
+                                          const InfluenceVolume& influence);
 BevyLightProbe bevyLightProbe(const BoxShape& box, glm::dvec3 captureMeters);
 
-// Width of an influence volume's fade, metres: outer minus inner range (smallest axis of a box).
-double influenceFadeMeters(const InfluenceVolume& influence);
+// The one fade distance Unreal's BoxTransitionDistance and Godot's blend_distance take, from the
+// influence's fade (outer minus inner range, per axis for a box), metres.
+//
+// Rule: the smallest fade over the axes that fade at all (0 only when none does; a sphere's
+// is radius - inner radius). Both engines fade one distance inward from every face of the box
+// (Godot: per axis, clamped to the extent, weights multiplied; Unreal: "fades in over the
+// transition distance ... inside the box", UE docs "Reflection Captures"). Our influence may
+// fade along one axis and not the others (a room between two probes along X: fade 1.45 m in
+// X, 0 in Y and Z); the old rule, the smallest over all three axes, gave 0 there: a hard cut.
+// Loss, stated: (1) along the axes with no fade (walls) the engine still fades over this
+// distance inside the box, where Lagarde's weight stays 1; (2) along axes with a wider fade
+// the engine's transition is narrower; (3) the engine fades inside the exported box (the
+// proxy), not inside our influence volume, whose extent it does not have.
+double transitionDistanceMeters(const InfluenceVolume& influence);
 
 }  // namespace probeproxy

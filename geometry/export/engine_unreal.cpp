@@ -1,36 +1,21 @@
 #include "geometry/export/engine_probes.h"
 
+#include "core/scene/file_frame.h"
+
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace probeproxy {
 
-namespace {
-
-constexpr double kCentimetersPerMeter = 100.0;
-
-// Unreal: left-handed, Z up, centimetres; the world's Y flipped.
-glm::dvec3 unrealFromWorld(glm::dvec3 p) {
-  return glm::dvec3(p.x, -p.y, p.z) * kCentimetersPerMeter;
-}
-
-// Conjugating by the reflection diag(1, -1, 1) turns a rotation about axis a into one about
-// -(a.x, -a.y, a.z) by the same angle: (w, x, y, z) -> (w, -x, y, -z). A box's own axes are
-// reflected with the world's, so its half-extents keep their order.
-glm::dquat unrealRotationFromWorld(const glm::dquat& q) {
-  glm::dquat out;
-  out.w = q.w;
-  out.x = -q.x;
-  out.y = q.y;
-  out.z = -q.z;
-  return out;
-}
-
-}  // namespace
-
-double influenceFadeMeters(const InfluenceVolume& influence) {
+double transitionDistanceMeters(const InfluenceVolume& influence) {
   if (const auto* box = std::get_if<BoxInfluence>(&influence)) {
     const glm::dvec3 fade = box->halfExtentsMeters - box->innerHalfExtentsMeters;
-    return std::max(0.0, std::min({fade.x, fade.y, fade.z}));
+    double smallest = std::numeric_limits<double>::infinity();
+    for (int axis = 0; axis < 3; ++axis) {
+      if (fade[axis] > 0.0) smallest = std::min(smallest, fade[axis]);
+    }
+    return std::isinf(smallest) ? 0.0 : smallest;
   }
   const auto& sphere = std::get<SphereInfluence>(influence);
   return std::max(0.0, sphere.radiusMeters - sphere.innerRadiusMeters);
@@ -38,21 +23,23 @@ double influenceFadeMeters(const InfluenceVolume& influence) {
 
 UnrealBoxReflectionCapture unrealBoxReflectionCapture(const BoxShape& box, glm::dvec3 captureMeters,
                                                       const InfluenceVolume& influence) {
+  const FileFrame unreal = unrealFrame();
   UnrealBoxReflectionCapture capture;
-  capture.location = unrealFromWorld(box.centerMeters);
-  capture.rotation = unrealRotationFromWorld(box.worldFromBox);
-  capture.scale3D = box.halfExtentsMeters * kCentimetersPerMeter;
-  capture.captureOffset = unrealFromWorld(captureMeters - box.centerMeters);
-  capture.boxTransitionDistance = influenceFadeMeters(influence) * kCentimetersPerMeter;
+  capture.location = filePointFromWorld(unreal, box.centerMeters);
+  capture.rotation = fileRotationFromWorld(unreal, box.worldFromBox);
+  capture.scale3D = fileHalfExtentsFromWorld(unreal, box.halfExtentsMeters);
+  capture.captureOffset = filePointFromWorld(unreal, captureMeters - box.centerMeters);
+  capture.boxTransitionDistance = fileLengthFromWorld(unreal, transitionDistanceMeters(influence));
   return capture;
 }
 
 UnrealSphereReflectionCapture unrealSphereReflectionCapture(const SphereShape& sphere,
                                                             glm::dvec3 captureMeters) {
+  const FileFrame unreal = unrealFrame();
   UnrealSphereReflectionCapture capture;
-  capture.location = unrealFromWorld(sphere.centerMeters);
-  capture.influenceRadius = sphere.radiiMeters.x * kCentimetersPerMeter;
-  capture.captureOffset = unrealFromWorld(captureMeters - sphere.centerMeters);
+  capture.location = filePointFromWorld(unreal, sphere.centerMeters);
+  capture.influenceRadius = fileLengthFromWorld(unreal, sphere.radiiMeters.x);
+  capture.captureOffset = filePointFromWorld(unreal, captureMeters - sphere.centerMeters);
   return capture;
 }
 

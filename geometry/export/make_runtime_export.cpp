@@ -1,5 +1,6 @@
 #include "geometry/export/runtime_export.h"
 
+#include "geometry/export/kept_box.h"
 #include "geometry/export/unit_transform.h"
 
 #include <glm/common.hpp>
@@ -85,28 +86,49 @@ bool isTrueSphere(const ProxyShape& s) {
          sphere->radiiMeters.y == sphere->radiiMeters.z;
 }
 
-EngineSource sourceOf(const ProxyCandidate& c) { return {c.kind, c.error}; }
+EngineSource sourceOf(const ProxyCandidate& c, bool keptProxy) {
+  return {c.kind, c.error, keptProxy};
+}
 
+// The kept proxy when it is a box (keptBox: a BoxShape, or a convex within 1 um of one), so
+// the engine gets what was measured; Unity, which ignores rotation, only when it is an `aabb`.
+// Otherwise the candidate of the kind the engine takes with the lowest p95, marked as not the
+// kept proxy: its `error` beside the probe's own says what the engine loses.
 RuntimeEngines enginesFor(const ProbeProxyBuild& build, const Probe& probe) {
   RuntimeEngines engines;
   const auto& cs = build.candidates;
-  if (const auto i = bestCandidate(cs, isAabb)) {
+  const ProxyCandidate& kept = cs[build.kept];
+  const std::optional<BoxShape> keptAsBox = keptBox(kept.shape);
+
+  if (keptAsBox && isAabb(*keptAsBox)) {
+    engines.unity = unityReflectionProbe(*keptAsBox, probe.captureMeters);
+    engines.unity->source = sourceOf(kept, true);
+  } else if (const auto i = bestCandidate(cs, isAabb)) {
     engines.unity = unityReflectionProbe(std::get<BoxShape>(cs[*i].shape), probe.captureMeters);
-    engines.unity->source = sourceOf(cs[*i]);
+    engines.unity->source = sourceOf(cs[*i], *i == build.kept);
   }
-  if (const auto i = bestCandidate(cs, isBox)) {
-    const BoxShape& box = std::get<BoxShape>(cs[*i].shape);
-    engines.unrealBox = unrealBoxReflectionCapture(box, probe.captureMeters, probe.influence);
-    engines.unrealBox->source = sourceOf(cs[*i]);
-    engines.godot = godotReflectionProbe(box, probe.captureMeters);
-    engines.godot->source = sourceOf(cs[*i]);
-    engines.bevy = bevyLightProbe(box, probe.captureMeters);
-    engines.bevy->source = sourceOf(cs[*i]);
+
+  std::optional<BoxShape> box;
+  EngineSource source;
+  if (keptAsBox) {
+    box = keptAsBox;
+    source = sourceOf(kept, true);
+  } else if (const auto i = bestCandidate(cs, isBox)) {
+    box = std::get<BoxShape>(cs[*i].shape);
+    source = sourceOf(cs[*i], *i == build.kept);
+  }
+  if (box) {
+    engines.unrealBox = unrealBoxReflectionCapture(*box, probe.captureMeters, probe.influence);
+    engines.unrealBox->source = source;
+    engines.godot = godotReflectionProbe(*box, probe.captureMeters, probe.influence);
+    engines.godot->source = source;
+    engines.bevy = bevyLightProbe(*box, probe.captureMeters);
+    engines.bevy->source = source;
   }
   if (const auto i = bestCandidate(cs, isTrueSphere)) {
     engines.unrealSphere =
         unrealSphereReflectionCapture(std::get<SphereShape>(cs[*i].shape), probe.captureMeters);
-    engines.unrealSphere->source = sourceOf(cs[*i]);
+    engines.unrealSphere->source = sourceOf(cs[*i], *i == build.kept);
   }
   return engines;
 }

@@ -1,5 +1,5 @@
 #include "core/errors/input_error.h"
-#include "geometry/export/export_frame.h"
+#include "core/scene/file_frame.h"
 #include "geometry/export/runtime_export.h"
 #include "geometry/scene/json_document.h"
 
@@ -154,7 +154,7 @@ std::string oneOf(const At& at, std::initializer_list<std::string_view> options)
 
 class Reader {
  public:
-  explicit Reader(const ExportFrame& frame) : frame_(frame) {}
+  explicit Reader(const FileFrame& frame) : frame_(frame) {}
 
   glm::dvec3 point(const At& at) const {
     return checkedFinite(at, worldPointFromFile(frame_, vec3(at)));
@@ -263,7 +263,7 @@ class Reader {
     return meters;
   }
 
-  ExportFrame frame_;
+  FileFrame frame_;
 };
 
 ErrorFigures errorFigures(const At& at) {
@@ -278,7 +278,8 @@ ErrorFigures errorFigures(const At& at) {
 }
 
 EngineSource engineSource(const At& at) {
-  return {string(at.member("candidate")), errorFigures(at.member("error"))};
+  return {string(at.member("candidate")), errorFigures(at.member("error")),
+          boolean(at.member("kept_proxy"))};
 }
 
 template <class T, class Read>
@@ -326,6 +327,7 @@ RuntimeEngines engines(const At& at) {
     p.rotation = quaternionXyzw(g.member("rotation_xyzw"));
     p.size = vec3(g.member("size"));
     p.originOffset = vec3(g.member("origin_offset"));
+    p.blendDistance = finiteNumber(g.member("blend_distance"));
     p.boxProjection = boolean(g.member("box_projection"));
     p.exact = boolean(g.member("exact"));
     return p;
@@ -379,7 +381,7 @@ RuntimeExport runtimeFromDocument(const Json& root) {
   RuntimeExport runtime;
   runtime.fileUp = oneOf(doc.member("up"), {"Y", "Z"}) == "Y" ? UpAxis::Y : UpAxis::Z;
   runtime.metersPerUnit = positiveNumber(doc.member("meters_per_unit"));
-  const Reader reader(ExportFrame{runtime.fileUp, runtime.metersPerUnit});
+  const Reader reader(FileFrame{runtime.fileUp, runtime.metersPerUnit});
   const At probes = doc.member("probes");
   for (std::size_t i = 0; i < array(probes).size(); ++i) {
     runtime.probes.push_back(probe(probes[i], reader));

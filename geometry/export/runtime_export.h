@@ -59,23 +59,28 @@
 //     "engines": {                       // for runtimes that take only a box or a sphere; each
 //                                        // is null when no candidate of that kind was built.
 //                                        // Engine frames and units, see engine_probes.h;
-//                                        // quaternions [x, y, z, w]; each entry has "candidate"
-//                                        // and "error" of the candidate it was made from
+//                                        // quaternions [x, y, z, w]; each entry has "candidate",
+//                                        // "kept_proxy" and "error" of the candidate it was made
+//                                        // from: kept_proxy true when it is the kept proxy
+//                                        // (a box, or a convex within 1 um of one, kept_box.h)
 //       "unity_reflection_probe": { .., "position", "center", "size", "box_projection" },
 //       "unreal_box_reflection_capture": { .., "location", "rotation_xyzw", "scale_3d",
 //                                          "capture_offset", "box_transition_distance" },
 //       "unreal_sphere_reflection_capture": { .., "location", "influence_radius",
 //                                             "capture_offset" },
 //       "godot_reflection_probe": { .., "origin", "rotation_xyzw", "size", "origin_offset",
-//                                   "box_projection", "exact" },
+//                                   "blend_distance", "box_projection", "exact" },
 //       "bevy_light_probe": { .., "translation", "rotation_xyzw", "scale",
 //                             "parallax_correction": "auto", "exact" }
 //     }
 //   } ]
 // }
 //
-// Unity gets the best `aabb` candidate (lowest p95), the other box engines the best `aabb` or
-// `obb`, Unreal's sphere capture the best `sphere` candidate with equal radii. Numbers in the
+// The box engines get the kept proxy when it is a box (Unity: an axis-aligned one); otherwise
+// Unity the best `aabb` candidate (lowest p95), the other box engines the best `aabb` or `obb`;
+// Unreal's sphere capture the best `sphere` candidate with equal radii.
+// box_transition_distance (cm) and blend_distance (m): transitionDistanceMeters (engine_probes.h),
+// the smallest fade of the influence over the axes that fade. Numbers in the
 // file read back to the same world values (shortest round-trip decimals; a file-unit value is
 // rounded to 1e-9 only where that reads back to the same metres); engine numbers are rounded
 // to 1e-9 of the engine's unit. Same input, same bytes.

@@ -1,6 +1,6 @@
 #include "geometry/export/runtime_export.h"
 
-#include "geometry/export/export_frame.h"
+#include "core/scene/file_frame.h"
 #include "geometry/export/unit_transform.h"
 #include "geometry/scene/json_layout.h"
 
@@ -29,7 +29,7 @@ JsonLayoutValue fileNumber(double value, const std::function<double(double)>& to
 
 class FileWriter {
  public:
-  explicit FileWriter(const ExportFrame& frame) : frame_(frame) {}
+  explicit FileWriter(const FileFrame& frame) : frame_(frame) {}
 
   JsonLayoutValue length(double meters) const {
     return fileNumber(fileLengthFromWorld(frame_, meters),
@@ -83,7 +83,7 @@ class FileWriter {
     return fileNumber(fileValue, [&](double v) { return worldLengthFromFile(frame_, v); });
   }
 
-  ExportFrame frame_;
+  FileFrame frame_;
 };
 
 JsonLayoutValue upJson(UpAxis up) { return jsonString(up == UpAxis::Y ? "Y" : "Z"); }
@@ -147,7 +147,9 @@ JsonLayoutValue engineQuat(const glm::dquat& q) {
 }
 
 Members sourceMembers(const EngineSource& source) {
-  return {{"candidate", jsonString(source.candidate)}, {"error", errorJson(source.error)}};
+  return {{"candidate", jsonString(source.candidate)},
+          {"kept_proxy", boolJson(source.keptProxy)},
+          {"error", errorJson(source.error)}};
 }
 
 template <class T>
@@ -194,6 +196,7 @@ JsonLayoutValue enginesJson(const RuntimeEngines& e) {
                                                 {"rotation_xyzw", engineQuat(p.rotation)},
                                                 {"size", engineVec3(p.size)},
                                                 {"origin_offset", engineVec3(p.originOffset)},
+                                                {"blend_distance", jsonCoordinate(p.blendDistance)},
                                                 {"box_projection", boolJson(p.boxProjection)},
                                                 {"exact", boolJson(p.exact)}};
                                       })},
@@ -249,7 +252,7 @@ JsonLayoutValue probeJson(const RuntimeProbe& p, const FileWriter& w) {
 }  // namespace
 
 std::string runtimeExportJson(const RuntimeExport& runtime) {
-  const FileWriter writer(ExportFrame{runtime.fileUp, runtime.metersPerUnit});
+  const FileWriter writer(FileFrame{runtime.fileUp, runtime.metersPerUnit});
   std::vector<JsonLayoutValue> probes;
   for (const RuntimeProbe& probe : runtime.probes) probes.push_back(probeJson(probe, writer));
   const JsonLayoutValue root =

@@ -2,6 +2,7 @@
 
 #include "core/errors/input_error.h"
 #include "core/io/atomic_write.h"
+#include "core/scene/file_frame.h"
 #include "geometry/scene/json_document.h"
 #include "geometry/scene/json_layout.h"
 
@@ -33,67 +34,6 @@ constexpr double kUnitQuaternionTolerance = 1e-3;  // how far from length 1 a ty
 constexpr char kMeshExtensionsText[] = ".glb, .gltf, .obj, .ply or .off";
 constexpr char kLevelExtensionsText[] = ".glb, .gltf, .obj, .ply, .off, .bsp or .pk3";
 constexpr char kFacePlaceholder[] = "{face}";
-
-// ------------------------------------------------------------------------------------------
-// The file's frame. Everything below converts between it and the world frame (Z up, metres).
-
-struct FileFrame {
-  UpAxis up = UpAxis::Z;
-  double metersPerUnit = 1.0;
-};
-
-glm::dvec3 worldPointFromFile(const glm::dvec3& pointInFile, const FileFrame& frame) {
-  const glm::dvec3 scaled = pointInFile * frame.metersPerUnit;
-  return frame.up == UpAxis::Y ? zUpFromYUp(scaled) : scaled;
-}
-
-glm::dvec3 filePointFromWorld(const glm::dvec3& pointMeters, const FileFrame& frame) {
-  const glm::dvec3 inFileAxes = frame.up == UpAxis::Y ? yUpFromZUp(pointMeters) : pointMeters;
-  return inFileAxes / frame.metersPerUnit;
-}
-
-// Unit directions (plane normals): axes only, never scaled.
-glm::dvec3 worldDirectionFromFile(const glm::dvec3& directionInFile, const FileFrame& frame) {
-  return frame.up == UpAxis::Y ? zUpFromYUp(directionInFile) : directionInFile;
-}
-
-glm::dvec3 fileDirectionFromWorld(const glm::dvec3& directionWorld, const FileFrame& frame) {
-  return frame.up == UpAxis::Y ? yUpFromZUp(directionWorld) : directionWorld;
-}
-
-// Rotations taking a box's own frame to the file's frame convert by conjugation
-// (world_frame.h), which turns the box's own frame along with the file's: an axis-aligned
-// box keeps the identity rotation.
-glm::dquat worldRotationFromFile(const glm::dquat& rotationInFile, const FileFrame& frame) {
-  return frame.up == UpAxis::Y ? zUpFromYUp(rotationInFile) : rotationInFile;
-}
-
-glm::dquat fileRotationFromWorld(const glm::dquat& rotationWorld, const FileFrame& frame) {
-  return frame.up == UpAxis::Y ? yUpFromZUp(rotationWorld) : rotationWorld;
-}
-
-// Half-extents lie along the box's own axes, and conjugating its rotation turned those too:
-// a Y-up box's own y axis (its height) is its own z axis in the world. So Y-up half-extents
-// (x, y, z) are (x, z, y) in the world, the absolute value of the converted vector: "scale
-// only" would give a Y-up box of height 2 and depth 3 a world height of 3.
-glm::dvec3 worldHalfExtentsFromFile(const glm::dvec3& halfExtentsInFile, const FileFrame& frame) {
-  const glm::dvec3 scaled = halfExtentsInFile * frame.metersPerUnit;
-  return frame.up == UpAxis::Y ? glm::dvec3(scaled.x, scaled.z, scaled.y) : scaled;
-}
-
-glm::dvec3 fileHalfExtentsFromWorld(const glm::dvec3& halfExtentsMeters, const FileFrame& frame) {
-  const glm::dvec3& h = halfExtentsMeters;
-  const glm::dvec3 inFileAxes = frame.up == UpAxis::Y ? glm::dvec3(h.x, h.z, h.y) : h;
-  return inFileAxes / frame.metersPerUnit;
-}
-
-double worldLengthFromFile(double lengthInFile, const FileFrame& frame) {
-  return lengthInFile * frame.metersPerUnit;
-}
-
-double fileLengthFromWorld(double lengthMeters, const FileFrame& frame) {
-  return lengthMeters / frame.metersPerUnit;
-}
 
 // ------------------------------------------------------------------------------------------
 // Shared by reading and writing.
@@ -357,7 +297,7 @@ glm::dvec3 pointMember(const Json& object, const std::string& path, const char* 
                        const FileFrame& frame) {
   const std::string memberPath = jsonMemberPath(path, name);
   const Json& value = requiredMember(object, path, name);
-  const glm::dvec3 meters = worldPointFromFile(finiteVec3(value, memberPath), frame);
+  const glm::dvec3 meters = worldPointFromFile(frame, finiteVec3(value, memberPath));
   if (!isFinite(meters)) failOverflow(memberPath, value);
   return meters;
 }
@@ -366,7 +306,7 @@ glm::dvec3 halfExtentsMember(const Json& object, const std::string& path, const 
                              const FileFrame& frame) {
   const std::string memberPath = jsonMemberPath(path, name);
   const Json& value = requiredMember(object, path, name);
-  const glm::dvec3 meters = worldHalfExtentsFromFile(positiveVec3(value, memberPath), frame);
+  const glm::dvec3 meters = worldHalfExtentsFromFile(frame, positiveVec3(value, memberPath));
   if (!isFinite(meters)) failOverflow(memberPath, value);
   return meters;
 }
@@ -375,7 +315,7 @@ double lengthMember(const Json& object, const std::string& path, const char* nam
                     const FileFrame& frame) {
   const std::string memberPath = jsonMemberPath(path, name);
   const Json& value = requiredMember(object, path, name);
-  const double meters = worldLengthFromFile(positiveNumber(value, memberPath), frame);
+  const double meters = worldLengthFromFile(frame, positiveNumber(value, memberPath));
   if (!std::isfinite(meters)) failOverflow(memberPath, value);
   return meters;
 }
@@ -454,7 +394,7 @@ BoxInfluence readBoxInfluence(const Json& value, const std::string& path, const 
   if (const Json* rotation = optionalMember(value, "rotation")) {
     boxToFile = unitQuaternion(*rotation, jsonMemberPath(path, "rotation"));
   }
-  box.worldFromBox = worldRotationFromFile(boxToFile, frame);
+  box.worldFromBox = worldRotationFromFile(frame, boxToFile);
   box.innerHalfExtentsMeters = box.halfExtentsMeters;  // no fade unless the file says so
   if (const Json* inner = optionalMember(value, "inner_half_extents")) {
     const auto numbers = finiteNumbers<3>(*inner);
@@ -468,7 +408,7 @@ BoxInfluence readBoxInfluence(const Json& value, const std::string& path, const 
                        describeJson(halfExtentsJson),
                    *inner);
     }
-    box.innerHalfExtentsMeters = worldHalfExtentsFromFile(toVec3(*numbers), frame);
+    box.innerHalfExtentsMeters = worldHalfExtentsFromFile(frame, toVec3(*numbers));
   }
   return box;
 }
@@ -487,7 +427,7 @@ SphereInfluence readSphereInfluence(const Json& value, const std::string& path,
       failExpected(jsonMemberPath(path, "inner_radius"),
                    "a positive number at most radius " + describeJson(radiusJson), *inner);
     }
-    sphere.innerRadiusMeters = worldLengthFromFile(inner->get<double>(), frame);
+    sphere.innerRadiusMeters = worldLengthFromFile(frame, inner->get<double>());
   }
   return sphere;
 }
@@ -517,8 +457,8 @@ ProxySpec readProxy(const Json& value, const std::string& path, const FileFrame&
     AuthoredObb obb{pointMember(value, path, "center", frame),
                     halfExtentsMember(value, path, "half_extents", frame)};
     obb.worldFromBox = worldRotationFromFile(
-        unitQuaternion(requiredMember(value, path, "rotation"), jsonMemberPath(path, "rotation")),
-        frame);
+        frame,
+        unitQuaternion(requiredMember(value, path, "rotation"), jsonMemberPath(path, "rotation")));
     return obb;
   }
   if (kind == "sphere") {
@@ -562,9 +502,8 @@ std::vector<ReflectionPlane> readReflectionPlanes(const Json& value, const std::
     ReflectionPlane plane;
     plane.pointMeters = pointMember(planeJson, planePath, "point", frame);
     plane.normal =
-        worldDirectionFromFile(unitDirection(requiredMember(planeJson, planePath, "normal"),
-                                             jsonMemberPath(planePath, "normal")),
-                               frame);
+        worldDirectionFromFile(frame, unitDirection(requiredMember(planeJson, planePath, "normal"),
+                                                    jsonMemberPath(planePath, "normal")));
     planes.push_back(plane);
   }
   return planes;
@@ -729,22 +668,22 @@ JsonLayoutValue levelMeshJson(const LevelMeshRef& mesh, UpAxis sceneUp) {
 
 JsonLayoutValue influenceJson(const InfluenceVolume& influence, const FileFrame& frame) {
   if (const auto* box = std::get_if<BoxInfluence>(&influence)) {
-    const JsonLayoutValue outer = vec3Json(fileHalfExtentsFromWorld(box->halfExtentsMeters, frame));
+    const JsonLayoutValue outer = vec3Json(fileHalfExtentsFromWorld(frame, box->halfExtentsMeters));
     const JsonLayoutValue inner =
-        vec3Json(fileHalfExtentsFromWorld(box->innerHalfExtentsMeters, frame));
+        vec3Json(fileHalfExtentsFromWorld(frame, box->innerHalfExtentsMeters));
     Members members{{"kind", jsonString("box")},
-                    {"center", vec3Json(filePointFromWorld(box->centerMeters, frame))},
+                    {"center", vec3Json(filePointFromWorld(frame, box->centerMeters))},
                     {"half_extents", outer},
-                    {"rotation", rotationJson(fileRotationFromWorld(box->worldFromBox, frame))}};
+                    {"rotation", rotationJson(fileRotationFromWorld(frame, box->worldFromBox))}};
     if (!sameText(inner, outer)) members.emplace_back("inner_half_extents", inner);
     return jsonObject(std::move(members));
   }
   const auto& sphere = std::get<SphereInfluence>(influence);
-  const JsonLayoutValue outer = jsonCoordinate(fileLengthFromWorld(sphere.radiusMeters, frame));
+  const JsonLayoutValue outer = jsonCoordinate(fileLengthFromWorld(frame, sphere.radiusMeters));
   const JsonLayoutValue inner =
-      jsonCoordinate(fileLengthFromWorld(sphere.innerRadiusMeters, frame));
+      jsonCoordinate(fileLengthFromWorld(frame, sphere.innerRadiusMeters));
   Members members{{"kind", jsonString("sphere")},
-                  {"center", vec3Json(filePointFromWorld(sphere.centerMeters, frame))},
+                  {"center", vec3Json(filePointFromWorld(frame, sphere.centerMeters))},
                   {"radius", outer}};
   if (!sameText(inner, outer)) members.emplace_back("inner_radius", inner);
   return jsonObject(std::move(members));
@@ -759,10 +698,10 @@ Overloaded(Handlers...) -> Overloaded<Handlers...>;
 
 JsonLayoutValue proxyJson(const ProxySpec& proxy, const FileFrame& frame) {
   const auto center = [&](const glm::dvec3& centerMeters) {
-    return vec3Json(filePointFromWorld(centerMeters, frame));
+    return vec3Json(filePointFromWorld(frame, centerMeters));
   };
   const auto halfExtents = [&](const glm::dvec3& halfExtentsMeters) {
-    return vec3Json(fileHalfExtentsFromWorld(halfExtentsMeters, frame));
+    return vec3Json(fileHalfExtentsFromWorld(frame, halfExtentsMeters));
   };
   return std::visit(
       Overloaded{
@@ -778,13 +717,13 @@ JsonLayoutValue proxyJson(const ProxySpec& proxy, const FileFrame& frame) {
                 {{"kind", jsonString("obb")},
                  {"center", center(obb.centerMeters)},
                  {"half_extents", halfExtents(obb.halfExtentsMeters)},
-                 {"rotation", rotationJson(fileRotationFromWorld(obb.worldFromBox, frame))}});
+                 {"rotation", rotationJson(fileRotationFromWorld(frame, obb.worldFromBox))}});
           },
           [&](const AuthoredSphere& sphere) {
             return jsonObject(
                 {{"kind", jsonString("sphere")},
                  {"center", center(sphere.centerMeters)},
-                 {"radius", jsonCoordinate(fileLengthFromWorld(sphere.radiusMeters, frame))}});
+                 {"radius", jsonCoordinate(fileLengthFromWorld(frame, sphere.radiusMeters))}});
           },
           [&](const AuthoredConvexMesh& convex) {
             return jsonObject({{"kind", jsonString("convex")},
@@ -799,15 +738,15 @@ JsonLayoutValue reflectionPlanesJson(const std::vector<ReflectionPlane>& planes,
   std::vector<JsonLayoutValue> elements;
   for (const ReflectionPlane& plane : planes) {
     elements.push_back(
-        jsonObject({{"point", vec3Json(filePointFromWorld(plane.pointMeters, frame))},
-                    {"normal", directionJson(fileDirectionFromWorld(plane.normal, frame))}}));
+        jsonObject({{"point", vec3Json(filePointFromWorld(frame, plane.pointMeters))},
+                    {"normal", directionJson(fileDirectionFromWorld(frame, plane.normal))}}));
   }
   return jsonArray(std::move(elements));
 }
 
 JsonLayoutValue probeJson(const Probe& probe, const FileFrame& frame) {
   Members members{{"name", jsonString(probe.name)},
-                  {"capture", vec3Json(filePointFromWorld(probe.captureMeters, frame))},
+                  {"capture", vec3Json(filePointFromWorld(frame, probe.captureMeters))},
                   {"influence", influenceJson(probe.influence, frame)},
                   {"proxy", proxyJson(probe.proxy, frame)}};
   if (probe.cubemap) members.emplace_back("cubemap", jsonString(*probe.cubemap));

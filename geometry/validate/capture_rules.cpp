@@ -1,6 +1,7 @@
 // The rules about one probe's own pieces: its authored mesh, and where its capture point is.
 
 #include "geometry/build/authored_proxy_shape.h"
+#include "geometry/raycast/capture_depth_cube.h"
 #include "geometry/validate/proxy_mesh_checks.h"
 #include "geometry/validate/validation_rules.h"
 
@@ -98,6 +99,41 @@ void checkCaptureInsideInfluence(const Probe& probe, std::vector<ValidationFindi
                                "move the capture point into the influence volume, or the "
                                "volume over it (build and export refuse this probe until "
                                "then)"));
+}
+
+void checkCaptureInsideLevel(const LevelRayCaster& level, const Probe& probe,
+                             std::vector<ValidationFinding>& out) {
+  // A capture point inside the level sees the front of the level's surfaces (wound towards the
+  // side a player sees) nearly everywhere; outside the level, or inside a wall, it sees the
+  // void or the backs of surfaces. More than half of the directions so: the build's own
+  // threshold for "sees no level" (build_probe_proxy.cpp), so `build` and `validate` agree.
+  constexpr int kFaceSize = 32;  // 6 x 32 x 32 rays: shares to 0.02%
+  constexpr double kLimit = 0.5;
+  const std::vector<Ray> rays = depthCubeRays(probe.captureMeters, kFaceSize);
+  const std::vector<RayHit> hits = castDepthCubeRays(level, probe.captureMeters, kFaceSize);
+  std::size_t unseen = 0;
+  for (std::size_t i = 0; i < hits.size(); ++i) {
+    if (!hits[i].hit() ||
+        glm::dot(glm::dvec3(hits[i].geometricNormal), glm::dvec3(rays[i].direction)) > 0.0) {
+      ++unseen;
+    }
+  }
+  const double share = static_cast<double>(unseen) / static_cast<double>(hits.size());
+  if (share <= kLimit) return;
+  ValidationFinding f;
+  f.probe = probe.name;
+  f.rule = "capture_outside_level";
+  f.severity = "warning";
+  f.value = share;
+  f.limit = kLimit;
+  char text[64];
+  std::snprintf(text, sizeof text, "%.0f%%", 100.0 * share);
+  f.message = "probe '" + probe.name + "' captures at " + formatPoint(probe.captureMeters) + ": " +
+              text +
+              " of its directions see no level or the back of a surface; it is "
+              "outside the level or inside a wall";
+  f.hint = "move the capture point into the room it serves";
+  out.push_back(std::move(f));
 }
 
 }  // namespace probeproxy

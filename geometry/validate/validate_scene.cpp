@@ -46,6 +46,7 @@ std::vector<ValidationFinding> validateScene(const Scene& scene, const LevelRayC
     if (authored && !hasError(findings, first)) checkCaptureInsideProxy(probe, *authored, findings);
     checkCaptureInsideInfluence(probe, findings);
     if (hasError(findings, first)) continue;
+    checkCaptureInsideLevel(level, probe, findings);
     if (authored) checkProxyError(level, probe, *authored, options, findings);
     checkInfluenceLeak(level, probe, floor, options, findings);
     if (authored) checkReflectedCameras(level, probe, *authored, options, findings);

@@ -10,6 +10,8 @@
 //   capture_outside_proxy       error    metres the capture point lies outside its authored
 //                                        proxy (signed, negative inside) / 0
 //   capture_outside_influence   error    metres outside its influence volume's outer range / 0
+//   capture_outside_level       warning  share of the capture point's directions that see no
+//                                        level or the back of a surface / 0.5
 //   proxy_error_over_tolerance  warning  the authored proxy's mirror_floor p95 angular error,
 //                                        degrees / tolerance; the message gives the generated
 //                                        proxy's p95 beside it

@@ -26,6 +26,8 @@ void checkAuthoredMesh(const Scene& scene, const Probe& probe, std::vector<Valid
 void checkCaptureInsideProxy(const Probe& probe, const ProxyShape& authored,
                              std::vector<ValidationFinding>& out);
 void checkCaptureInsideInfluence(const Probe& probe, std::vector<ValidationFinding>& out);
+void checkCaptureInsideLevel(const LevelRayCaster& level, const Probe& probe,
+                             std::vector<ValidationFinding>& out);
 void checkProxyError(const LevelRayCaster& level, const Probe& probe, const ProxyShape& authored,
                      const ValidateOptions& options, std::vector<ValidationFinding>& out);
 void checkInfluenceLeak(const LevelRayCaster& level, const Probe& probe,

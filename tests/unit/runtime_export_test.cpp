@@ -5,7 +5,9 @@
 
 #include "geometry/export/runtime_export.h"
 #include "core/errors/input_error.h"
+#include "core/scene/file_frame.h"
 #include "geometry/export/engine_probes.h"
+#include "geometry/export/kept_box.h"
 #include "geometry/export/unit_transform.h"
 #include "geometry/level/load_level.h"
 #include "test_files.h"
@@ -240,6 +242,7 @@ void expectEnginesClose(const RuntimeEngines& a, const RuntimeEngines& b) {
     expectClose(a.unrealBox->scale3D, b.unrealBox->scale3D, kEngine);
     expectClose(a.unrealBox->captureOffset, b.unrealBox->captureOffset, kEngine);
     EXPECT_CLOSE(a.unrealBox->boxTransitionDistance, b.unrealBox->boxTransitionDistance, kEngine);
+    EXPECT_EQ(a.unrealBox->source.keptProxy, b.unrealBox->source.keptProxy);
   }
   if (a.unrealSphere) {
     expectClose(a.unrealSphere->location, b.unrealSphere->location, kEngine);
@@ -251,6 +254,8 @@ void expectEnginesClose(const RuntimeEngines& a, const RuntimeEngines& b) {
     expectClose(a.godot->rotation, b.godot->rotation, kEngine);
     expectClose(a.godot->size, b.godot->size, kEngine);
     expectClose(a.godot->originOffset, b.godot->originOffset, kEngine);
+    EXPECT_CLOSE(a.godot->blendDistance, b.godot->blendDistance, kEngine);
+    EXPECT_EQ(a.godot->source.keptProxy, b.godot->source.keptProxy);
     EXPECT_EQ(a.godot->exact, b.godot->exact);
   }
   if (a.bevy) {
@@ -441,6 +446,40 @@ TEST_F(RuntimeExport, EllipsoidUnitTransformAndIcosphereWinding) {
 // Engines, for known boxes. The room box: centre (0, 0, 1.5), half-extents (3, 2, 1.5),
 // capture (1, 0.5, 1.2): box centre - capture = (-1, -0.5, 0.3) m.
 
+// Issue 16: one frame conversion for the scene file, proxies.json and the engines
+// (core/scene/file_frame.h). Each frame's rotation conversion is R' = A R A^T, exact: checked
+// against the matrix product for a turned box, in a right-handed and a left-handed frame.
+TEST_F(RuntimeExport, OneFrameConversionForFilesAndEngines) {
+  const glm::dquat q = glm::normalize(glm::angleAxis(0.7, glm::normalize(glm::dvec3(1, 2, 3))));
+  for (const FileFrame& frame : {FileFrame(UpAxis::Y, 0.01), FileFrame(UpAxis::Z, 2.0), gltfFrame(),
+                                 unityFrame(), unrealFrame()}) {
+    // A: file from world, as a matrix, from how points convert.
+    glm::dmat3 a(0.0);
+    for (int c = 0; c < 3; ++c) {
+      glm::dvec3 e(0.0);
+      e[c] = 1.0;
+      a[c] = fileDirectionFromWorld(frame, e);
+    }
+    const double det = glm::determinant(a);
+    EXPECT_EQ(std::abs(det), 1.0);
+    EXPECT_EQ(det, frame.determinant);
+    const glm::dmat3 expected = a * glm::mat3_cast(q) * glm::transpose(a);
+    const glm::dmat3 got = glm::mat3_cast(fileRotationFromWorld(frame, q));
+    for (int c = 0; c < 3; ++c) expectClose(got[c], expected[c], 1e-15);
+    // Exact round trips: the axes are a copy and a sign; the unit divides and multiplies.
+    const glm::dvec3 p(1.25, -3.5, 0.75);
+    EXPECT_EQ(worldDirectionFromFile(frame, fileDirectionFromWorld(frame, p)), p);
+    EXPECT_EQ(worldRotationFromFile(frame, fileRotationFromWorld(frame, q)), q);
+    // Half-extents are permuted, never negated.
+    const glm::dvec3 h = fileHalfExtentsFromWorld(frame, glm::dvec3(1, 2, 3));
+    EXPECT_TRUE(glm::all(glm::greaterThan(h, glm::dvec3(0.0))));
+  }
+  // The frames the engines document: Unity (x, y, z) = world (-x, z, -y); Unreal (x, -y, z) cm.
+  expectClose(filePointFromWorld(unityFrame(), {1, 2, 3}), {-1, 3, -2}, 0.0);
+  expectClose(filePointFromWorld(unrealFrame(), {1, 2, 3}), {100, -200, 300}, 1e-12);
+  expectClose(filePointFromWorld(gltfFrame(), {1, 2, 3}), {1, 3, -2}, 0.0);
+}
+
 TEST_F(RuntimeExport, UnityBoxIsLeftHandedYUpRelativeToTheProbe) {
   const UnityReflectionProbe u = unityReflectionProbe(kRoomBox, kCapture);
   // Unity (x, y, z) = world (-x, z, -y).
@@ -483,7 +522,9 @@ TEST_F(RuntimeExport, UnrealSphereTakesTheInfluenceRadiusInCentimetres) {
 }
 
 TEST_F(RuntimeExport, GodotBoxIsYUpFullSizeWithALocalOriginOffset) {
-  const GodotReflectionProbe g = godotReflectionProbe(kRoomBox, kCapture);
+  const InfluenceVolume influence =
+      BoxInfluence{{0, 0, 1.5}, {3.0, 2.0, 1.5}, quat(1, 0, 0, 0), {1.2, 2.0, 1.5}};
+  const GodotReflectionProbe g = godotReflectionProbe(kRoomBox, kCapture, influence);
   // Godot (x, y, z) = world (x, z, -y).
   expectClose(g.origin, {0.0, 1.5, 0.0}, 0.0);
   expectClose(g.size, {6.0, 3.0, 4.0}, 0.0);
@@ -491,18 +532,19 @@ TEST_F(RuntimeExport, GodotBoxIsYUpFullSizeWithALocalOriginOffset) {
   expectClose(g.rotation, quat(1, 0, 0, 0), 0.0);
   EXPECT_TRUE(g.boxProjection);
   EXPECT_TRUE(g.exact);
+  EXPECT_DOUBLE_EQ(g.blendDistance, 1.8);  // the influence fades along x only: 3 - 1.2 m
 
   // Turned 90 degrees about world +Z = 90 degrees about Godot +Y; the capture point 0.5 m
   // along world +x is 0.5 m along the node's own +z.
   const BoxShape turned{{2.0, -1.0, 1.0}, {1.0, 2.0, 0.5}, aboutZ(90.0)};
-  const GodotReflectionProbe t = godotReflectionProbe(turned, {2.5, -1.0, 1.0});
+  const GodotReflectionProbe t = godotReflectionProbe(turned, {2.5, -1.0, 1.0}, influence);
   expectClose(t.origin, {2.0, 1.0, 1.0}, 0.0);
   expectClose(t.size, {2.0, 1.0, 4.0}, 0.0);
   expectClose(t.rotation, quat(kHalfSqrt2, 0, kHalfSqrt2, 0), 1e-15);
   expectClose(t.originOffset, {0.0, 0.0, 0.5}, 1e-15);
   EXPECT_TRUE(t.exact);
   // Godot keeps origin_offset 1 cm inside the box: a capture point on a face is not exact.
-  EXPECT_FALSE(godotReflectionProbe(kRoomBox, {3.0, 0.0, 1.5}).exact);
+  EXPECT_FALSE(godotReflectionProbe(kRoomBox, {3.0, 0.0, 1.5}, influence).exact);
 }
 
 TEST_F(RuntimeExport, BevyScalesAUnitCubeAndNeedsTheCaptureAtItsCentre) {
@@ -513,18 +555,106 @@ TEST_F(RuntimeExport, BevyScalesAUnitCubeAndNeedsTheCaptureAtItsCentre) {
   EXPECT_TRUE(bevyLightProbe(kRoomBox, kRoomBox.centerMeters).exact);
 }
 
-TEST_F(RuntimeExport, EnginesTakeTheBestBoxAndUnityTheBestAabb) {
+// Issue 18: the transition distance is the smallest fade over the axes that fade; the old
+// rule (the smallest over all three axes) gave 0, a hard cut, on rooms fading along one axis.
+TEST_F(RuntimeExport, TransitionDistanceIsTheSmallestFadeOverTheAxesThatFade) {
+  const auto box = [](glm::dvec3 inner) {
+    return InfluenceVolume{BoxInfluence{{0, 0, 0}, {5.0, 2.0, 1.5}, quat(1, 0, 0, 0), inner}};
+  };
+  EXPECT_DOUBLE_EQ(transitionDistanceMeters(box({3.55, 2.0, 1.5})), 1.45);  // l_room's arm_x
+  EXPECT_DOUBLE_EQ(transitionDistanceMeters(box({4.0, 1.5, 1.5})), 0.5);    // x 1, y 0.5
+  EXPECT_EQ(transitionDistanceMeters(box({5.0, 2.0, 1.5})), 0.0);           // no fade at all
+  EXPECT_DOUBLE_EQ(transitionDistanceMeters(SphereInfluence{{0, 0, 0}, 3.0, 2.25}), 0.75);
+  const UnrealBoxReflectionCapture u =
+      unrealBoxReflectionCapture(kRoomBox, kCapture, box({3.55, 2.0, 1.5}));
+  EXPECT_DOUBLE_EQ(u.boxTransitionDistance, 145.0);  // cm
+}
+
+// A box given as six planes is found again, to the identity rotation when axis-aligned.
+TEST_F(RuntimeExport, KeptBoxFindsTheBoxInSixPlanes) {
+  const std::optional<BoxShape> aligned = boxOfConvex(convexFromBox(kRoomBox));
+  ASSERT_TRUE(aligned);
+  EXPECT_EQ(methodId(ProxyShape(*aligned)), "aabb");
+  expectClose(aligned->centerMeters, kRoomBox.centerMeters, 1e-15);
+  expectClose(aligned->halfExtentsMeters, kRoomBox.halfExtentsMeters, 1e-15);
+
+  const BoxShape turned{{2.0, -1.0, 1.0}, {1.0, 2.0, 0.5}, aboutZ(30.0)};
+  const std::optional<BoxShape> oriented = boxOfConvex(convexFromBox(turned));
+  ASSERT_TRUE(oriented);
+  EXPECT_EQ(methodId(ProxyShape(*oriented)), "obb");
+  const std::vector<glm::dvec3> a = convexFromBox(turned).verticesMeters;
+  const std::vector<glm::dvec3> b = convexFromBox(*oriented).verticesMeters;
+  for (const glm::dvec3& p : a) {
+    double nearest = INFINITY;
+    for (const glm::dvec3& q : b) nearest = std::min(nearest, glm::distance(p, q));
+    EXPECT_LE(nearest, 1e-12);
+  }
+  // Shuffled planes, one pair's offsets moved: still a box, the new one.
+  ConvexProxy shuffled = convexFromBox(kRoomBox);
+  std::reverse(shuffled.planes.begin(), shuffled.planes.end());
+  shuffled.planes[0].offsetMeters += 0.25;
+  const std::optional<BoxShape> moved = boxOfConvex(shuffled);
+  ASSERT_TRUE(moved);
+  EXPECT_NEAR(moved->halfExtentsMeters.z, 1.625, 1e-12);
+
+  // Not boxes: eight planes; six with one wall tilted by 1e-4 rad (corners move 0.2 mm,
+  // beyond the 1 um tolerance); a wedge whose pairs are not opposite.
+  EXPECT_FALSE(boxOfConvex(chamferedRoom()));
+  ConvexProxy tilted = convexFromBox(kRoomBox);
+  tilted.planes[0].normal = glm::normalize(glm::dvec3(1.0, 1e-4, 0.0));
+  EXPECT_FALSE(boxOfConvex(tilted));
+  ConvexProxy wedge = convexFromBox(kRoomBox);
+  wedge.planes[4].normal = glm::normalize(glm::dvec3(0.0, 1.0, 1.0));
+  EXPECT_FALSE(boxOfConvex(wedge));
+  EXPECT_FALSE(keptBox(SphereShape{}));
+  EXPECT_TRUE(keptBox(kRoomBox));
+}
+
+TEST_F(RuntimeExport, EnginesTakeTheKeptBoxElseTheBestBoxAndUnityAnAabb) {
   const Runtime runtime = makeRuntimeExport(roomScene(folder_, UpAxis::Z, 1.0), roomBuilds());
-  const RuntimeEngines& e = runtime.probes[0].engines;  // whatever was kept
+  // Kept infinite: no box to keep, so the best of each kind, marked as not the kept proxy.
+  const RuntimeEngines& e = runtime.probes[0].engines;
   ASSERT_TRUE(e.unity && e.unrealBox && e.unrealSphere && e.godot && e.bevy);
   EXPECT_EQ(e.unity->source.candidate, "aabb");  // Unity's boxes are axis-aligned
   EXPECT_EQ(e.unity->source.error.p95Deg, 0.5);
+  EXPECT_FALSE(e.unity->source.keptProxy);
   EXPECT_EQ(e.unrealBox->source.candidate, "obb");  // p95 0.4 < 0.5
+  EXPECT_FALSE(e.unrealBox->source.keptProxy);
   EXPECT_EQ(e.godot->source.candidate, "obb");
   EXPECT_EQ(e.bevy->source.candidate, "obb");
   EXPECT_EQ(e.unrealSphere->source.candidate, "sphere");
   // The obb turned 30 degrees about Z: Godot turns it 30 degrees about +Y.
   expectClose(e.godot->rotation, glm::angleAxis(glm::radians(30.0), glm::dvec3(0, 1, 0)), 1e-15);
+
+  // Kept aabb: every box engine takes it, though the obb's p95 is lower.
+  const RuntimeEngines& aabb = runtime.probes[3].engines;
+  for (const EngineSource* s :
+       {&aabb.unity->source, &aabb.unrealBox->source, &aabb.godot->source, &aabb.bevy->source}) {
+    EXPECT_EQ(s->candidate, "aabb");
+    EXPECT_TRUE(s->keptProxy);
+  }
+  // Kept obb: Unity cannot turn a box, so it keeps the best aabb and says it is not the kept.
+  const RuntimeEngines& obb = runtime.probes[4].engines;
+  EXPECT_EQ(obb.unrealBox->source.candidate, "obb");
+  EXPECT_TRUE(obb.unrealBox->source.keptProxy);
+  EXPECT_EQ(obb.unity->source.candidate, "aabb");
+  EXPECT_FALSE(obb.unity->source.keptProxy);
+  // Kept convex_8 (not a box): as before.
+  EXPECT_EQ(runtime.probes[5].engines.unrealBox->source.candidate, "obb");
+  EXPECT_FALSE(runtime.probes[5].engines.unrealBox->source.keptProxy);
+
+  // A kept convex that is the room box: the engines get that box with its error.
+  std::vector<ProbeProxyBuild> convexBuilds = roomBuilds();
+  convexBuilds[5].candidates[5] = {
+      "convex_6", convexFromBox(kRoomBox), figures(0.0, 1e-5, 1e-4, 0.0, 4096), {}, 0.5};
+  const Runtime convex = makeRuntimeExport(roomScene(folder_, UpAxis::Z, 1.0), convexBuilds);
+  const RuntimeEngines& c6 = convex.probes[5].engines;
+  EXPECT_EQ(c6.unrealBox->source.candidate, "convex_6");
+  EXPECT_TRUE(c6.unrealBox->source.keptProxy);
+  EXPECT_EQ(c6.unrealBox->source.error.p95Deg, 1e-5);
+  expectClose(c6.unrealBox->scale3D, {300.0, 200.0, 150.0}, 1e-12);
+  EXPECT_EQ(c6.unity->source.candidate, "convex_6");
+  expectClose(c6.unity->size, {6.0, 3.0, 4.0}, 1e-14);
 
   // Without boxes or spheres, the engines have nothing.
   std::vector<ProbeProxyBuild> builds = roomBuilds();

@@ -1,6 +1,6 @@
 # Draws every probe's volumes in the 3D view (a gpu draw handler, so nothing is added to the
 # scene): the influence's outer range solid-coloured, its inner range dimmer, an authored box
-# or sphere proxy in orange. World frame; boxes turn with the probe object.
+# or sphere proxy in orange. World frame; the influence follows the probe's world matrix.
 
 import math
 
@@ -44,14 +44,15 @@ def _draw():
     outer, inner, proxy = [], [], []
     for obj in scene_io.probes(context.scene):
         s = obj.probeproxy
-        center = obj.matrix_world.translation + Vector(s.influence_offset)
+        inf = scene_io.influence_world(obj)  # what the library gets, in Blender units
+        center = Vector(inf["center"])
         if s.influence_shape == "BOX":
-            rotation = obj.matrix_world.to_quaternion()
-            outer += _box_lines(center, s.half_extents, rotation)
-            inner += _box_lines(center, s.inner_half_extents, rotation)
+            rotation = Quaternion(inf["rotation"])
+            outer += _box_lines(center, inf["half_extents"], rotation)
+            inner += _box_lines(center, inf["inner_half_extents"], rotation)
         else:
-            outer += _sphere_lines(center, s.radius)
-            inner += _sphere_lines(center, s.inner_radius)
+            outer += _sphere_lines(center, inf["radius"])
+            inner += _sphere_lines(center, inf["inner_radius"])
         if s.proxy_mode == "BOX":
             proxy += _box_lines(Vector(s.proxy_center), s.proxy_half_extents,
                                 Quaternion(s.proxy_rotation))

@@ -46,8 +46,17 @@ def _build_options(settings):
 
 
 def _level_objects(context):
-    chosen = [o for o in context.selected_objects if scene_io.is_level_object(o)]
-    return chosen or [o for o in context.scene.objects if scene_io.is_level_object(o)]
+    """The level objects to work on: the whole level, unless the artist asked in the panel for
+    the selected objects only (Level: Selected). Never narrowed silently by a stale selection."""
+    if context.scene.probeproxy.level_scope == "SELECTED":
+        return [o for o in context.selected_objects if scene_io.is_level_object(o)]
+    return [o for o in context.scene.objects if scene_io.is_level_object(o)]
+
+
+def _no_level_message(context):
+    if context.scene.probeproxy.level_scope == "SELECTED":
+        return "no level: Level is set to Selected and no level mesh is selected"
+    return "no level: the scene has no mesh objects besides probes and proxies"
 
 
 def _with_progress(context, total, work):
@@ -60,6 +69,8 @@ def _with_progress(context, total, work):
 
 
 def _proxy_mesh_object(scene, probe, result):
+    """The kept proxy as a mesh object (Blender units), with a fingerprint of it as made, so that
+    a hand edit is found later (_take_edited_proxies)."""
     name = probe.name + "_proxy"
     old = probe.probeproxy.proxy_object
     if old is not None:
@@ -71,8 +82,10 @@ def _proxy_mesh_object(scene, probe, result):
     if not data["vertices"]:
         probe.probeproxy.proxy_object = None
         return None
+    k = scene_io.meters_per_bu(scene)
     mesh = bpy.data.meshes.new(name)
-    mesh.from_pydata([tuple(v) for v in data["vertices"]], [], [tuple(t) for t in data["triangles"]])
+    mesh.from_pydata([tuple(scene_io.to_bu(list(v), k)) for v in data["vertices"]], [],
+                     [tuple(t) for t in data["triangles"]])
     mesh.update()
     obj = bpy.data.objects.new(name, mesh)
     obj.probeproxy.is_proxy = True
@@ -81,7 +94,62 @@ def _proxy_mesh_object(scene, probe, result):
     obj["probeproxy_probe"] = probe.name
     _collection(scene, "Proxies").objects.link(obj)
     probe.probeproxy.proxy_object = obj
+    probe.probeproxy.proxy_fingerprint = scene_io.mesh_fingerprint(obj)
     return obj
+
+
+EDITED_HEADER = "# probeproxy: the hand-edited proxy of probe "
+
+
+def _write_edited_proxy(path, obj, meters_per_unit, probe_name):
+    """Writes the proxy object's world-space triangles as an OBJ in metres (Z up, the scene
+    dict's frame). Refuses to overwrite a file that is not one of these."""
+    if os.path.exists(path):
+        with open(path, errors="replace") as f:
+            if not f.readline().startswith(EDITED_HEADER):
+                raise native.module.InputError(
+                    "%s: exists and is not a probeproxy hand-edited proxy; not overwritten" % path)
+    m = obj.matrix_world
+    lines = [EDITED_HEADER + probe_name + "\n"]
+    for v in obj.data.vertices:
+        p = m @ v.co
+        lines.append("v %r %r %r\n" % tuple(float(c) * meters_per_unit for c in p))
+    for poly in obj.data.polygons:
+        lines.append("f " + " ".join(str(i + 1) for i in poly.vertices) + "\n")
+    tmp = path + ".tmp"
+    with open(tmp, "w") as f:
+        f.writelines(lines)
+    os.replace(tmp, path)
+
+
+def _take_edited_proxies(operator, context):
+    """A generated proxy the artist edited is the artist's from then on: its mesh is written
+    beside the scene (<probe>_proxy_edited.obj, metres) and the probe's proxy becomes that
+    authored convex mesh, measured and validated like any authored proxy, so no operator
+    throws the edit away. Returns the probes taken."""
+    scene = context.scene
+    k = scene_io.meters_per_bu(scene)
+    folder = os.path.dirname(scene_io.scene_anchor(scene))
+    taken = []
+    for probe in scene_io.probes(scene):
+        s = probe.probeproxy
+        obj = s.proxy_object
+        if obj is None or not s.proxy_fingerprint:
+            continue
+        if obj.mode == "EDIT":
+            obj.update_from_editmode()
+        if scene_io.mesh_fingerprint(obj) == s.proxy_fingerprint:
+            continue
+        path = os.path.join(folder, probe.name + "_proxy_edited.obj")
+        _write_edited_proxy(path, obj, k, probe.name)
+        s.proxy_mode = "MESH"
+        s.proxy_mesh = os.path.basename(path)  # relative to the scene file, as the file has it
+        s.proxy_fingerprint = scene_io.mesh_fingerprint(obj)
+        taken.append(probe.name)
+    if taken:
+        operator.report({"INFO"}, "hand-edited proxies kept as authored meshes: " +
+                        ", ".join(taken))
+    return taken
 
 
 def _probes_and_level(operator, context):
@@ -92,14 +160,34 @@ def _probes_and_level(operator, context):
         return None
     objects = _level_objects(context)
     if not objects:
-        operator.report({"ERROR"}, "no level: select the level's mesh objects")
+        operator.report({"ERROR"}, _no_level_message(context))
         return None
     return objects
 
 
+def _build_findings(settings, results):
+    """The build's findings (capture point outside the level, kept proxy not around the capture
+    point...) as warnings in the Findings list, where Validate's go: not a line that is gone in
+    a second."""
+    settings.findings.clear()
+    count = 0
+    for result in results:
+        for message in result["findings"]:
+            item = settings.findings.add()
+            item.probe = result["name"]
+            item.rule = "build"
+            item.severity = "warning"
+            item.value = item.limit = "null"
+            item.message = message
+            item.hint = "see the probe's figures under Probe; move the capture point into the level"
+            count += 1
+    settings.validated = True
+    return count
+
+
 class PROBEPROXY_OT_generate_proxies(_NeedsModule, bpy.types.Operator):
-    """Build every probe's convex proxy from the selected level objects (all level objects
-    when none is selected) and add it as a mesh in the "Proxies" collection"""
+    """Build every probe's convex proxy from the level (the whole level, or the selected level
+    objects when Level is set to Selected) and add it as a mesh in the "Proxies" collection"""
     bl_idname = "probeproxy.generate_proxies"
     bl_label = "Generate Proxies"
     bl_options = {"REGISTER", "UNDO"}
@@ -113,6 +201,7 @@ class PROBEPROXY_OT_generate_proxies(_NeedsModule, bpy.types.Operator):
             return {"CANCELLED"}
 
         def work():
+            _take_edited_proxies(self, context)
             parts, used = scene_io.level_parts(context, objects)
             results = _with_progress(context, len(probes), lambda progress: native.module.build_proxies(
                 scene_io.scene_dict(scene), scene_io.scene_anchor(scene), parts,
@@ -126,7 +215,12 @@ class PROBEPROXY_OT_generate_proxies(_NeedsModule, bpy.types.Operator):
                                    for c in result["candidates"]]})
                 _proxy_mesh_object(scene, probe, result)
             settings.level_used = used
-            self.report({"INFO"}, "built %d proxies from %s" % (len(results), used))
+            warnings = _build_findings(settings, results)
+            if warnings:
+                self.report({"WARNING"}, "built %d proxies from %s; %d finding%s (see Findings)"
+                            % (len(results), used, warnings, "" if warnings == 1 else "s"))
+            else:
+                self.report({"INFO"}, "built %d proxies from %s" % (len(results), used))
             return {"FINISHED"}
 
         return _run(self, work)
@@ -152,9 +246,9 @@ def _select_probes(context, names, first):
 
 
 class PROBEPROXY_OT_validate_volumes(_NeedsModule, bpy.types.Operator):
-    """Check the probes' proxies and influence volumes against the selected level objects
-    (all when none is selected), as `probeproxy validate` does; list the findings and select
-    the probes they name"""
+    """Check the probes' proxies and influence volumes against the level (whole, or selected
+    when Level is set to Selected), as `probeproxy validate` does; list the findings and
+    select the probes they name"""
     bl_idname = "probeproxy.validate_volumes"
     bl_label = "Validate Volumes"
     bl_options = {"REGISTER", "UNDO"}
@@ -167,6 +261,7 @@ class PROBEPROXY_OT_validate_volumes(_NeedsModule, bpy.types.Operator):
             return {"CANCELLED"}
 
         def work():
+            _take_edited_proxies(self, context)
             parts, used = scene_io.level_parts(context, objects)
             findings = native.module.validate_scene(
                 scene_io.scene_dict(scene), scene_io.scene_anchor(scene), parts,
@@ -205,26 +300,33 @@ class PROBEPROXY_OT_export_proxies(_NeedsModule, bpy.types.Operator):
 
     def execute(self, context):
         scene = context.scene
-        objects = _level_objects(context)
-        if not objects:
-            self.report({"ERROR"}, "no level: select the level's mesh objects")
+        if not self.directory:
+            self.report({"ERROR"}, "no folder: choose the folder to write proxies.json into")
+            return {"CANCELLED"}
+        objects = _probes_and_level(self, context)
+        if objects is None:
             return {"CANCELLED"}
         out = bpy.path.abspath(self.directory)
 
         def work():
+            _take_edited_proxies(self, context)
             parts, used = scene_io.level_parts(context, objects)
             results = _with_progress(context, len(scene_io.probes(scene)), lambda progress: native.module.export_proxies(
                 scene_io.scene_dict(scene), scene_io.scene_anchor(scene), out, parts,
                 _build_options(scene.probeproxy), progress))
-            self.report({"INFO"}, "wrote %d probes to %s" % (
-                len(results), os.path.join(out, "proxies.json")))
+            scene.probeproxy.level_used = used
+            self.report({"INFO"}, "wrote %d probes to %s (level: %s)" % (
+                len(results), os.path.join(out, "proxies.json"), used))
             return {"FINISHED"}
 
         return _run(self, work)
 
 
-def _import_level_mesh(path, up, meters_per_unit):
-    """Imports one level mesh with Blender's importer; returns the objects it made."""
+def _import_level_mesh(path, up, meters_per_unit, meters_per_bu):
+    """Imports one level mesh with Blender's importer; returns the objects it made.
+    `meters_per_unit`: the scene file's unit; `meters_per_bu`: the Blender scene's Unit Scale.
+    Blender's glTF importer already turns metres into Blender units (it divides by the Unit
+    Scale, io_scene_gltf2 gltf2_blender_gltf.py); the OBJ and PLY importers do not."""
     before = set(bpy.data.objects)
     ext = os.path.splitext(path)[1].lower()
     if ext in (".glb", ".gltf"):
@@ -233,16 +335,19 @@ def _import_level_mesh(path, up, meters_per_unit):
             np.bool = bool
         bpy.ops.import_scene.gltf(filepath=path)
         file_up = "Y"  # the importer turns glTF's +Y up into Blender's +Z
+        to_bu = meters_per_unit
     elif ext == ".obj":
         bpy.ops.wm.obj_import(filepath=path, up_axis=up, forward_axis="NEGATIVE_Z" if up == "Y" else "Y")
         file_up = up
+        to_bu = meters_per_unit / meters_per_bu
     elif ext == ".ply":
         bpy.ops.import_mesh.ply(filepath=path, axis_up=up, axis_forward="-Z" if up == "Y" else "Y")
         file_up = up
+        to_bu = meters_per_unit / meters_per_bu
     else:
         raise native.module.InputError("%s: Blender has no importer for %s meshes" % (path, ext))
     made = [o for o in bpy.data.objects if o not in before]
-    fix = Matrix.Scale(meters_per_unit, 4)
+    fix = Matrix.Scale(to_bu, 4)
     if up != file_up:  # the scene says the file's up differs from what the importer assumed
         fix = fix @ Matrix.Rotation(math.pi / 2 if up == "Y" else -math.pi / 2, 4, "X")
     if fix != Matrix.Identity(4):
@@ -270,7 +375,8 @@ def import_scene(context, path):
         mesh_path = os.path.join(folder, entry["mesh"])
         ext = os.path.splitext(mesh_path)[1].lower()
         up = entry.get("up") or ("Y" if ext in (".glb", ".gltf") else as_written["up"])
-        made = _import_level_mesh(mesh_path, up, as_written.get("meters_per_unit", 1.0))
+        made = _import_level_mesh(mesh_path, up, as_written.get("meters_per_unit", 1.0),
+                                  scene_io.meters_per_bu(scene))
         for obj in made:
             for c in list(obj.users_collection):
                 c.objects.unlink(obj)
@@ -288,7 +394,7 @@ def import_scene(context, path):
             obj.empty_display_type = "PLAIN_AXES"
             obj.empty_display_size = 0.25
             probe_coll.objects.link(obj)
-        scene_io.set_probe_from_dict(obj, d)
+        scene_io.set_probe_from_dict(obj, d, scene_io.meters_per_bu(scene))
         obj.probeproxy.order = order
     settings.scene_file = path
     settings.file_up = as_written["up"]
@@ -338,9 +444,14 @@ class PROBEPROXY_OT_save_scene(_NeedsModule, bpy.types.Operator, ExportHelper):
         path = os.path.abspath(self.filepath)
 
         def work():
+            _take_edited_proxies(self, context)
             data = scene_io.scene_dict(scene)
             anchor = scene_io.scene_anchor(scene)
-            if not json.loads(settings.level_json or "[]"):
+            authored_here = not json.loads(settings.level_json or "[]")
+            if authored_here:
+                # Blender's glTF exporter writes Blender units: the file's unit is the Unit
+                # Scale from now on. An imported level keeps its file's unit.
+                settings.meters_per_unit = scene_io.meters_per_bu(scene)
                 # A level authored in Blender: written beside the scene file, glTF (+Y up).
                 level_file = os.path.splitext(os.path.splitext(path)[0])[0] + "_level.glb"
                 objects = [o for o in scene.objects if scene_io.is_level_object(o)]
@@ -351,7 +462,7 @@ class PROBEPROXY_OT_save_scene(_NeedsModule, bpy.types.Operator, ExportHelper):
                 data["level"] = [{"mesh": os.path.basename(level_file)}]
                 anchor = path
             native.module.write_scene(data, path, anchor=anchor, up=settings.file_up,
-                                      meters_per_unit=settings.meters_per_unit)
+                                      meters_per_unit=scene_io.f32(settings.meters_per_unit))
             settings.level_json = json.dumps(native.module.read_scene(path)["level"])
             settings.scene_file = path
             self.report({"INFO"}, "wrote " + path)

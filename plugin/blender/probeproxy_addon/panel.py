@@ -27,23 +27,41 @@ class PROBEPROXY_PT_main(_Sidebar, bpy.types.Panel):
             for i, line in enumerate(_wrap(native.problem, 48)):
                 box.label(text=line, icon="ERROR" if i == 0 else "NONE")
             return
+        width = _chars(context)
         col = layout.column(align=True)
-        row = col.row(align=True)
-        row.operator("probeproxy.import_scene", icon="IMPORT")
-        row.operator("probeproxy.save_scene", icon="FILE_TICK")
+        col.operator("probeproxy.import_scene", icon="IMPORT")
+        col.operator("probeproxy.save_scene", icon="FILE_TICK")
         col.operator("probeproxy.add_probe", icon="LIGHTPROBE_CUBEMAP")
         col.separator()
         col.prop(settings, "tolerance_deg")
         col.prop(settings, "max_planes")
         col.prop(settings, "regenerate")
+        # Which level objects the operators build from, always in view.
+        box = layout.box()
+        box.label(text="Build from:")
+        box.row(align=True).prop(settings, "level_scope", expand=True)
+        from .operators import _level_objects
+        chosen = _level_objects(context)
+        if settings.level_scope == "SELECTED":
+            if not chosen:
+                sub = box.column()
+                sub.alert = True
+                sub.label(text="No level object selected", icon="ERROR")
+            for line in _wrap(", ".join(sorted(o.name for o in chosen)), width - 2)[:4]:
+                box.label(text=line)
+        else:
+            box.label(text="All %d level objects" % len(chosen))
+        col = layout.column(align=True)
         col.operator("probeproxy.generate_proxies", icon="MESH_ICOSPHERE")
         col.operator("probeproxy.validate_volumes", icon="CHECKMARK")
         col.operator("probeproxy.export_proxies", icon="EXPORT")
         col.prop(settings, "show_volumes")
         if settings.scene_file:
-            layout.label(text="Scene: " + bpy.path.basename(settings.scene_file))
+            for line in _wrap("Scene: " + bpy.path.basename(settings.scene_file), width):
+                layout.label(text=line)
         if settings.level_used:
-            layout.label(text="Level: " + settings.level_used)
+            for line in _wrap("Last built from " + settings.level_used, width):
+                layout.label(text=line)
 
 
 class PROBEPROXY_PT_probe(_Sidebar, bpy.types.Panel):
@@ -64,34 +82,51 @@ class PROBEPROXY_PT_probe(_Sidebar, bpy.types.Panel):
             r = json.loads(s.result_json)
             e = r["error"]
             box = layout.box()
-            box.label(text="Kept: %s (%s), %d planes, %d vertices" % (
-                r["candidate"], r["kind"], r["planes"], r["vertices"]))
-            box.label(text="mirror_floor median %s / p95 %s / max %s deg" % (
-                _deg(e["median_deg"]), _deg(e["p95_deg"]), _deg(e["max_deg"])))
-            box.label(text="miss %.2f%%, occluded %.2f%%, %d samples" % (
-                100 * e["miss_rate"], 100 * e["occluded_rate"], e["samples"]))
+            # Short lines: the sidebar's default width holds about 30 characters.
+            box.label(text="Kept: %s (%s)" % (r["candidate"], r["kind"]))
+            box.label(text="%d planes, %d vertices" % (r["planes"], r["vertices"]))
+            box.label(text="p95 %s deg" % _deg(e["p95_deg"]))
+            box.label(text="median %s deg" % _deg(e["median_deg"]))
+            box.label(text="max %s deg" % _deg(e["max_deg"]))
+            box.label(text="miss %.2f%%, occluded %.2f%%" % (
+                100 * e["miss_rate"], 100 * e["occluded_rate"]))
+            box.label(text="%d mirror_floor samples" % e["samples"])
             for finding in r.get("findings", []):
-                for line in _wrap(finding, _chars(context)):
-                    box.label(text=line, icon="INFO")
-        layout.prop(obj, "location", text="Capture")
-        layout.prop(s, "influence_shape")
-        layout.prop(s, "influence_offset")
+                for i, line in enumerate(_wrap(finding, _chars(context) - 4)):
+                    box.label(text=line, icon="ERROR" if i == 0 else "BLANK1")
+        if s.proxy_mode == "MESH" and s.proxy_mesh.endswith("_proxy_edited.obj"):
+            for i, line in enumerate(_wrap("Proxy: your edit of the generated mesh, exported as "
+                                           "authored (" + s.proxy_mesh + ")", _chars(context) - 4)):
+                layout.label(text=line, icon="GREASEPENCIL" if i == 0 else "BLANK1")
+        # Each vector under its own label, its components stacked: at the sidebar's default
+        # width a label beside three fields leaves room for neither.
+        _vector(layout, obj, "location", "Capture")
+        layout.label(text="Influence:")
+        layout.prop(s, "influence_shape", text="")
+        _vector(layout, s, "influence_offset", "Centre offset")
         if s.influence_shape == "BOX":
-            layout.prop(s, "half_extents")
-            layout.prop(s, "inner_half_extents")
+            _vector(layout, s, "half_extents", "Outer half-extents")
+            _vector(layout, s, "inner_half_extents", "Inner half-extents")
         else:
             layout.prop(s, "radius")
             layout.prop(s, "inner_radius")
-        layout.prop(s, "proxy_mode")
+        layout.label(text="Proxy:")
+        layout.prop(s, "proxy_mode", text="")
         if s.proxy_mode == "BOX":
-            layout.prop(s, "proxy_center")
-            layout.prop(s, "proxy_half_extents")
-            layout.prop(s, "proxy_rotation")
+            _vector(layout, s, "proxy_center", "Proxy centre")
+            _vector(layout, s, "proxy_half_extents", "Proxy half-extents")
+            _vector(layout, s, "proxy_rotation", "Proxy rotation (w, x, y, z)")
         elif s.proxy_mode == "SPHERE":
-            layout.prop(s, "proxy_center")
-            layout.prop(s, "proxy_radius")
+            _vector(layout, s, "proxy_center", "Proxy centre")
+            layout.prop(s, "proxy_radius", text="Radius")
         elif s.proxy_mode == "MESH":
-            layout.prop(s, "proxy_mesh")
+            layout.prop(s, "proxy_mesh", text="")
+
+
+def _vector(layout, data, name, label):
+    col = layout.column(align=True)
+    col.label(text=label)
+    col.prop(data, name, text="")
 
 
 class PROBEPROXY_PT_findings(_Sidebar, bpy.types.Panel):
@@ -109,18 +144,25 @@ class PROBEPROXY_PT_findings(_Sidebar, bpy.types.Panel):
         if not findings:
             self.layout.label(text="No findings: every volume passes", icon="CHECKMARK")
             return
-        self.layout.label(text=findings_summary([f.severity for f in findings]), icon="ERROR")
+        summary = findings_summary([f.severity for f in findings])
+        head, _, counts = summary.partition(" (")
+        self.layout.label(text=head, icon="ERROR")
+        if counts:
+            self.layout.label(text=counts.rstrip(")"))
         icons = {"error": "CANCEL", "warning": "ERROR", "info": "INFO"}
         for f in findings:
             box = self.layout.box()
-            box.label(text="%s  %s  (%s)" % (f.severity, f.rule, f.probe or "scene"),
+            box.label(text="%s: %s" % (f.severity, f.probe or "scene"),
                       icon=icons.get(f.severity, "INFO"))
-            box.label(text="value %s / limit %s" % (_number(f.value), _number(f.limit)))
+            for line in _wrap(f.rule, width):
+                box.label(text=line)
+            if f.value != "null" or f.limit != "null":
+                box.label(text="value %s / limit %s" % (_number(f.value), _number(f.limit)))
             col = box.column(align=True)
             for line in _wrap(f.message, width):
                 col.label(text=line)
             if f.hint:
-                for i, line in enumerate(_wrap("Fix: " + f.hint, width)):
+                for i, line in enumerate(_wrap("Fix: " + f.hint, width - 4)):
                     col.label(text=line, icon="LIGHT" if i == 0 else "BLANK1")
 
 

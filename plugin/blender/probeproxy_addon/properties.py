@@ -1,7 +1,8 @@
 # What the add-on stores in the .blend file. A probe is an object (an empty) whose
 # `probeproxy` settings say it is one: the capture point is the object's location, the
 # influence volume's rotation is the object's, its centre is the location plus an offset.
-# World frame, Z up, metres (the scene file's world frame). Figures the build returns are kept
+# Lengths are Blender units (the scene's Unit Scale makes them metres); the influence follows
+# the probe object's full world matrix (scene_io.py). Figures the build returns are kept
 # as the report's JSON text, exactly as the library wrote them (a float property would round
 # them to 32 bits).
 
@@ -27,10 +28,12 @@ class ProbeSettings(bpy.types.PropertyGroup):
         ("SPHERE", "Sphere", "Sphere influence volume")], default="BOX")
     influence_offset: FloatVectorProperty(
         name="Centre offset", subtype="TRANSLATION", unit="LENGTH", size=3,
-        description="Influence centre minus the capture point, world metres")
+        description="Influence centre minus the capture point, in the probe's own frame (it "
+                    "turns and scales with the object)")
     half_extents: FloatVectorProperty(
         name="Outer half-extents", subtype="XYZ", unit="LENGTH", size=3, default=(2, 2, 2),
-        min=0.0, description="Outer range, half-extents along the object's axes, metres")
+        min=0.0, description="Outer range, half-extents along the object's axes, before the "
+                             "object's scale")
     inner_half_extents: FloatVectorProperty(
         name="Inner half-extents", subtype="XYZ", unit="LENGTH", size=3, default=(2, 2, 2),
         min=0.0, description="Inner range: full weight inside, fading to zero at the outer one")
@@ -54,6 +57,9 @@ class ProbeSettings(bpy.types.PropertyGroup):
     # The last Generate: this probe's `build --json` entry; the proxy object it made.
     result_json: StringProperty(default="")
     proxy_object: PointerProperty(type=bpy.types.Object)
+    # scene_io.mesh_fingerprint of the proxy object as Generate made it: a different one means
+    # the artist edited it (operators._take_edited_proxies).
+    proxy_fingerprint: StringProperty(default="")
 
     # On level objects imported from a scene file: which of its level meshes they came from
     # and a fingerprint of their world-space geometry then (unchanged: build from the file).
@@ -82,6 +88,10 @@ class SceneSettings(bpy.types.PropertyGroup):
                              description="Generate a proxy also where one is authored")
     tolerance_deg: FloatProperty(name="Tolerance (deg)", default=0.25, min=0.001)
     max_planes: IntProperty(name="Max planes", default=64, min=4, max=256)
+    level_scope: EnumProperty(name="Level", items=[
+        ("ALL", "Whole level", "Every mesh object that is not a probe or a proxy"),
+        ("SELECTED", "Selected", "Only the selected level objects (the panel lists them)")],
+        default="ALL", description="Which objects Generate, Validate and Export build from")
     level_used: StringProperty(default="")
     findings: CollectionProperty(type=Finding)
     validated: BoolProperty(default=False)

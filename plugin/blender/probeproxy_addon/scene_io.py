@@ -1,7 +1,16 @@
 # Between Blender objects and the scene file's dict (README "Scene file"), in the world frame
-# (Z up, metres: Blender's). Blender stores 32-bit floats; each number is written as the
-# shortest decimal that reads back to the same 32-bit value, so 1.6 typed or imported comes
-# back as 1.6, and an unedited scene gives the library the very numbers the file holds.
+# (Z up, metres). Blender stores 32-bit floats; each number is written as the shortest decimal
+# that reads back to the same 32-bit value, so 1.6 typed or imported comes back as 1.6, and an
+# unedited scene gives the library the very numbers the file holds.
+#
+# Units: a Blender unit is `scene.unit_settings.scale_length` metres (Unit Scale; 0.01 for a
+# level modelled in centimetres). Everything handed to the library is in metres, everything
+# read back is turned into Blender units (`meters_per_bu`).
+# Transforms: a probe's capture point, influence centre, rotation and extents follow the
+# object's full world matrix (parents, any rotation mode, delta transforms, scale). The
+# influence's centre offset and extents are in the probe's own frame, so they turn, move and
+# scale with it. Authored proxy boxes and spheres are world-space shapes (the room's walls):
+# they stay where they are when the capture point moves.
 
 import array
 import hashlib
@@ -32,6 +41,91 @@ def add(a, b):
     return [round(x + y, 9) for x, y in zip(vec(a), vec(b))]
 
 
+def meters_per_bu(scene):
+    """Metres per Blender unit: the scene's Unit Scale, as typed (Blender stores 0.01 as the
+    32-bit 0.0099999998; the shortest decimal of it is the 0.01 the artist meant)."""
+    scale = f32(scene.unit_settings.scale_length)
+    return scale if scale > 0 else 1.0
+
+
+def to_meters(values, scale):
+    """Blender-unit numbers (already shortest decimals) in metres; untouched at scale 1, so a
+    metre scene gives the library the file's own numbers; else rounded to 1e-9 m, as the scene
+    writer rounds."""
+    if scale == 1.0:
+        return list(values) if isinstance(values, list) else values
+    if isinstance(values, list):
+        return [round(v * scale, 9) for v in values]
+    return round(values * scale, 9)
+
+
+def to_bu(values, scale):
+    """Metres in Blender units."""
+    if scale == 1.0:
+        return values
+    if isinstance(values, (int, float)):
+        return values / scale
+    return [v / scale for v in values]
+
+
+def _rotate(q, v):
+    """Quaternion [w, x, y, z] (unit) applied to a 3-vector, in doubles."""
+    w, x, y, z = q
+    tx = 2 * (y * v[2] - z * v[1])
+    ty = 2 * (z * v[0] - x * v[2])
+    tz = 2 * (x * v[1] - y * v[0])
+    return [v[0] + w * tx + (y * tz - z * ty), v[1] + w * ty + (z * tx - x * tz),
+            v[2] + w * tz + (x * ty - y * tx)]
+
+
+def _inverse_rotate(q, v):
+    return _rotate([q[0], -q[1], -q[2], -q[3]], v)
+
+
+def _is_plain(obj):
+    """No parent, no delta transforms, quaternion mode: the object's own numbers are its world
+    transform, exactly as typed or imported."""
+    return (obj.parent is None and obj.rotation_mode == "QUATERNION"
+            and tuple(obj.delta_location) == (0, 0, 0)
+            and tuple(obj.delta_rotation_quaternion) == (1, 0, 0, 0)
+            and tuple(obj.delta_scale) == (1, 1, 1))
+
+
+def probe_frame(obj):
+    """The probe's world transform as (capture, rotation [w, x, y, z], scale), Blender units,
+    from its full world matrix. A scale within 1e-6 of 1 is 1 (float noise through parents)."""
+    m = obj.matrix_world
+    capture = vec(m.translation)
+    if _is_plain(obj):
+        rotation = vec(obj.rotation_quaternion)
+    else:
+        rotation = vec(m.to_quaternion())  # Blender normalizes the scale out first
+    scale = [abs(f32(c)) for c in m.to_scale()]
+    scale = [1.0 if abs(c - 1.0) <= 1e-6 else c for c in scale]
+    return capture, rotation, scale
+
+
+def probe_rotation(obj):
+    return probe_frame(obj)[1]
+
+
+def influence_world(obj):
+    """The influence volume in the world, Blender units: a dict with `center`, `rotation` and
+    `half_extents` + `inner_half_extents` (box) or `radius` + `inner_radius` (sphere)."""
+    s = obj.probeproxy
+    capture, rotation, scale = probe_frame(obj)
+    local = [o * c for o, c in zip(vec(s.influence_offset), scale)]
+    offset = local if rotation == [1.0, 0.0, 0.0, 0.0] else vec(_rotate(rotation, local))
+    out = {"center": add(capture, offset), "rotation": rotation}
+    if s.influence_shape == "BOX":
+        out["half_extents"] = [f32(h * c) for h, c in zip(vec(s.half_extents), scale)]
+        out["inner_half_extents"] = [f32(h * c) for h, c in zip(vec(s.inner_half_extents), scale)]
+    else:  # a sphere scales by its largest axis: an influence sphere has one radius
+        out["radius"] = f32(f32(s.radius) * max(scale))
+        out["inner_radius"] = f32(f32(s.inner_radius) * max(scale))
+    return out
+
+
 def is_probe(obj):
     return obj.probeproxy.is_probe
 
@@ -41,39 +135,42 @@ def probes(scene):
                   key=lambda o: (o.probeproxy.order, o.name))
 
 
-def probe_rotation(obj):
-    if obj.rotation_mode == "QUATERNION":
-        return vec(obj.rotation_quaternion)
-    return vec(obj.matrix_world.to_quaternion())
-
-
-def probe_dict(obj):
+def probe_dict(obj, meters_per_unit=1.0, proxy_override=None):
+    """The probe as the scene file's dict, world frame, metres (`meters_per_unit`: metres per
+    Blender unit). `proxy_override`: a proxy entry to use instead of the object's settings."""
     s = obj.probeproxy
-    capture = vec(obj.matrix_world.translation)
-    center = add(capture, s.influence_offset)
+    k = meters_per_unit
+    capture = probe_frame(obj)[0]
+    inf = influence_world(obj)
     if s.influence_shape == "BOX":
-        influence = {"kind": "box", "center": center, "half_extents": vec(s.half_extents),
-                     "rotation": probe_rotation(obj),
-                     "inner_half_extents": vec(s.inner_half_extents)}
+        influence = {"kind": "box", "center": to_meters(inf["center"], k),
+                     "half_extents": to_meters(inf["half_extents"], k),
+                     "rotation": inf["rotation"],
+                     "inner_half_extents": to_meters(inf["inner_half_extents"], k)}
     else:
-        influence = {"kind": "sphere", "center": center, "radius": f32(s.radius),
-                     "inner_radius": f32(s.inner_radius)}
-    if s.proxy_mode == "AUTO":
+        influence = {"kind": "sphere", "center": to_meters(inf["center"], k),
+                     "radius": to_meters(inf["radius"], k),
+                     "inner_radius": to_meters(inf["inner_radius"], k)}
+    if proxy_override is not None:
+        proxy = proxy_override
+    elif s.proxy_mode == "AUTO":
         proxy = "auto"
     elif s.proxy_mode == "INFINITE":
         proxy = "infinite"
     elif s.proxy_mode == "BOX":
         rotation = vec(s.proxy_rotation)
-        proxy = {"kind": "box", "center": vec(s.proxy_center),
-                 "half_extents": vec(s.proxy_half_extents)}
+        proxy = {"kind": "box", "center": to_meters(vec(s.proxy_center), k),
+                 "half_extents": to_meters(vec(s.proxy_half_extents), k)}
         if rotation != [1.0, 0.0, 0.0, 0.0]:
             proxy["kind"] = "obb"
             proxy["rotation"] = rotation
     elif s.proxy_mode == "SPHERE":
-        proxy = {"kind": "sphere", "center": vec(s.proxy_center), "radius": f32(s.proxy_radius)}
+        proxy = {"kind": "sphere", "center": to_meters(vec(s.proxy_center), k),
+                 "radius": to_meters(f32(s.proxy_radius), k)}
     else:
         proxy = {"kind": "convex", "mesh": s.proxy_mesh}
-    d = {"name": obj.name, "capture": capture, "influence": influence, "proxy": proxy}
+    d = {"name": obj.name, "capture": to_meters(capture, k), "influence": influence,
+         "proxy": proxy}
     d.update(json.loads(s.extra_json or "{}"))
     return d
 
@@ -87,33 +184,48 @@ def scene_anchor(scene):
     return os.path.join(folder, "untitled.scene.json")
 
 
-def scene_dict(scene):
-    """The scene file's dict for the probes in `scene`, world frame (up Z, metres)."""
+def scene_dict(scene, proxy_overrides=None):
+    """The scene file's dict for the probes in `scene`, world frame (up Z, metres, whatever the
+    scene's Unit Scale). `proxy_overrides`: probe name -> proxy entry (hand-edited proxies)."""
     level = json.loads(scene.probeproxy.level_json or "[]")
     if not level:  # a level authored in Blender: Save Scene writes it to this file
         level = [{"mesh": "level.glb"}]
+    k = meters_per_bu(scene)
+    overrides = proxy_overrides or {}
     return {"probeproxy_scene": 1, "up": "Z", "meters_per_unit": 1.0, "level": level,
-            "probes": [probe_dict(o) for o in probes(scene)]}
+            "probes": [probe_dict(o, k, overrides.get(o.name)) for o in probes(scene)]}
 
 
-def set_probe_from_dict(obj, d):
-    """Sets a probe object from a world-frame probe dict."""
+def set_probe_from_dict(obj, d, meters_per_unit=1.0):
+    """Sets a probe object from a world-frame probe dict in metres (`meters_per_unit`: metres
+    per Blender unit of the scene it goes into). The object's world matrix becomes the capture
+    point and the influence's rotation, scale 1, whatever its parent."""
+    k = meters_per_unit
     s = obj.probeproxy
     s.is_probe = True
     obj.rotation_mode = "QUATERNION"
-    obj.location = d["capture"]
+    capture = to_bu(d["capture"], k)
     inf = d["influence"]
-    s.influence_offset = [c - p for c, p in zip(inf["center"], d["capture"])]
+    rotation = inf.get("rotation", [1, 0, 0, 0]) if inf["kind"] == "box" else [1, 0, 0, 0]
+    world = Matrix.Translation(capture) @ Quaternion(rotation).to_matrix().to_4x4()
+    if obj.parent is None:
+        obj.location = capture
+        obj.rotation_quaternion = rotation
+        obj.scale = (1, 1, 1)
+    else:
+        obj.matrix_world = world
+    offset = [c - p for c, p in zip(to_bu(inf["center"], k), capture)]
+    if [float(r) for r in rotation] != [1.0, 0.0, 0.0, 0.0]:
+        offset = _inverse_rotate([float(r) for r in rotation], offset)
+    s.influence_offset = offset
     if inf["kind"] == "box":
         s.influence_shape = "BOX"
-        s.half_extents = inf["half_extents"]
-        s.inner_half_extents = inf.get("inner_half_extents", inf["half_extents"])
-        obj.rotation_quaternion = inf.get("rotation", [1, 0, 0, 0])
+        s.half_extents = to_bu(inf["half_extents"], k)
+        s.inner_half_extents = to_bu(inf.get("inner_half_extents", inf["half_extents"]), k)
     else:
         s.influence_shape = "SPHERE"
-        s.radius = inf["radius"]
-        s.inner_radius = inf.get("inner_radius", inf["radius"])
-        obj.rotation_quaternion = (1, 0, 0, 0)
+        s.radius = to_bu(inf["radius"], k)
+        s.inner_radius = to_bu(inf.get("inner_radius", inf["radius"]), k)
     proxy = d["proxy"]
     if proxy == "auto":
         s.proxy_mode = "AUTO"
@@ -121,22 +233,23 @@ def set_probe_from_dict(obj, d):
         s.proxy_mode = "INFINITE"
     elif proxy["kind"] in ("box", "obb"):
         s.proxy_mode = "BOX"
-        s.proxy_center = proxy["center"]
-        s.proxy_half_extents = proxy["half_extents"]
+        s.proxy_center = to_bu(proxy["center"], k)
+        s.proxy_half_extents = to_bu(proxy["half_extents"], k)
         s.proxy_rotation = proxy.get("rotation", [1, 0, 0, 0])
     elif proxy["kind"] == "sphere":
         s.proxy_mode = "SPHERE"
-        s.proxy_center = proxy["center"]
-        s.proxy_radius = proxy["radius"]
+        s.proxy_center = to_bu(proxy["center"], k)
+        s.proxy_radius = to_bu(proxy["radius"], k)
     else:
         s.proxy_mode = "MESH"
         s.proxy_mesh = proxy["mesh"]
-    extra = {k: d[k] for k in ("cubemap", "reflection_planes") if k in d}
+    extra = {k2: d[k2] for k2 in ("cubemap", "reflection_planes") if k2 in d}
     s.extra_json = json.dumps(extra)
 
 
-def world_triangles(obj, depsgraph):
-    """The evaluated mesh of `obj` as flat world-space vertices (float64) and triangles."""
+def world_triangles(obj, depsgraph, meters_per_unit=1.0):
+    """The evaluated mesh of `obj` as flat world-space vertices (float64, Blender units times
+    `meters_per_unit`) and triangles."""
     evaluated = obj.evaluated_get(depsgraph)
     mesh = evaluated.to_mesh()
     try:
@@ -148,10 +261,25 @@ def world_triangles(obj, depsgraph):
         m = evaluated.matrix_world
         world = array.array("d")
         for i in range(0, len(co), 3):
-            world.extend(m @ Vector((co[i], co[i + 1], co[i + 2])))
+            p = m @ Vector((co[i], co[i + 1], co[i + 2]))
+            world.extend(p if meters_per_unit == 1.0 else [c * meters_per_unit for c in p])
         return world, tris
     finally:
         evaluated.to_mesh_clear()
+
+
+def mesh_fingerprint(obj):
+    """A hash of a mesh object's own data and world matrix (no depsgraph: a new object has
+    none yet): changes with any vertex moved, added or removed, and with the object moved."""
+    mesh = obj.data
+    co = array.array("f", [0.0]) * (len(mesh.vertices) * 3)
+    mesh.vertices.foreach_get("co", co)
+    loops = array.array("i", [0]) * len(mesh.loops)
+    mesh.loops.foreach_get("vertex_index", loops)
+    h = hashlib.sha1(co.tobytes())
+    h.update(loops.tobytes())
+    h.update(array.array("f", [c for row in obj.matrix_world for c in row]).tobytes())
+    return h.hexdigest()
 
 
 def fingerprint(obj, depsgraph):
@@ -185,10 +313,11 @@ def level_parts(context, objects):
             parts.append({"scene_level": index})
             from_files.append(index)
             covered.update(o.name for o in group)
+    k = meters_per_bu(context.scene)
     for obj in sorted(objects, key=lambda o: o.name):
         if obj.name in covered:
             continue
-        vertices, triangles = world_triangles(obj, depsgraph)
+        vertices, triangles = world_triangles(obj, depsgraph, k)
         if len(triangles):
             parts.append({"name": obj.name, "vertices": vertices, "triangles": triangles})
             from_blender.append(obj.name)
