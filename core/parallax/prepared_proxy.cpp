@@ -31,24 +31,6 @@ bool finite(glm::dvec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && s
 
 }  // namespace
 
-std::string_view methodName(Method method) {
-  switch (method) {
-    case Method::Infinite:
-      return "infinite";
-    case Method::CheapK:
-      return "cheap_k";
-    case Method::Sphere:
-      return "sphere";
-    case Method::Aabb:
-      return "aabb";
-    case Method::Obb:
-      return "obb";
-    case Method::Convex:
-      return "convex";
-  }
-  return "unknown";
-}
-
 PreparedProxy prepareProxy(const ProxyShape& shape, glm::dvec3 captureMeters) {
   if (!finite(captureMeters)) fail("the capture point is not finite");
   // Every constant is relative to the float capture point c, the one x - C is taken from.
@@ -90,7 +72,7 @@ PreparedProxy prepareProxy(const ProxyShape& shape, glm::dvec3 captureMeters) {
     const glm::dvec3 h = box->halfExtentsMeters;
     if (!(h.x > 0 && h.y > 0 && h.z > 0) || !finite(h) || !finite(box->centerMeters))
       fail("the box's half-extents must be positive and finite");
-    if (methodId(shape) == "aabb") {
+    if (methodOf(shape) == Method::Aabb) {
       out.method = Method::Aabb;
       out.constants = AabbConstants{captureF, glm::vec3(box->centerMeters - h - c),
                                     glm::vec3(box->centerMeters + h - c)};

@@ -15,11 +15,6 @@
 
 namespace probeproxy {
 
-enum class Method { Infinite, CheapK, Sphere, Aabb, Obb, Convex };
-
-// docs/methods_and_measures.md's id: "infinite", "cheap_k", "sphere", "aabb", "obb", "convex".
-std::string_view methodName(Method method);
-
 struct PreparedProxy {
   Method method = Method::Infinite;
   // The constants of `method` (std::monostate for infinite).
@@ -28,7 +23,7 @@ struct PreparedProxy {
       constants;
 };
 
-// The method is methodId(shape)'s (a box with the identity rotation is aabb). The capture
+// The method is methodOf(shape) (a box with the identity rotation is aabb). The capture
 // point is rounded to float first and every constant is taken relative to that float point.
 // Throws std::invalid_argument for a degenerate shape (a zero radius or half-extent, a plane
 // normal that is not unit length) or a non-finite capture point.

@@ -10,15 +10,32 @@
 
 namespace probeproxy {
 
+// How the build made a candidate (the method a shader runs for it is methodOf(shape)).
+enum class CandidateOrigin {
+  Authored,    // the scene file's proxy, measured beside
+  Infinite,    // no proxy
+  CheapK,      // k fitted to the samples
+  Sphere,      // around the capture point, radius fitted to the samples
+  MinSphere,   // smallest enclosing the points seen
+  Aabb,        // axis-aligned box around them, faces snapped to the walls
+  Obb,         // oriented box around them, faces snapped to the walls
+  Hull,        // their convex hull
+  Simplified,  // a step of the hull's error-driven simplification
+};
+
 struct ProxyCandidate {
-  std::string kind;  // "infinite", "cheap_k", "sphere", "aabb", "obb", "hull", "convex_k",
-                     // "authored": how it was made (the method is methodId(shape))
+  CandidateOrigin origin = CandidateOrigin::Infinite;
   ProxyShape shape;
   ErrorFigures error;             // on the probe's `mirror_floor` sample set
   ErrorFigures errorAllSurfaces;  // measured for the kept one and each non-convex_k kind;
                                   // samples == 0 where not measured
   double buildMs = 0.0;           // time to make this candidate (not to evaluate it)
 };
+
+// The candidate's stable name, for reports only: "authored", "infinite", "cheap_k", "sphere",
+// "min_sphere", "aabb", "obb", "hull", or "convex_<planes>" for a simplification step, named
+// by the planes its shape holds.
+std::string candidateName(const ProxyCandidate& candidate);
 
 struct ProbeProxyBuild {
   std::string probe;     // the probe's name

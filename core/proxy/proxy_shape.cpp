@@ -52,18 +52,46 @@ double farthestExitMeters(const std::vector<ProxyPlane>& planes, glm::dvec3 from
   return farthest;
 }
 
-std::string_view methodId(const ProxyShape& shape) {
+Method methodOf(const ProxyShape& shape) {
   struct Visitor {
-    std::string_view operator()(const InfiniteShape&) const { return "infinite"; }
-    std::string_view operator()(const CheapKShape&) const { return "cheap_k"; }
-    std::string_view operator()(const SphereShape&) const { return "sphere"; }
-    std::string_view operator()(const BoxShape& b) const {
-      return b.worldFromBox == glm::dquat(1, 0, 0, 0) ? "aabb" : "obb";
+    Method operator()(const InfiniteShape&) const { return Method::Infinite; }
+    Method operator()(const CheapKShape&) const { return Method::CheapK; }
+    Method operator()(const SphereShape&) const { return Method::Sphere; }
+    Method operator()(const BoxShape& b) const {
+      return b.worldFromBox == glm::dquat(1, 0, 0, 0) ? Method::Aabb : Method::Obb;
     }
-    std::string_view operator()(const ConvexProxy&) const { return "convex"; }
+    Method operator()(const ConvexProxy&) const { return Method::Convex; }
   };
   return std::visit(Visitor{}, shape);
 }
+
+std::string_view methodName(Method method) {
+  switch (method) {
+    case Method::Infinite:
+      return "infinite";
+    case Method::CheapK:
+      return "cheap_k";
+    case Method::Sphere:
+      return "sphere";
+    case Method::Aabb:
+      return "aabb";
+    case Method::Obb:
+      return "obb";
+    case Method::Convex:
+      return "convex";
+  }
+  return "unknown";
+}
+
+std::optional<Method> methodFromName(std::string_view name) {
+  for (Method m : {Method::Infinite, Method::CheapK, Method::Sphere, Method::Aabb, Method::Obb,
+                   Method::Convex}) {
+    if (methodName(m) == name) return m;
+  }
+  return std::nullopt;
+}
+
+std::string_view methodId(const ProxyShape& shape) { return methodName(methodOf(shape)); }
 
 int planeCount(const ProxyShape& shape) {
   if (std::holds_alternative<BoxShape>(shape)) return 6;

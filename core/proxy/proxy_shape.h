@@ -7,6 +7,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
 
+#include <optional>
 #include <string_view>
 #include <variant>
 
@@ -32,8 +33,19 @@ struct BoxShape {
 
 using ProxyShape = std::variant<InfiniteShape, CheapKShape, SphereShape, BoxShape, ConvexProxy>;
 
-// The method id (docs/methods_and_measures.md) a shape is evaluated with: "infinite", "cheap_k",
-// "sphere", "aabb" (a box whose rotation is the identity), "obb" or "convex".
+// The correction method a shader runs for a shape (docs/methods_and_measures.md "Methods"):
+// the one vocabulary of lookups, in order from the simplest test. A box with the identity
+// rotation is looked up as an aabb.
+enum class Method { Infinite, CheapK, Sphere, Aabb, Obb, Convex };
+
+Method methodOf(const ProxyShape& shape);
+
+// The stable ids, for JSON and the command line only: "infinite", "cheap_k", "sphere", "aabb",
+// "obb", "convex".
+std::string_view methodName(Method method);
+std::optional<Method> methodFromName(std::string_view name);
+
+// methodName(methodOf(shape)), for reports.
 std::string_view methodId(const ProxyShape& shape);
 
 // Planes a shader tests: 0 for infinite, cheap_k and sphere, 6 for boxes, k for convex.

@@ -31,7 +31,7 @@ void measureOnAllSurfaces(ProbeProxyBuild& build, glm::dvec3 capture,
                           const std::vector<ReflectionSample>& all) {
   for (std::size_t i = 0; i < build.candidates.size(); ++i) {
     ProxyCandidate& c = build.candidates[i];
-    if (i == build.kept || c.kind.rfind("convex_", 0) != 0)
+    if (i == build.kept || c.origin != CandidateOrigin::Simplified)
       c.errorAllSurfaces = evaluateShape(c.shape, capture, all);
   }
 }
@@ -44,16 +44,16 @@ void finishKeptProxy(ProbeProxyBuild& build, glm::dvec3 capture) {
       convex != nullptr && convex->verticesMeters.empty()) {
     try {
       *convex = polytopeFromPlanes(convex->planes, capture);
-      // Planes that bound no facet of their own are left out: the name says what remains.
-      std::string& kind = build.candidates[build.kept].kind;
-      if (kind.rfind("convex_", 0) == 0) kind = "convex_" + std::to_string(convex->planes.size());
+      // Planes that bound no facet of their own are left out (so its name, convex_<planes>,
+      // says what remains).
     } catch (const FitError& e) {
       // Without corners the runtime could not draw or load it: keep the fitted box instead.
       build.findings.push_back(std::string("the kept proxy has no boundary mesh, keeping the "
                                            "box instead: ") +
                                e.what());
-      const auto box = std::find_if(build.candidates.begin(), build.candidates.end(),
-                                    [](const ProxyCandidate& c) { return c.kind == "aabb"; });
+      const auto box =
+          std::find_if(build.candidates.begin(), build.candidates.end(),
+                       [](const ProxyCandidate& c) { return c.origin == CandidateOrigin::Aabb; });
       build.kept = box == build.candidates.end()
                        ? 0
                        : static_cast<std::size_t>(box - build.candidates.begin());

@@ -15,10 +15,10 @@ FittedCandidates fitCandidates(const ProbeView& view, std::span<const Reflection
                                const std::optional<ProxyShape>& authored) {
   FittedCandidates f;
   const glm::dvec3 capture = view.captureMeters;
-  const auto add = [&](std::string kind, ProxyShape shape, double buildMs) {
-    f.candidates.push_back({std::move(kind), std::move(shape), {}, {}, buildMs});
+  const auto add = [&](CandidateOrigin origin, ProxyShape shape, double buildMs) {
+    f.candidates.push_back({origin, std::move(shape), {}, {}, buildMs});
   };
-  if (authored) add("authored", *authored, 0.0);
+  if (authored) add(CandidateOrigin::Authored, *authored, 0.0);
 
   // The hull of what the probe sees comes first: boxes and spheres around the points are
   // boxes and spheres around the hull's corners, a few hundred points instead of 10^5.
@@ -40,23 +40,24 @@ FittedCandidates fitCandidates(const ProbeView& view, std::span<const Reflection
   const double snapMeters = 10 * view.toleranceMeters;
 
   const Stopwatch fitTime;
-  add("infinite", InfiniteShape{}, 0.0);
+  add(CandidateOrigin::Infinite, InfiniteShape{}, 0.0);
   // One free parameter needs far fewer samples than a plane set: every fourth will do.
   std::vector<ReflectionSample> sparse;
   for (std::size_t i = 0; i < fitSamples.size(); i += 4) sparse.push_back(fitSamples[i]);
   Stopwatch each;
-  add("cheap_k", fitCheapK(capture, sparse, 0.5 * (view.nearestMeters + view.farthestMeters)),
-      each.lap());
-  add("sphere", fitCaptureSphere(capture, sparse, view.nearestMeters, view.farthestMeters),
-      each.lap());
+  add(CandidateOrigin::CheapK,
+      fitCheapK(capture, sparse, 0.5 * (view.nearestMeters + view.farthestMeters)), each.lap());
+  add(CandidateOrigin::Sphere,
+      fitCaptureSphere(capture, sparse, view.nearestMeters, view.farthestMeters), each.lap());
   if (!corners.empty()) {
-    add("min_sphere", minimumEnclosingSphere(corners), each.lap());
-    add("aabb", snapBoxToWalls(axisAlignedBoxFit(corners), view.wallPlanes, snapMeters),
+    add(CandidateOrigin::MinSphere, minimumEnclosingSphere(corners), each.lap());
+    add(CandidateOrigin::Aabb,
+        snapBoxToWalls(axisAlignedBoxFit(corners), view.wallPlanes, snapMeters), each.lap());
+    add(CandidateOrigin::Obb, snapBoxToWalls(orientedBoxFit(corners), view.wallPlanes, snapMeters),
         each.lap());
-    add("obb", snapBoxToWalls(orientedBoxFit(corners), view.wallPlanes, snapMeters), each.lap());
   }
   f.fitMs = fitTime.ms();
-  if (f.hull) add("hull", *f.hull, f.hullMs);
+  if (f.hull) add(CandidateOrigin::Hull, *f.hull, f.hullMs);
   return f;
 }
 

@@ -11,10 +11,7 @@ namespace {
 
 // Shaders pay per plane; among equal plane counts the simpler test wins.
 int methodRank(const ProxyShape& shape) {
-  const std::string_view id = methodId(shape);
-  static constexpr std::string_view order[] = {"infinite", "cheap_k", "sphere",
-                                               "aabb",     "obb",     "convex"};
-  return static_cast<int>(std::find(std::begin(order), std::end(order), id) - std::begin(order));
+  return static_cast<int>(methodOf(shape));  // Method lists the tests from simplest
 }
 
 bool meetsTolerance(const ErrorFigures& e, const ProxyBuildOptions& o) {
@@ -24,14 +21,17 @@ bool meetsTolerance(const ErrorFigures& e, const ProxyBuildOptions& o) {
 }  // namespace
 
 std::size_t selectProxy(const std::vector<ProxyCandidate>& candidates, const ProxyBuildOptions& o) {
-  if (!o.regenerate && !candidates.empty() && candidates.front().kind == "authored") return 0;
+  if (!o.regenerate && !candidates.empty() &&
+      candidates.front().origin == CandidateOrigin::Authored)
+    return 0;
   const auto complexity = [&](std::size_t i) {
     return std::make_tuple(planeCount(candidates[i].shape), methodRank(candidates[i].shape), i);
   };
   // The fewest planes that meet the tolerance.
   std::size_t best = candidates.size();
   const auto generated = [&](std::size_t i) {
-    return candidates[i].kind != "authored" && planeCount(candidates[i].shape) <= o.maxPlanes;
+    return candidates[i].origin != CandidateOrigin::Authored &&
+           planeCount(candidates[i].shape) <= o.maxPlanes;
   };
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     if (!generated(i) || !meetsTolerance(candidates[i].error, o)) continue;

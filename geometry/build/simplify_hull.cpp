@@ -8,7 +8,6 @@
 
 #include <cmath>
 #include <numeric>
-#include <string>
 
 namespace probeproxy {
 
@@ -58,11 +57,8 @@ std::vector<ProxyCandidate> simplifyHull(const ConvexProxy& hull, const ProbeVie
   for (std::size_t s = 1; s < steps.size(); ++s) {
     ConvexProxy simplified;
     simplified.planes = steps[s].planes;
-    candidates.push_back({"convex_" + std::to_string(steps[s].planes.size()),
-                          std::move(simplified),
-                          {},
-                          {},
-                          perStepMs * double(s)});
+    candidates.push_back(
+        {CandidateOrigin::Simplified, std::move(simplified), {}, {}, perStepMs * double(s)});
   }
   return candidates;
 }

@@ -78,7 +78,7 @@ std::optional<std::size_t> bestCandidate(const std::vector<ProxyCandidate>& cand
   return best;
 }
 
-bool isAabb(const ProxyShape& s) { return methodId(s) == "aabb"; }
+bool isAabb(const ProxyShape& s) { return methodOf(s) == Method::Aabb; }
 bool isBox(const ProxyShape& s) { return std::holds_alternative<BoxShape>(s); }
 bool isTrueSphere(const ProxyShape& s) {
   const auto* sphere = std::get_if<SphereShape>(&s);
@@ -87,7 +87,7 @@ bool isTrueSphere(const ProxyShape& s) {
 }
 
 EngineSource sourceOf(const ProxyCandidate& c, bool keptProxy) {
-  return {c.kind, c.error, keptProxy};
+  return {candidateName(c), c.error, keptProxy};
 }
 
 // The kept proxy when it is a box (keptBox: a BoxShape, or a convex within 1 um of one), so
@@ -186,8 +186,8 @@ RuntimeExport makeRuntimeExport(const Scene& scene, const std::vector<ProbeProxy
     RuntimeProbe out;
     out.name = probe->name;
     out.captureMeters = probe->captureMeters;
-    out.kind = std::string(methodId(kept.shape));
-    out.candidate = kept.kind;
+    out.method = methodOf(kept.shape);
+    out.candidate = candidateName(kept);
     describeShape(kept.shape, out);
     out.planesCount = planeCount(kept.shape);
     out.influence = probe->influence;

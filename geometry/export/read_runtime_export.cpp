@@ -351,13 +351,14 @@ RuntimeProbe probe(const At& at, const Reader& reader) {
   if (p.name.empty())
     failExpected(jsonMemberPath(at.path, "name"), "a non-empty string", at.value["name"]);
   p.captureMeters = reader.point(at.member("capture"));
-  p.kind = oneOf(at.member("kind"), {"infinite", "cheap_k", "sphere", "aabb", "obb", "convex"});
+  p.method = *methodFromName(
+      oneOf(at.member("kind"), {"infinite", "cheap_k", "sphere", "aabb", "obb", "convex"}));
   p.candidate = string(at.member("candidate"));
-  if (p.kind == "cheap_k") {
+  if (p.method == Method::CheapK) {
     p.kPerMeter = reader.perLength(at.member("k"));
   }
-  if (p.kind == "aabb" || p.kind == "obb") p.box = reader.box(at.member("box"));
-  if (p.kind == "sphere") p.sphere = reader.sphere(at.member("sphere"));
+  if (p.method == Method::Aabb || p.method == Method::Obb) p.box = reader.box(at.member("box"));
+  if (p.method == Method::Sphere) p.sphere = reader.sphere(at.member("sphere"));
   if (p.box || p.sphere) p.worldToUnit = reader.worldToUnit(at.member("world_to_unit"));
   p.planesCount = static_cast<int>(count(at.member("planes_count")));
   p.convex = reader.convex(at);

@@ -116,7 +116,7 @@ struct EnlightenBlend {
 struct RuntimeProbe {
   std::string name;
   glm::dvec3 captureMeters{0.0};
-  std::string kind;                       // methodId of the kept shape
+  Method method = Method::Infinite;       // what the shader runs: methodOf(kept shape)
   std::string candidate;                  // ProxyCandidate::kind of the kept one
   std::optional<double> kPerMeter;        // cheap_k
   std::optional<BoxShape> box;            // aabb, obb

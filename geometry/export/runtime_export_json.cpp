@@ -215,7 +215,7 @@ JsonLayoutValue enginesJson(const RuntimeEngines& e) {
 JsonLayoutValue probeJson(const RuntimeProbe& p, const FileWriter& w) {
   Members members{{"name", jsonString(p.name)},
                   {"capture", w.point(p.captureMeters)},
-                  {"kind", jsonString(p.kind)},
+                  {"kind", jsonString(std::string(methodName(p.method)))},
                   {"candidate", jsonString(p.candidate)}};
   if (p.kPerMeter) members.emplace_back("k", w.perLength(*p.kPerMeter));
   if (p.box) members.emplace_back("box", boxJson(*p.box, w));

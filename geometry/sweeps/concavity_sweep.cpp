@@ -32,11 +32,11 @@ SweepPoint pointOf(double arm, const ProxyCandidate& c) {
   return {arm, c.error, 0, std::nullopt, planeCount(c.shape)};
 }
 
-const ProxyCandidate& candidateOfKind(const ProbeProxyBuild& build, const std::string& kind) {
+const ProxyCandidate& candidateOfKind(const ProbeProxyBuild& build, CandidateOrigin origin) {
   const auto it = std::find_if(build.candidates.begin(), build.candidates.end(),
-                               [&](const ProxyCandidate& c) { return c.kind == kind; });
+                               [&](const ProxyCandidate& c) { return c.origin == origin; });
   if (it == build.candidates.end())
-    throw std::logic_error("concavity sweep: the build made no " + kind + " candidate");
+    throw std::logic_error("concavity sweep: the build made no such candidate");
   return *it;
 }
 
@@ -59,11 +59,14 @@ Sweep concavitySweep() {
     // The arm probe stays 2 m from the x arm's end wall; with no arm it is the corner probe.
     const ProbeProxyBuild inArm =
         buildProbeProxy(level, lRoomProbe(4.0, armMeters), artistBox, options);
-    sweep.series[0].points.push_back(pointOf(armMeters, candidateOfKind(inArm, "authored")));
+    sweep.series[0].points.push_back(
+        pointOf(armMeters, candidateOfKind(inArm, CandidateOrigin::Authored)));
     sweep.series[1].points.push_back(pointOf(armMeters, inArm.candidates[inArm.kept]));
-    sweep.series[2].points.push_back(pointOf(armMeters, candidateOfKind(inArm, "infinite")));
+    sweep.series[2].points.push_back(
+        pointOf(armMeters, candidateOfKind(inArm, CandidateOrigin::Infinite)));
     const ProbeProxyBuild corner = buildProbeProxy(level, lRoomProbe(4.0, 0), artistBox, options);
-    sweep.series[3].points.push_back(pointOf(armMeters, candidateOfKind(corner, "authored")));
+    sweep.series[3].points.push_back(
+        pointOf(armMeters, candidateOfKind(corner, CandidateOrigin::Authored)));
     sweep.series[4].points.push_back(pointOf(armMeters, corner.candidates[corner.kept]));
   }
   return sweep;

@@ -31,7 +31,7 @@ void checkProxyError(const LevelRayCaster& level, const Probe& probe, const Prox
                 "misses), over the %.2f deg tolerance; the generated proxy (%s, %d planes): p95 "
                 "%.2f deg",
                 error.p95Deg, error.medianDeg, 100.0 * error.missRate, options.toleranceDeg,
-                kept.kind.c_str(), planeCount(kept.shape), kept.error.p95Deg);
+                candidateName(kept).c_str(), planeCount(kept.shape), kept.error.p95Deg);
   std::string message = "probe '" + probe.name;
   message += text;
   out.push_back({probe.name, "proxy_error_over_tolerance", "warning", error.p95Deg,

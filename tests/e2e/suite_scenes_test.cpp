@@ -169,7 +169,7 @@ TEST_P(SuiteLevel, BuiltProxiesAreValidAndAccurate) {
     }
     if (concaveRoom) {
       const ErrorFigures& artist = b.candidates.front().error;
-      ASSERT_EQ(b.candidates.front().kind, "authored");
+      ASSERT_EQ(b.candidates.front().origin, CandidateOrigin::Authored);
       EXPECT_LE(kept.error.p95Deg, artist.p95Deg + 0.01) << b.probe;
       EXPECT_LE(kept.error.medianDeg, artist.medianDeg + 0.005) << b.probe;
       EXPECT_LT(planeCount(kept.shape), 32) << b.probe;
@@ -252,7 +252,7 @@ TEST_P(SuiteLevel, EnginePresetsAreTheKeptBox) {
                            b.probe == "ground_north" || b.probe == "upper_south" ||
                            b.probe == "upper_north";
     if (issueRoom) {
-      EXPECT_TRUE(box.has_value()) << b.probe << " kept " << kept.kind;
+      EXPECT_TRUE(box.has_value()) << b.probe << " kept " << candidateName(kept);
     }
     if (!box) {
       if (e.unrealBox) {
@@ -290,7 +290,7 @@ TEST_P(SuiteLevel, EnginePresetsAreTheKeptBox) {
     EXPECT_LE(cornerDistance(bevy, keptCorners), kTolerance) << b.probe << " bevy";
     for (const EngineSource* source : {&e.unrealBox->source, &e.godot->source, &e.bevy->source}) {
       EXPECT_TRUE(source->keptProxy) << b.probe;
-      EXPECT_EQ(source->candidate, kept.kind) << b.probe;
+      EXPECT_EQ(source->candidate, candidateName(kept)) << b.probe;
       EXPECT_EQ(source->error.p95Deg, kept.error.p95Deg) << b.probe;
     }
     // Unity: axis-aligned, box centre = position + center, full size; left-handed Y up:

@@ -94,7 +94,7 @@ TEST(BuildProbeProxy, KeptConvexProxiesContainTheCaptureAndPassTheMeshChecks) {
   const ProbeProxyBuild b =
       buildProbeProxy(level, probeAt(capture, {0, 0, 0}, {8, 3, 3}), std::nullopt, o);
   const auto* convex = std::get_if<ConvexProxy>(&kept(b).shape);
-  ASSERT_NE(convex, nullptr) << kept(b).kind;
+  ASSERT_NE(convex, nullptr) << candidateName(kept(b));
   EXPECT_LT(signedDistanceOutside(convex->planes, capture), 0.0);
   EXPECT_TRUE(checkConvexProxy(*convex, capture).empty());
 }
@@ -108,7 +108,7 @@ TEST(BuildProbeProxy, LRoomBeatsItsBoundingBoxByHalf) {
                         o.regenerate = true;
                         return o;
                       }());
-  ASSERT_EQ(b.candidates.front().kind, "authored");
+  ASSERT_EQ(b.candidates.front().origin, CandidateOrigin::Authored);
   EXPECT_NE(b.kept, 0u);
   // Most reflections land on walls both proxies model exactly, so medians sit at the numeric
   // floor for both; the box's failure shows in the tail: the arm's inner wall is not on it.
@@ -126,7 +126,7 @@ TEST(BuildProbeProxy, AuthoredProxyIsKeptAndMeasured) {
   const ProbeProxyBuild b =
       buildProbeProxy(level, probeAt({2, 2, 1.6}, lo, hi), tooSmall, fastOptions());
   EXPECT_EQ(b.kept, 0u);
-  EXPECT_EQ(kept(b).kind, "authored");
+  EXPECT_EQ(kept(b).origin, CandidateOrigin::Authored);
   EXPECT_GT(kept(b).error.missRate, 0.2);  // floor points outside the small box are misses
 }
 

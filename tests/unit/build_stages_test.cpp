@@ -79,7 +79,7 @@ TEST(BuildStages, FitCandidatesComeInTheirFixedOrderAndTheBoxIsTheRoom) {
   const ProbeSamples s = drawProbeSamples(room(), probe(), options());
   const FittedCandidates f = fitCandidates(view, s.fit, ProxyShape(InfiniteShape{}));
   std::vector<std::string> kinds;
-  for (const ProxyCandidate& c : f.candidates) kinds.push_back(c.kind);
+  for (const ProxyCandidate& c : f.candidates) kinds.push_back(candidateName(c));
   EXPECT_EQ(kinds, (std::vector<std::string>{"authored", "infinite", "cheap_k", "sphere",
                                              "min_sphere", "aabb", "obb", "hull"}));
   ASSERT_TRUE(f.hull.has_value());
@@ -105,15 +105,16 @@ TEST(BuildStages, SimplificationStartsFromTheWallsAndNamesEachStepByItsPlanes) {
   EXPECT_GE(ms, 0.0);
   for (const ProxyCandidate& c : steps) {
     const auto& convex = std::get<ConvexProxy>(c.shape);
-    EXPECT_EQ(c.kind, "convex_" + std::to_string(convex.planes.size()));
+    EXPECT_EQ(c.origin, CandidateOrigin::Simplified);
+    EXPECT_EQ(candidateName(c), "convex_" + std::to_string(convex.planes.size()));
     EXPECT_GE(convex.planes.size(), 4u);
     EXPECT_LT(convex.planes.size(), start.size());
   }
 }
 
-ProxyCandidate candidate(std::string kind, ProxyShape shape, double p95, double mean,
+ProxyCandidate candidate(CandidateOrigin origin, ProxyShape shape, double p95, double mean,
                          double missRate = 0.0) {
-  ProxyCandidate c{std::move(kind), std::move(shape), {}, {}, 0.0};
+  ProxyCandidate c{origin, std::move(shape), {}, {}, 0.0};
   c.error.p95Deg = p95;
   c.error.meanCostDeg = mean;
   c.error.missRate = missRate;
@@ -130,23 +131,26 @@ ConvexProxy planes(int count) {
 TEST(BuildStages, SelectionKeepsTheFewestPlanesWithinToleranceElseTheMostAccurate) {
   ProxyBuildOptions o;
   o.toleranceDeg = 1.0;
-  std::vector<ProxyCandidate> c = {
-      candidate("infinite", InfiniteShape{}, 50, 20), candidate("aabb", BoxShape{}, 0.9, 0.3),
-      candidate("convex_5", planes(5), 0.5, 0.2), candidate("convex_4", planes(4), 2.0, 0.5)};
+  std::vector<ProxyCandidate> c = {candidate(CandidateOrigin::Infinite, InfiniteShape{}, 50, 20),
+                                   candidate(CandidateOrigin::Aabb, BoxShape{}, 0.9, 0.3),
+                                   candidate(CandidateOrigin::Simplified, planes(5), 0.5, 0.2),
+                                   candidate(CandidateOrigin::Simplified, planes(4), 2.0, 0.5)};
   EXPECT_EQ(selectProxy(c, o), 2u);  // 5 planes under the tolerance beat the 6-plane box
-  c[2] = candidate("convex_5", planes(5), 0.5, 0.2, 0.5);  // ... unless it misses
+  c[2] = candidate(CandidateOrigin::Simplified, planes(5), 0.5, 0.2, 0.5);  // ... unless it misses
   EXPECT_EQ(selectProxy(c, o), 1u);
   o.toleranceDeg = 0.1;  // nothing meets it: the best p95 with misses, sparing planes
   EXPECT_EQ(selectProxy(c, o), 1u);
   // A proxy that misses 1% of rays (10x the allowed rate) but is right elsewhere beats a
   // never-missing cheap_k that is wrong everywhere: the player sees p95, misses included.
-  std::vector<ProxyCandidate> real = {candidate("cheap_k", CheapKShape{}, 60, 20),
-                                      candidate("aabb", BoxShape{}, 40, 12),
-                                      candidate("convex_6", planes(6), 14, 5, 0.01)};
+  std::vector<ProxyCandidate> real = {
+      candidate(CandidateOrigin::CheapK, CheapKShape{}, 60, 20),
+      candidate(CandidateOrigin::Aabb, BoxShape{}, 40, 12),
+      candidate(CandidateOrigin::Simplified, planes(6), 14, 5, 0.01)};
   EXPECT_EQ(selectProxy(real, o), 2u);
-  real[1] = candidate("aabb", BoxShape{}, 14.2, 5);  // within noise of the best: the simpler box
+  real[1] = candidate(CandidateOrigin::Aabb, BoxShape{}, 14.2,
+                      5);  // within noise of the best: the simpler box
   EXPECT_EQ(selectProxy(real, o), 1u);
-  c.insert(c.begin(), candidate("authored", BoxShape{}, 90, 90));
+  c.insert(c.begin(), candidate(CandidateOrigin::Authored, BoxShape{}, 90, 90));
   EXPECT_EQ(selectProxy(c, o), 0u);  // the artist's, unless asked to regenerate
   o.regenerate = true;
   EXPECT_EQ(selectProxy(c, o), 2u);
@@ -157,7 +161,7 @@ TEST(BuildStages, FinishingTheKeptConvexGivesItCornersAndChecksTheCapture) {
   ConvexProxy box = convexFromBox({0.5 * (kLo + kHi), 0.5 * (kHi - kLo), {1, 0, 0, 0}});
   box.verticesMeters.clear();
   box.triangles.clear();
-  b.candidates.push_back({"convex_6", box, {}, {}, 0.0});
+  b.candidates.push_back({CandidateOrigin::Simplified, box, {}, {}, 0.0});
   finishKeptProxy(b, kCapture);
   const auto& kept = std::get<ConvexProxy>(b.candidates[0].shape);
   EXPECT_EQ(kept.verticesMeters.size(), 8u);

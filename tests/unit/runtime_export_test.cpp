@@ -109,20 +109,21 @@ ErrorFigures figures(double median, double p95, double max, double miss, std::si
 // other than Unity take the obb.
 std::vector<ProxyCandidate> roomCandidates() {
   std::vector<ProxyCandidate> c(6);
-  c[0] = {"infinite", InfiniteShape{}, figures(kNaN, kNaN, kNaN, 0.0, 0), {}, 0.0};
-  c[1] = {"cheap_k", CheapKShape{0.4}, figures(6.0, 12.0, 20.0, 0.0, 4096), {}, 0.1};
-  c[2] = {"sphere",
+  c[0] = {CandidateOrigin::Infinite, InfiniteShape{}, figures(kNaN, kNaN, kNaN, 0.0, 0), {}, 0.0};
+  c[1] = {CandidateOrigin::CheapK, CheapKShape{0.4}, figures(6.0, 12.0, 20.0, 0.0, 4096), {}, 0.1};
+  c[2] = {CandidateOrigin::Sphere,
           SphereShape{{0.0, 0.0, 1.5}, glm::dvec3(3.0), quat(1, 0, 0, 0)},
           figures(3.0, 8.0, 15.0, 0.0, 4096),
           {},
           0.2};
-  c[3] = {"aabb", kRoomBox, figures(0.1, 0.5, 2.0, 0.0, 4096), {}, 0.3};
-  c[4] = {"obb",
+  c[3] = {CandidateOrigin::Aabb, kRoomBox, figures(0.1, 0.5, 2.0, 0.0, 4096), {}, 0.3};
+  c[4] = {CandidateOrigin::Obb,
           BoxShape{{0.0, 0.0, 1.5}, {3.1, 2.1, 1.5}, aboutZ(30.0)},
           figures(0.1, 0.4, 2.5, 0.01, 4096),
           {},
           0.4};
-  c[5] = {"convex_8", chamferedRoom(), figures(0.05, 0.2, 1.0, 0.0, 4096), {}, 0.5};
+  c[5] = {
+      CandidateOrigin::Simplified, chamferedRoom(), figures(0.05, 0.2, 1.0, 0.0, 4096), {}, 0.5};
   return c;
 }
 
@@ -276,7 +277,7 @@ void expectSameRuntime(const Runtime& read, const Runtime& made, double rel) {
     const RuntimeProbe& m = made.probes[i];
     EXPECT_EQ(r.name, m.name);
     expectClose(r.captureMeters, m.captureMeters, rel);
-    EXPECT_EQ(r.kind, m.kind);
+    EXPECT_EQ(r.method, m.method);
     EXPECT_EQ(r.candidate, m.candidate);
     ASSERT_EQ(r.kPerMeter.has_value(), m.kPerMeter.has_value());
     if (m.kPerMeter) EXPECT_CLOSE(*r.kPerMeter, *m.kPerMeter, rel);
@@ -333,7 +334,7 @@ TEST_F(RuntimeExport, EveryKindReadsBackExactly) {
   const char* kinds[] = {"infinite", "cheap_k", "sphere", "aabb", "obb", "convex"};
   const int planes[] = {0, 0, 0, 6, 6, 8};
   for (int i = 0; i < 6; ++i) {
-    EXPECT_EQ(read.probes[i].kind, kinds[i]);
+    EXPECT_EQ(methodName(read.probes[i].method), kinds[i]);
     EXPECT_EQ(read.probes[i].planesCount, planes[i]);
   }
   EXPECT_TRUE(read.probes[0].convex.verticesMeters.empty());
@@ -645,8 +646,11 @@ TEST_F(RuntimeExport, EnginesTakeTheKeptBoxElseTheBestBoxAndUnityAnAabb) {
 
   // A kept convex that is the room box: the engines get that box with its error.
   std::vector<ProbeProxyBuild> convexBuilds = roomBuilds();
-  convexBuilds[5].candidates[5] = {
-      "convex_6", convexFromBox(kRoomBox), figures(0.0, 1e-5, 1e-4, 0.0, 4096), {}, 0.5};
+  convexBuilds[5].candidates[5] = {CandidateOrigin::Simplified,
+                                   convexFromBox(kRoomBox),
+                                   figures(0.0, 1e-5, 1e-4, 0.0, 4096),
+                                   {},
+                                   0.5};
   const Runtime convex = makeRuntimeExport(roomScene(folder_, UpAxis::Z, 1.0), convexBuilds);
   const RuntimeEngines& c6 = convex.probes[5].engines;
   EXPECT_EQ(c6.unrealBox->source.candidate, "convex_6");

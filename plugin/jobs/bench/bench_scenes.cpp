@@ -81,7 +81,7 @@ std::optional<double> psnrDb(const ImageReference& ref, const ProxyCandidate& ca
       ref.views, [&](const MirrorViewReference&) { return lookup; },
       [&](const MirrorViewReference& view, const MirrorViewReconstruction& reconstruction) {
         if (!picturesIn.empty())
-          writeMirrorViewImages(picturesIn, view.view.name + "_" + candidate.kind, view,
+          writeMirrorViewImages(picturesIn, view.view.name + "_" + candidateName(candidate), view,
                                 reconstruction);
       });
 }
@@ -141,16 +141,16 @@ std::vector<BenchResult> benchScenes(const std::vector<std::string>& sceneFiles,
         BenchResult row;
         row.scene = s.name;
         row.probe = builds[p].probe;
-        row.candidate = candidate.kind;
+        row.candidate = candidateName(candidate);
         row.method = std::string(methodId(candidate.shape));
         row.planes = planeCount(candidate.shape);
         row.kept = c == builds[p].kept;
         row.error = candidate.error;
         if (images) {
           try {
-            const bool pictured =
-                !options.imagesFolder.empty() &&
-                (row.kept || candidate.kind == "infinite" || candidate.kind == "authored");
+            const bool pictured = !options.imagesFolder.empty() &&
+                                  (row.kept || candidate.origin == CandidateOrigin::Infinite ||
+                                   candidate.origin == CandidateOrigin::Authored);
             row.psnrDb = psnrDb(*images, candidate, probe.captureMeters,
                                 pictured ? options.imagesFolder / s.name : "");
           } catch (const std::invalid_argument&) {

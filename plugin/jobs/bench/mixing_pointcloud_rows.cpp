@@ -47,7 +47,8 @@ std::vector<MethodRow> mixingRows(const ProbeBenchInputs& in) {
   const int faceSize = in.images ? in.images->cube.faceSize(0) : in.faceSize;
   std::vector<MethodRow> rows;
   for (MixingMethod method : {MixingMethod::MixingPlane, MixingMethod::RasterConvex}) {
-    MethodRow m{rowOf(in, std::string(mixingMethodName(method)), in.kept->kind), std::nullopt};
+    MethodRow m{rowOf(in, std::string(mixingMethodName(method)), candidateName(*in.kept)),
+                std::nullopt};
     m.row.planes = static_cast<int>(volume->planes.size());
     m.row.kept = true;
     try {

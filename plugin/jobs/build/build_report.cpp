@@ -45,7 +45,7 @@ std::string buildReportJson(const std::vector<ProbeProxyBuild>& builds) {
     nlohmann::json candidates = nlohmann::json::array();
     for (const ProxyCandidate& c : b.candidates) {
       candidates.push_back(
-          {{"kind", c.kind},
+          {{"kind", candidateName(c)},
            {"method", std::string(methodId(c.shape))},
            {"planes", planeCount(c.shape)},
            {"error", errorJson(c.error)},
@@ -56,7 +56,7 @@ std::string buildReportJson(const std::vector<ProbeProxyBuild>& builds) {
     probes.push_back({{"name", b.probe},
                       {"proxy",
                        {{"kind", std::string(methodId(kept.shape))},
-                        {"candidate", kept.kind},
+                        {"candidate", candidateName(kept)},
                         {"planes", planeCount(kept.shape)},
                         {"vertices", vertexCount(kept.shape)}}},
                       {"error", errorJson(kept.error)},
@@ -76,8 +76,8 @@ std::string buildReportJson(const std::vector<ProbeProxyBuild>& builds) {
 void printBuildTable(std::ostream& out, const std::vector<ProbeProxyBuild>& builds) {
   for (const ProbeProxyBuild& b : builds) {
     const ProxyCandidate& kept = b.candidates[b.kept];
-    out << "probe " << b.probe << ": kept " << kept.kind << " (" << methodId(kept.shape) << ", "
-        << planeCount(kept.shape) << " planes), mirror_floor median "
+    out << "probe " << b.probe << ": kept " << candidateName(kept) << " (" << methodId(kept.shape)
+        << ", " << planeCount(kept.shape) << " planes), mirror_floor median "
         << figure(kept.error.medianDeg, 3) << " deg, p95 " << figure(kept.error.p95Deg, 3)
         << " deg, miss " << figure(100 * kept.error.missRate, 1) << "%, built in "
         << figure(b.buildMs, 1) << " ms\n";
@@ -90,14 +90,15 @@ void printBuildTable(std::ostream& out, const std::vector<ProbeProxyBuild>& buil
       // The simplification gives a candidate per plane count; a person needs a few of them
       // (--json lists all).
       const int planes = planeCount(c.shape);
-      const bool everyStep = c.kind.rfind("convex_", 0) == 0;
+      const bool everyStep = c.origin == CandidateOrigin::Simplified;
       if (everyStep && i != b.kept && planes != 4 && planes != 6 && planes != 8 && planes % 8 != 0)
         continue;
-      out << (i == b.kept ? "* " : "  ") << std::left << std::setw(12) << c.kind << std::right
-          << std::setw(7) << planeCount(c.shape) << std::setw(10) << figure(c.error.medianDeg, 3)
-          << std::setw(10) << figure(c.error.p95Deg, 3) << std::setw(10)
-          << figure(c.error.maxDeg, 2) << std::setw(8) << figure(100 * c.error.missRate, 1)
-          << std::setw(10) << figure(100 * c.error.occludedRate, 1) << "\n";
+      out << (i == b.kept ? "* " : "  ") << std::left << std::setw(12) << candidateName(c)
+          << std::right << std::setw(7) << planeCount(c.shape) << std::setw(10)
+          << figure(c.error.medianDeg, 3) << std::setw(10) << figure(c.error.p95Deg, 3)
+          << std::setw(10) << figure(c.error.maxDeg, 2) << std::setw(8)
+          << figure(100 * c.error.missRate, 1) << std::setw(10)
+          << figure(100 * c.error.occludedRate, 1) << "\n";
     }
   }
 }
