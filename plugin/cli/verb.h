@@ -22,5 +22,6 @@ Verb addValidateVerb(CLI::App& app);
 Verb addCorrectVerb(CLI::App& app);
 Verb addBlendVerb(CLI::App& app);
 Verb addBenchVerb(CLI::App& app);
+Verb addSurveyVerb(CLI::App& app);
 
 }  // namespace probeproxy::cli
