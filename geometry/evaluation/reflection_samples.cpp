@@ -70,8 +70,7 @@ void traceTrueHit(const LevelRayCaster& level, ReflectionSample& s) {
   if (!s.hitsSky) s.trueHitMeters = s.xMeters + double(hit.t) * s.reflected;
 }
 
-bool trueHitHiddenFrom(const LevelRayCaster& level, glm::dvec3 capture,
-                       const ReflectionSample& s) {
+bool trueHitHiddenFrom(const LevelRayCaster& level, glm::dvec3 capture, const ReflectionSample& s) {
   // The cubemap shows the sky along r only if nothing stands in the way from C.
   if (s.hitsSky) return castDouble(level, capture, s.reflected).hit();
   const glm::dvec3 toHit = s.trueHitMeters - capture;

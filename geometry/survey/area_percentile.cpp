@@ -7,9 +7,8 @@ namespace probeproxy {
 
 double areaPercentile(std::vector<AreaValue>& values, double fraction) {
   if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
-  std::sort(values.begin(), values.end(), [](const AreaValue& a, const AreaValue& b) {
-    return a.value < b.value;
-  });
+  std::sort(values.begin(), values.end(),
+            [](const AreaValue& a, const AreaValue& b) { return a.value < b.value; });
   double total = 0.0;
   for (const AreaValue& v : values) total += v.areaSquareMeters;
   // A relative margin, so an exact 50% of equal areas lands on the lower value as it should

@@ -34,9 +34,13 @@ void placeOnFloor(const LevelRayCaster& level, const WalkableFloor& floor, const
                   double u, double v, const FloorSampleOptions& o, ReflectionSample& s) {
   s.xMeters = cell.pointMeters;
   s.normal = cell.normal;
+  // Jittered over the middle 90% of the cell: a point within a hair of a wall that runs along
+  // a cell edge would have its reflection ray start past the wall (traceTrueHit skips 0.1 mm
+  // of its own surface), and see out of a closed room.
+  const double spread = 0.9 * floor.spacingMeters;
   Ray down;
-  down.originMeters = {cell.pointMeters.x + (u - 0.5) * floor.spacingMeters,
-                       cell.pointMeters.y + (v - 0.5) * floor.spacingMeters,
+  down.originMeters = {cell.pointMeters.x + (u - 0.5) * spread,
+                       cell.pointMeters.y + (v - 0.5) * spread,
                        cell.pointMeters.z + 0.5 * o.stepHeightMeters};
   down.direction = {0.0f, 0.0f, -1.0f};
   down.tMax = static_cast<float>(o.stepHeightMeters);

@@ -25,8 +25,8 @@ struct FloorSampleOptions {
 };
 
 struct FloorSample {
-  ReflectionSample sample;  // occluded is false: it is the blend's to decide, per probe
-  std::size_t cell = 0;     // index into WalkableFloor::cells
+  ReflectionSample sample;        // occluded is false: it is the blend's to decide, per probe
+  std::size_t cell = 0;           // index into WalkableFloor::cells
   double areaSquareMeters = 0.0;  // the cell's area over its sample count
 };
 

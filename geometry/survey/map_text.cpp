@@ -61,13 +61,14 @@ const Glyph* findGlyph(char c) {
 
 }  // namespace
 
-int drawText(Rgb8Canvas& canvas, int col, int row, std::string_view text, int scale,
-             std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+int drawText(Rgb8Canvas& canvas, int col, int row, std::string_view text, int scale, std::uint8_t r,
+             std::uint8_t g, std::uint8_t b) {
   for (const char c : text) {
     if (const Glyph* glyph = findGlyph(c)) {
       for (int y = 0; y < kGlyphHeight; ++y)
         for (int x = 0; x < kGlyphWidth; ++x)
-          if (glyph->rows[y][x] == '#') canvas.fill(col + x * scale, row + y * scale, scale, scale, r, g, b);
+          if (glyph->rows[y][x] == '#')
+            canvas.fill(col + x * scale, row + y * scale, scale, scale, r, g, b);
     }
     col += (kGlyphWidth + 1) * scale;
   }

@@ -28,7 +28,7 @@ inline constexpr int kGlyphWidth = 5, kGlyphHeight = 7;
 
 // Draws `text` with its top-left corner at (col, row), each font pixel `scale` pixels square,
 // one font pixel between characters. Returns the column after the last character.
-int drawText(Rgb8Canvas& canvas, int col, int row, std::string_view text, int scale,
-             std::uint8_t r, std::uint8_t g, std::uint8_t b);
+int drawText(Rgb8Canvas& canvas, int col, int row, std::string_view text, int scale, std::uint8_t r,
+             std::uint8_t g, std::uint8_t b);
 
 }  // namespace probeproxy

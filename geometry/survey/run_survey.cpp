@@ -19,7 +19,8 @@ namespace {
 int samplesPerCell(const WalkableFloor& floor, const SurveyOptions& o) {
   const std::size_t cells = std::max<std::size_t>(1, floor.cells.size());
   const std::size_t fit = o.maxSamples / cells;
-  return static_cast<int>(std::clamp<std::size_t>(fit, 1, static_cast<std::size_t>(o.samplesPerCell)));
+  return static_cast<int>(
+      std::clamp<std::size_t>(fit, 1, static_cast<std::size_t>(o.samplesPerCell)));
 }
 
 SurveyCellError cellError(std::span<const SurveySampleError> errors) {

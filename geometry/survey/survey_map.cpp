@@ -49,7 +49,9 @@ struct MapFrame {  // world x, y -> pixel
     return {minMeters.x + (col + 0.5) / pixelsPerMeter,
             minMeters.y + (height - row - 0.5) / pixelsPerMeter};
   }
-  int column(double x) const { return static_cast<int>(std::floor((x - minMeters.x) * pixelsPerMeter)); }
+  int column(double x) const {
+    return static_cast<int>(std::floor((x - minMeters.x) * pixelsPerMeter));
+  }
   int row(double y) const {
     return height - 1 - static_cast<int>(std::floor((y - minMeters.y) * pixelsPerMeter));
   }
@@ -145,10 +147,10 @@ void drawLegend(Rgb8Canvas& canvas, int left, double pixelsPerMeter, int storey,
   for (std::size_t k = kSurveyScaleDeg.size(); k-- > 0;) {
     const auto& c = kBinColours[k];
     canvas.fill(x, y, 28, 18, c[0], c[1], c[2]);
-    const std::string label = k + 1 < kSurveyScaleDeg.size()
-                                  ? degreeLabel(kSurveyScaleDeg[k]) + "-" +
-                                        degreeLabel(kSurveyScaleDeg[k + 1])
-                                  : degreeLabel(kSurveyScaleDeg[k]) + "+";
+    const std::string label =
+        k + 1 < kSurveyScaleDeg.size()
+            ? degreeLabel(kSurveyScaleDeg[k]) + "-" + degreeLabel(kSurveyScaleDeg[k + 1])
+            : degreeLabel(kSurveyScaleDeg[k]) + "+";
     drawText(canvas, x + 36, y + 2, label, 2, 0, 0, 0);
     y += 24;
   }
@@ -169,7 +171,8 @@ void drawLegend(Rgb8Canvas& canvas, int left, double pixelsPerMeter, int storey,
   canvas.fill(x, y + 8, 28, 2, 255, 0, 0);
   drawText(canvas, x + 36, y + 2, "influence", 2, 0, 0, 0);
   y += 34;
-  // A scale bar of a round length near a quarter of the legend's width... or wider levels' 1-10-100.
+  // A scale bar of a round length near a quarter of the legend's width... or wider levels'
+  // 1-10-100.
   double meters = 1.0;
   while (meters * pixelsPerMeter < 40.0) meters *= 10.0;
   while (meters * pixelsPerMeter > 160.0 && meters > 0.01) meters /= 10.0;
@@ -178,8 +181,8 @@ void drawLegend(Rgb8Canvas& canvas, int left, double pixelsPerMeter, int storey,
   drawText(canvas, x, y + 12, degreeLabel(meters) + " m", 2, 0, 0, 0);
   y += 40;
   if (storeys > 1)
-    drawText(canvas, x, y, "storey " + std::to_string(storey + 1) + "/" + std::to_string(storeys), 2,
-             0, 0, 0);
+    drawText(canvas, x, y, "storey " + std::to_string(storey + 1) + "/" + std::to_string(storeys),
+             2, 0, 0, 0);
 }
 
 }  // namespace
@@ -210,8 +213,8 @@ Rgb8Canvas renderSurveyMap(const SurveyResult& r, std::span<const Probe> probes,
   drawInfluences(canvas, f, probes, floorZ + 1.0);
   for (const Probe& p : probes) {
     // On a storey's map, the probes standing over it (one storey: all of them).
-    const bool here = storeyCount == 1 || (p.captureMeters.z >= floorZ - 0.5 &&
-                                           p.captureMeters.z <= topZ + 3.0);
+    const bool here =
+        storeyCount == 1 || (p.captureMeters.z >= floorZ - 0.5 && p.captureMeters.z <= topZ + 3.0);
     if (here) drawMarker(canvas, f.column(p.captureMeters.x), f.row(p.captureMeters.y));
   }
   drawLegend(canvas, f.width, f.pixelsPerMeter, storey, storeyCount);
@@ -222,12 +225,14 @@ std::vector<std::filesystem::path> writeSurveyMaps(const SurveyResult& r,
                                                    std::span<const Probe> probes,
                                                    const std::filesystem::path& outFolder) {
   const std::vector<int> storeyOf = floorStoreys(r.floor);
-  const int storeys = storeyOf.empty() ? 1 : *std::max_element(storeyOf.begin(), storeyOf.end()) + 1;
+  const int storeys =
+      storeyOf.empty() ? 1 : *std::max_element(storeyOf.begin(), storeyOf.end()) + 1;
   std::vector<std::filesystem::path> files;
   for (int s = 0; s < storeys; ++s) {
     const Rgb8Canvas map = renderSurveyMap(r, probes, storeyOf, s, storeys);
-    const std::string name = storeys == 1 ? r.scene + "_survey.png"
-                                          : r.scene + "_survey_storey" + std::to_string(s + 1) + ".png";
+    const std::string name = storeys == 1
+                                 ? r.scene + "_survey.png"
+                                 : r.scene + "_survey_storey" + std::to_string(s + 1) + ".png";
     files.push_back(outFolder / name);
     writePng(files.back(), map.width, map.height, map.rgb8);
   }

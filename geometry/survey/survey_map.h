@@ -19,8 +19,8 @@
 namespace probeproxy {
 
 // The scale's bin edges in degrees: bin k holds [edge k, edge k+1), the last one edge 7 and up.
-inline constexpr std::array<double, 8> kSurveyScaleDeg = {0.0, 0.25, 1.0, 2.5, 5.0, 10.0, 20.0,
-                                                          45.0};
+inline constexpr std::array<double, 8> kSurveyScaleDeg = {0.0, 0.25, 1.0,  2.5,
+                                                          5.0, 10.0, 20.0, 45.0};
 
 // The colour of an error on the fixed scale.
 std::array<std::uint8_t, 3> surveyErrorColour(double errorDeg);

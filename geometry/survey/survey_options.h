@@ -23,14 +23,14 @@ enum class SurveyProxies {
 };
 
 struct SurveyOptions {
-  BlendOptions blend;           // Lagarde by default, at most 4 probes
-  double toleranceDeg = 5.0;    // over_tolerance_share: floor whose sample error exceeds this
-  WalkableFloorOptions floor;   // grid, step height, head clearance
+  BlendOptions blend;          // Lagarde by default, at most 4 probes
+  double toleranceDeg = 5.0;   // over_tolerance_share: floor whose sample error exceeds this
+  WalkableFloorOptions floor;  // grid, step height, head clearance
   // Where the flood fill starts (spawn points); empty: the probes' capture points.
   std::vector<glm::dvec3> seedPointsMeters;
-  int samplesPerCell = 8;               // floor samples per floor cell, area-uniform in it
-  std::size_t maxSamples = 2'000'000;   // fewer per cell (at least 1) on huge floors
-  double eyeHeightMeters = 1.7;         // the camera above the floor under a sample
+  int samplesPerCell = 8;              // floor samples per floor cell, area-uniform in it
+  std::size_t maxSamples = 2'000'000;  // fewer per cell (at least 1) on huge floors
+  double eyeHeightMeters = 1.7;        // the camera above the floor under a sample
   int maxViewAttempts = 16;  // view directions tried before a sample is seen from straight above
   std::uint32_t seed = 1;
   SurveyProxies proxies = SurveyProxies::Scene;

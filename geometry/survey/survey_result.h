@@ -27,8 +27,8 @@ struct SurveyFigures {
 // One floor sample: where, what it cost, and how it was split.
 struct SurveySampleError {
   double errorDeg = std::numeric_limits<double>::quiet_NaN();  // NaN: uncovered or occluded
-  double areaSquareMeters = 0.0;  // of floor this sample stands for
-  double occludedWeight = 0.0;    // blend weight of the probes that cannot see the true hit
+  double areaSquareMeters = 0.0;                               // of floor this sample stands for
+  double occludedWeight = 0.0;  // blend weight of the probes that cannot see the true hit
   bool uncovered = false;
 };
 

@@ -13,8 +13,8 @@ namespace probeproxy {
 
 namespace {
 
-constexpr int kMaxLayersPerColumn = 64;  // surfaces one column passes through before it stops
-constexpr double kOffsetMeters = 1e-3;   // off a surface, so a ray does not hit it again
+constexpr int kMaxLayersPerColumn = 64;      // surfaces one column passes through before it stops
+constexpr double kOffsetMeters = 1e-3;       // off a surface, so a ray does not hit it again
 constexpr double kSameSurfaceMeters = 0.01;  // duplicate triangles: one floor, not two
 
 struct Layer {  // one floor surface under a grid column
@@ -85,8 +85,8 @@ bool connected(const LevelRayCaster& level, glm::dvec2 from, double zFrom, glm::
   if (std::abs(zTo - zFrom) > o.stepHeightMeters) return false;
   Ray knee;
   knee.originMeters = {from.x, from.y, std::max(zFrom, zTo) + o.kneeHeightMeters};
-  knee.direction = glm::vec3(static_cast<float>(to.x - from.x), static_cast<float>(to.y - from.y),
-                             0.0f);
+  knee.direction =
+      glm::vec3(static_cast<float>(to.x - from.x), static_cast<float>(to.y - from.y), 0.0f);
   knee.tMax = 1.0f;
   return !level.firstHit(knee).hit();
 }
@@ -131,9 +131,9 @@ void WalkableFloorOptions::check() const {
           "grid spacing must be 0.01 to 10 m, got " + std::to_string(gridSpacingMeters));
   require(stepHeightMeters >= 0.0 && stepHeightMeters <= 5.0,
           "step height must be 0 to 5 m, got " + std::to_string(stepHeightMeters));
-  require(headClearanceMeters > 0.0 && headClearanceMeters <= 10.0,
-          "head clearance must be over 0 and at most 10 m, got " +
-              std::to_string(headClearanceMeters));
+  require(
+      headClearanceMeters > 0.0 && headClearanceMeters <= 10.0,
+      "head clearance must be over 0 and at most 10 m, got " + std::to_string(headClearanceMeters));
   require(kneeHeightMeters > stepHeightMeters && kneeHeightMeters < headClearanceMeters,
           "knee height must lie between the step height and the head clearance");
   require(upwardCosine > 0.0 && upwardCosine <= 1.0, "upward cosine must be in (0, 1]");
@@ -222,8 +222,8 @@ WalkableFloor walkableFloor(const LevelRayCaster& level, std::span<const glm::dv
     for (std::size_t l = firstLayer[i]; l < firstLayer[i + 1]; ++l) {
       if (!reached[l]) continue;
       const glm::dvec2 xy = g.centre(c, r);
-      floor.cells.push_back({c, r, {xy.x, xy.y, layers[l].zMeters}, layers[l].normal,
-                             planArea / layers[l].normal.z});
+      floor.cells.push_back(
+          {c, r, {xy.x, xy.y, layers[l].zMeters}, layers[l].normal, planArea / layers[l].normal.z});
     }
   }
   return floor;

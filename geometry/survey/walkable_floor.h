@@ -17,15 +17,15 @@
 namespace probeproxy {
 
 struct WalkableFloorOptions {
-  double gridSpacingMeters = 0.25;  // side of a floor cell
-  double stepHeightMeters = 0.45;   // largest height change between neighbouring cells
+  double gridSpacingMeters = 0.25;   // side of a floor cell
+  double stepHeightMeters = 0.45;    // largest height change between neighbouring cells
   double headClearanceMeters = 1.8;  // free height a floor cell needs above it
   // Height above the higher of two neighbouring cells at which a ray between them must be free
   // (no wall between them); above the step height, so a stair's riser is not a wall.
   double kneeHeightMeters = 0.6;
-  double upwardCosine = 0.7;  // |normal.z| at least this (about 45 degrees: ramps, stairs)
+  double upwardCosine = 0.7;         // |normal.z| at least this (about 45 degrees: ramps, stairs)
   std::size_t maxCells = 4'000'000;  // grid columns; the spacing is coarsened to stay within it
-  void check() const;               // InputError on a value out of range
+  void check() const;                // InputError on a value out of range
 };
 
 struct FloorCell {
@@ -39,7 +39,7 @@ struct WalkableFloor {
   glm::dvec2 originMeters{0.0};  // world x, y of the grid's corner (column 0, row 0)
   double spacingMeters = 0.0;
   int columns = 0, rows = 0;
-  std::vector<FloorCell> cells;   // the reachable cells, by row, column, then height
+  std::vector<FloorCell> cells;    // the reachable cells, by row, column, then height
   std::size_t candidateCells = 0;  // floor cells with head room, reachable or not
   std::size_t seedsOnFloor = 0;    // seed points that found a floor cell under them
 

@@ -63,7 +63,8 @@ Verb addSurveyVerb(CLI::App& app) {
   verb->add_option("scene", o->scene, "scene file (*.scene.json)")->required();
   verb->add_flag("--json", o->json, "print the figures as JSON on stdout");
   verb->add_option("--out", o->out, "folder for survey.json and the error maps (PNG)");
-  verb->add_option("--scheme", o->scheme, "blend weights: lagarde (seed 000) or enlighten (seed 004)")
+  verb->add_option("--scheme", o->scheme,
+                   "blend weights: lagarde (seed 000) or enlighten (seed 004)")
       ->capture_default_str()
       ->check(CLI::IsMember({"lagarde", "enlighten"}));
   verb->add_option("--max-probes", s.blend.maxProbes, "blend at most this many probes")
