@@ -10,8 +10,11 @@
 #include "geometry/survey/survey_report.h"
 #include "plugin/cli/verb.h"
 
+#include <tbb/global_control.h>
+
 #include <iostream>
 #include <memory>
+#include <optional>
 
 namespace probeproxy::cli {
 
@@ -24,10 +27,13 @@ struct SurveyVerbOptions {
   std::string scheme = "lagarde";
   std::string proxy = "scene";
   std::string proxies;
+  int threads = 0;  // 0: all cores
   SurveyOptions survey;
 };
 
 int runSurveyVerb(SurveyVerbOptions& o) {
+  std::optional<tbb::global_control> threadLimit;
+  if (o.threads > 0) threadLimit.emplace(tbb::global_control::max_allowed_parallelism, o.threads);
   o.survey.blend.scheme = *blendSchemeFromName(o.scheme);
   o.survey.proxies = o.proxy == "infinite" ? SurveyProxies::Infinite
                      : o.proxy == "aabb"   ? SurveyProxies::BestAabb
@@ -93,6 +99,9 @@ Verb addSurveyVerb(CLI::App& app) {
   verb->add_option("--max-samples", s.maxSamples, "fewer samples per cell beyond this many")
       ->capture_default_str();
   verb->add_option("--seed", s.seed, "random seed of the samples")->capture_default_str();
+  verb->add_option("--threads", o->threads, "worker threads (0: all cores)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1024));
   return {verb, [o] { return runSurveyVerb(*o); }};
 }
 
