@@ -23,6 +23,8 @@ struct BoxRoomCase {
   double floorSquareMeters;  // the room's floor, less what stands on it
 };
 
+void PrintTo(const BoxRoomCase& c, std::ostream* out) { *out << c.level; }
+
 class SurveyBoxRoom : public ::testing::TestWithParam<BoxRoomCase> {};
 
 TEST_P(SurveyBoxRoom, AgreesWithThePerProbeFigures) {
