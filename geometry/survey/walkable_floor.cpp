@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <deque>
 #include <string>
 
@@ -124,20 +125,23 @@ std::ptrdiff_t seedCell(const Grid& g, const std::vector<std::size_t>& firstLaye
 }  // namespace
 
 void WalkableFloorOptions::check() const {
-  auto require = [](bool ok, const std::string& what) {
-    if (!ok) throw InputError("walkable floor", what);
+  // Named as the CLI spells them, the one place a user sets them.
+  auto require = [](bool ok, const char* option, const char* range, double value) {
+    if (ok) return;
+    char got[64];
+    std::snprintf(got, sizeof got, ", got %g", value);
+    throw InputError(option, std::string("must be ") + range + got);
   };
-  require(gridSpacingMeters >= 0.01 && gridSpacingMeters <= 10.0,
-          "grid spacing must be 0.01 to 10 m, got " + std::to_string(gridSpacingMeters));
-  require(stepHeightMeters >= 0.0 && stepHeightMeters <= 5.0,
-          "step height must be 0 to 5 m, got " + std::to_string(stepHeightMeters));
-  require(
-      headClearanceMeters > 0.0 && headClearanceMeters <= 10.0,
-      "head clearance must be over 0 and at most 10 m, got " + std::to_string(headClearanceMeters));
+  require(gridSpacingMeters >= 0.01 && gridSpacingMeters <= 10.0, "--grid", "0.01 to 10 m",
+          gridSpacingMeters);
+  require(stepHeightMeters >= 0.0 && stepHeightMeters <= 5.0, "--step-height", "0 to 5 m",
+          stepHeightMeters);
+  require(headClearanceMeters > 0.0 && headClearanceMeters <= 10.0, "--head-clearance",
+          "over 0 and at most 10 m", headClearanceMeters);
   require(kneeHeightMeters > stepHeightMeters && kneeHeightMeters < headClearanceMeters,
-          "knee height must lie between the step height and the head clearance");
-  require(upwardCosine > 0.0 && upwardCosine <= 1.0, "upward cosine must be in (0, 1]");
-  require(maxCells >= 1, "the cell budget must be at least 1");
+          "knee height", "above the step height and below the head clearance", kneeHeightMeters);
+  require(upwardCosine > 0.0 && upwardCosine <= 1.0, "upward cosine", "in (0, 1]", upwardCosine);
+  require(maxCells >= 1, "cell budget", "at least 1", static_cast<double>(maxCells));
 }
 
 double WalkableFloor::areaSquareMeters() const {
