@@ -118,10 +118,11 @@ SurveyResult surveyProbes(std::span<const SurveyProbe> probes, const LevelRayCas
   return result;
 }
 
-SurveyResult runSurvey(const Scene& scene, const LevelRayCaster& level, const SurveyOptions& o) {
+SurveyResult runSurvey(const Scene& scene, const LevelRayCaster& level, const SurveyOptions& o,
+                       const std::function<void(std::size_t, std::size_t)>& onProbeBuilt) {
   const auto start = std::chrono::steady_clock::now();
   o.check();
-  const std::vector<ProxyShape> shapes = surveyProxyShapes(scene, level, o);
+  const std::vector<ProxyShape> shapes = surveyProxyShapes(scene, level, o, onProbeBuilt);
   std::vector<SurveyProbe> probes;
   for (std::size_t i = 0; i < scene.probes.size(); ++i)
     probes.push_back({scene.probes[i].captureMeters, scene.probes[i].influence, shapes[i]});

@@ -12,14 +12,17 @@
 #include "geometry/survey/survey_options.h"
 #include "geometry/survey/survey_result.h"
 
+#include <functional>
 #include <span>
 
 namespace probeproxy {
 
 // Checks the options, resolves each probe's proxy (survey_proxies.h) and surveys. Throws
 // InputError when no seed point stands over walkable floor.
+// `onProbeBuilt(done, total)` reports the proxy builds, the slow part on real levels.
 SurveyResult runSurvey(const Scene& scene, const LevelRayCaster& level,
-                       const SurveyOptions& options);
+                       const SurveyOptions& options,
+                       const std::function<void(std::size_t, std::size_t)>& onProbeBuilt = {});
 
 // The same with the probes given: what runSurvey does once the proxies are known.
 SurveyResult surveyProbes(std::span<const SurveyProbe> probes, const LevelRayCaster& level,

@@ -25,8 +25,9 @@ std::vector<ProxyShape> fromExport(const Scene& scene, const std::filesystem::pa
 }
 
 // Builds only the probes that need it (`auto`, or all for BestAabb): builds are the slow part.
-std::vector<ProxyShape> fromBuilds(const Scene& scene, const LevelRayCaster& level,
-                                   const SurveyOptions& o) {
+std::vector<ProxyShape> fromBuilds(
+    const Scene& scene, const LevelRayCaster& level, const SurveyOptions& o,
+    const std::function<void(std::size_t, std::size_t)>& onProbeBuilt) {
   const bool aabb = o.proxies == SurveyProxies::BestAabb;
   std::vector<std::optional<ProxyShape>> shapes(scene.probes.size());
   Scene toBuild = scene;
@@ -40,7 +41,8 @@ std::vector<ProxyShape> fromBuilds(const Scene& scene, const LevelRayCaster& lev
   }
   ProxyBuildOptions buildOptions = o.build;
   if (aabb) buildOptions.regenerate = true;
-  const std::vector<ProbeProxyBuild> builds = buildSceneProxies(toBuild, level, buildOptions);
+  const std::vector<ProbeProxyBuild> builds =
+      buildSceneProxies(toBuild, level, buildOptions, onProbeBuilt);
   for (std::size_t b = 0; b < builds.size(); ++b) {
     const ProbeProxyBuild& build = builds[b];
     const ProxyCandidate* pick = &build.candidates.at(build.kept);
@@ -60,13 +62,14 @@ std::vector<ProxyShape> fromBuilds(const Scene& scene, const LevelRayCaster& lev
 
 }  // namespace
 
-std::vector<ProxyShape> surveyProxyShapes(const Scene& scene, const LevelRayCaster& level,
-                                          const SurveyOptions& o) {
+std::vector<ProxyShape> surveyProxyShapes(
+    const Scene& scene, const LevelRayCaster& level, const SurveyOptions& o,
+    const std::function<void(std::size_t, std::size_t)>& onProbeBuilt) {
   if (o.proxies == SurveyProxies::Infinite)
     return std::vector<ProxyShape>(scene.probes.size(), InfiniteShape{});
   if (o.proxies == SurveyProxies::Scene && !o.proxiesJson.empty())
     return fromExport(scene, o.proxiesJson);
-  return fromBuilds(scene, level, o);
+  return fromBuilds(scene, level, o, onProbeBuilt);
 }
 
 }  // namespace probeproxy

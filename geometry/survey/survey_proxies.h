@@ -8,13 +8,16 @@
 #include "geometry/raycast/level_ray_caster.h"
 #include "geometry/survey/survey_options.h"
 
+#include <functional>
 #include <vector>
 
 namespace probeproxy {
 
 // One shape per scene probe, in scene order. InputError when proxiesJson cannot be read or
 // lacks a probe of the scene.
-std::vector<ProxyShape> surveyProxyShapes(const Scene& scene, const LevelRayCaster& level,
-                                          const SurveyOptions& options);
+// `onProbeBuilt(done, total)` is called as `auto` probes finish building (serialized).
+std::vector<ProxyShape> surveyProxyShapes(
+    const Scene& scene, const LevelRayCaster& level, const SurveyOptions& options,
+    const std::function<void(std::size_t, std::size_t)>& onProbeBuilt = {});
 
 }  // namespace probeproxy

@@ -12,6 +12,8 @@
 
 #include <tbb/global_control.h>
 
+#include <unistd.h>
+
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -43,7 +45,16 @@ int runSurveyVerb(SurveyVerbOptions& o) {
   const Scene scene = readSceneFile(o.scene);
   const LevelMesh level = loadLevel(scene);
   const LevelRayCaster rayCaster(level);
-  const SurveyResult result = runSurvey(scene, rayCaster, o.survey);
+  const bool terminal = ::isatty(STDERR_FILENO) != 0;
+  bool built = false;
+  const SurveyResult result =
+      runSurvey(scene, rayCaster, o.survey, [&](std::size_t done, std::size_t total) {
+        built = true;
+        if (terminal)
+          std::cerr << "\rprobeproxy survey: proxies " << done << "/" << total << " probes"
+                    << std::flush;
+      });
+  if (terminal && built) std::cerr << "\n";
   const std::string json = surveyReportJson(result);
   if (o.json)
     std::cout << json;
