@@ -8,6 +8,7 @@
 #include "geometry/scene/scene_file.h"
 #include "geometry/survey/run_survey.h"
 #include "geometry/survey/survey_proxies.h"
+#include "geometry/survey/walkable_floor.h"
 
 #include <gtest/gtest.h>
 
@@ -51,6 +52,23 @@ TEST_P(SurveyBoxRoom, AgreesWithThePerProbeFigures) {
     EXPECT_LT(perProbe.p95Deg, 0.25) << probe.name;
     EXPECT_EQ(perProbe.missRate, 0.0) << probe.name;
   }
+}
+
+// The hangar's two 2.6 m shipping containers (12 x 2.5 m each) have head room on top but are
+// far more than a step up: the flood fill leaves their tops out, and the floor under them.
+TEST(SurveyHangar, ContainerTopsAreNotWalkable) {
+  const Scene scene = readSceneFile(kSuite / "hangar" / "hangar.scene.json");
+  const LevelMesh mesh = loadLevel(scene);
+  const LevelRayCaster level(mesh);
+  std::vector<glm::dvec3> seeds;
+  for (const Probe& p : scene.probes) seeds.push_back(p.captureMeters);
+  const WalkableFloor floor = walkableFloor(level, seeds);
+  for (const FloorCell& c : floor.cells) ASSERT_NEAR(c.pointMeters.z, 0.0, 1e-3);
+  EXPECT_NEAR(floor.areaSquareMeters(), 80.0 * 50.0 - 2.0 * 12.0 * 2.5, 1e-6);
+  // Seeded on a container, the fill stays on its top.
+  const glm::dvec3 onTop{-24.0, 9.0, 3.5};
+  const WalkableFloor top = walkableFloor(level, std::span(&onTop, 1));
+  EXPECT_NEAR(top.areaSquareMeters(), 12.0 * 2.5, 1.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Suite, SurveyBoxRoom,
