@@ -5,6 +5,7 @@
 #include "core/errors/input_error.h"
 #include "geometry/builtin/box_room.h"
 #include "geometry/evaluation/reflection_samples.h"
+#include "geometry/export/runtime_probe_shape.h"
 #include "geometry/survey/area_percentile.h"
 #include "geometry/survey/blended_error.h"
 #include "geometry/survey/run_survey.h"
@@ -288,6 +289,26 @@ TEST(SurveyMap, ReadableWideAndTheSameBytesEachTime) {
   EXPECT_EQ(surveyErrorColour(0.0), surveyErrorColour(0.2));
   EXPECT_NE(surveyErrorColour(0.2), surveyErrorColour(50.0));
   EXPECT_EQ(surveyErrorColour(50.0), surveyErrorColour(170.0));
+}
+
+TEST(RuntimeProbeShape, EachKindLooksUpThroughItsOwnShape) {
+  RuntimeProbe p;
+  p.name = "a";
+  p.kind = "infinite";
+  EXPECT_TRUE(std::holds_alternative<InfiniteShape>(runtimeProbeShape(p, "proxies.json")));
+  p.kind = "cheap_k";
+  p.kPerMeter = 0.5;
+  EXPECT_EQ(std::get<CheapKShape>(runtimeProbeShape(p, "proxies.json")).kPerMeter, 0.5);
+  p.kind = "obb";
+  p.box = kRoom;
+  EXPECT_EQ(std::get<BoxShape>(runtimeProbeShape(p, "proxies.json")).halfExtentsMeters,
+            kRoom.halfExtentsMeters);
+  p.kind = "convex";
+  EXPECT_THROW(runtimeProbeShape(p, "proxies.json"), InputError) << "convex without planes";
+  p.convex = convexFromBox(kRoom);
+  EXPECT_EQ(std::get<ConvexProxy>(runtimeProbeShape(p, "proxies.json")).planes.size(), 6u);
+  p.kind = "teapot";
+  EXPECT_THROW(runtimeProbeShape(p, "proxies.json"), InputError);
 }
 
 }  // namespace
