@@ -79,6 +79,8 @@ SurveyResult surveyProbes(std::span<const SurveyProbe> probes, const LevelRayCas
   if (seeds.empty())
     for (const SurveyProbe& p : probes) seeds.push_back(p.captureMeters);
 
+  if (seeds.empty())
+    throw InputError("survey", "no seed points: the scene has no probes and none were given");
   SurveyResult result;
   result.toleranceDeg = o.toleranceDeg;
   result.floor = walkableFloor(level, seeds, o.floor);
