@@ -39,51 +39,58 @@ glm::dvec3 uniformDirection(std::mt19937& rng) {
   return {s * std::cos(phi), s * std::sin(phi), z};
 }
 
-// mirror_floor: what a player at eye height sees of the floor. Mostly the camera looks level,
-// in any direction, and the floor fills the lower half of a 90-degree-high view: a pixel row
-// there is uniform in tan(depression) from 2 degrees (the far floor, where reflections graze)
-// to 45. A quarter of the time the player looks down, uniform in angle from 45 to 89 degrees:
-// in a closet that is the only floor there is to see.
-glm::dvec3 playerFloorDirection(std::mt19937& rng) {
-  constexpr double kMinDepressionTan = 0.035;  // 2 degrees
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const bool lookingDown = unit(rng) < 0.25;
-  const double tanDepression = lookingDown
-                                   ? std::tan((45.0 + 44.0 * unit(rng)) * M_PI / 180.0)
-                                   : kMinDepressionTan + (1.0 - kMinDepressionTan) * unit(rng);
-  const double phi = 2.0 * M_PI * unit(rng);
-  return glm::normalize(glm::dvec3(std::cos(phi), std::sin(phi), -tanDepression));
-}
-
 RayHit castDouble(const LevelRayCaster& level, glm::dvec3 origin, glm::dvec3 direction,
                   double tMin = 0.0) {
   return level.firstHit({origin, glm::vec3(direction), static_cast<float>(tMin)});
 }
 
-// Where the reflection ray lands, and whether the capture point can see that place.
-void traceTrueHit(const LevelRayCaster& level, glm::dvec3 capture, ReflectionSample& s) {
+glm::dvec3 drawPlayerFloorDirection(std::mt19937& rng) {
+  // Three draws in a fixed order (not as call arguments, whose order C++ leaves open).
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double look = unit(rng);
+  const double depression = unit(rng);
+  const double heading = unit(rng);
+  return playerFloorDirection(look, depression, heading);
+}
+
+}  // namespace
+
+// mirror_floor: what a player at eye height sees of the floor. Mostly the camera looks level,
+// in any direction, and the floor fills the lower half of a 90-degree-high view: a pixel row
+// there is uniform in tan(depression) from 2 degrees (the far floor, where reflections graze)
+// to 45. A quarter of the time the player looks down, uniform in angle from 45 to 89 degrees:
+// in a closet that is the only floor there is to see.
+glm::dvec3 playerFloorDirection(double uLook, double uDepression, double uHeading) {
+  constexpr double kMinDepressionTan = 0.035;  // 2 degrees
+  const bool lookingDown = uLook < 0.25;
+  const double tanDepression = lookingDown
+                                   ? std::tan((45.0 + 44.0 * uDepression) * M_PI / 180.0)
+                                   : kMinDepressionTan + (1.0 - kMinDepressionTan) * uDepression;
+  const double phi = 2.0 * M_PI * uHeading;
+  return glm::normalize(glm::dvec3(std::cos(phi), std::sin(phi), -tanDepression));
+}
+
+void traceTrueHit(const LevelRayCaster& level, ReflectionSample& s) {
   // Skip the surface along r itself rather than shifting the origin off it: H then lies on the
   // very ray (x, r) that every proxy lookup intersects, so an exact proxy scores ~1e-6 degrees
   // instead of the ~0.002 degrees a 0.1 mm origin shift seen from a few metres would cost.
   const double eps = surfaceEpsilon(s.xMeters);
   const double tSkip = eps / std::max(glm::dot(s.reflected, s.normal), 1e-3);
   const RayHit hit = castDouble(level, s.xMeters, s.reflected, tSkip);
-  if (!hit.hit()) {
-    s.hitsSky = true;
-    // The cubemap shows the sky along r only if nothing stands in the way from C.
-    s.occluded = castDouble(level, capture, s.reflected).hit();
-    return;
-  }
-  s.trueHitMeters = s.xMeters + double(hit.t) * s.reflected;
-  const glm::dvec3 toHit = s.trueHitMeters - capture;
-  const double distance = glm::length(toHit);
-  if (distance < 1e-9) return;
-  const RayHit fromCapture = castDouble(level, capture, toHit / distance);
-  const double slack = 1e-3 * distance + surfaceEpsilon(s.trueHitMeters) * 10.0;
-  s.occluded = fromCapture.hit() && double(fromCapture.t) < distance - slack;
+  s.hitsSky = !hit.hit();
+  if (!s.hitsSky) s.trueHitMeters = s.xMeters + double(hit.t) * s.reflected;
 }
 
-}  // namespace
+bool trueHitHiddenFrom(const LevelRayCaster& level, glm::dvec3 capture, const ReflectionSample& s) {
+  // The cubemap shows the sky along r only if nothing stands in the way from C.
+  if (s.hitsSky) return castDouble(level, capture, s.reflected).hit();
+  const glm::dvec3 toHit = s.trueHitMeters - capture;
+  const double distance = glm::length(toHit);
+  if (distance < 1e-9) return false;
+  const RayHit fromCapture = castDouble(level, capture, toHit / distance);
+  const double slack = 1e-3 * distance + surfaceEpsilon(s.trueHitMeters) * 10.0;
+  return fromCapture.hit() && double(fromCapture.t) < distance - slack;
+}
 
 std::vector<glm::dvec3> reflectionCameras(const LevelRayCaster& level, const Probe& probe,
                                           const ReflectionSampleOptions& o) {
@@ -135,7 +142,7 @@ std::vector<ReflectionSample> buildReflectionSamples(const LevelRayCaster& level
     // Cameras take turns, so every part of the volume is seen even when the target is small.
     for (std::size_t i = 0; i < batch; ++i) {
       const glm::dvec3 eye = cameras[(attempts + i) % cameras.size()];
-      rays[i] = {eye, glm::vec3(floorOnly ? playerFloorDirection(rng) : uniformDirection(rng))};
+      rays[i] = {eye, glm::vec3(floorOnly ? drawPlayerFloorDirection(rng) : uniformDirection(rng))};
     }
     level.firstHits(rays, hits);
     attempts += batch;
@@ -153,7 +160,10 @@ std::vector<ReflectionSample> buildReflectionSamples(const LevelRayCaster& level
       samples.push_back(s);
     }
   }
-  for (ReflectionSample& s : samples) traceTrueHit(level, probe.captureMeters, s);
+  for (ReflectionSample& s : samples) {
+    traceTrueHit(level, s);
+    s.occluded = trueHitHiddenFrom(level, probe.captureMeters, s);
+  }
   return samples;
 }
 

@@ -33,4 +33,17 @@ std::vector<ReflectionSample> buildReflectionSamples(const LevelRayCaster& level
 std::vector<glm::dvec3> reflectionCameras(const LevelRayCaster& level, const Probe& probe,
                                           const ReflectionSampleOptions& options);
 
+// A view direction a player at eye height looks at the floor with (unit, pointing down), from
+// three uniform numbers in [0, 1): the mirror_floor distribution, shared with `survey`.
+glm::dvec3 playerFloorDirection(double uLook, double uDepression, double uHeading);
+
+// Sets s.trueHitMeters and s.hitsSky from s.xMeters, s.normal and s.reflected (leaves
+// s.occluded alone: that depends on the probe).
+void traceTrueHit(const LevelRayCaster& level, ReflectionSample& s);
+
+// Whether the capture point cannot see s's true hit (or the sky along r): the cubemap cannot
+// show it, whatever the proxy. Needs traceTrueHit first.
+bool trueHitHiddenFrom(const LevelRayCaster& level, glm::dvec3 captureMeters,
+                       const ReflectionSample& s);
+
 }  // namespace probeproxy

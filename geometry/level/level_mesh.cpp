@@ -38,6 +38,8 @@ void appendLevelMesh(LevelMesh& level, const LevelMesh& part) {
                                part.positionsMeters.end());
   for (const glm::uvec3& t : part.triangles) level.triangles.push_back(t + vertexOffset);
   for (const glm::uvec3& t : part.skyTriangles) level.skyTriangles.push_back(t + vertexOffset);
+  level.spawnPointsMeters.insert(level.spawnPointsMeters.end(), part.spawnPointsMeters.begin(),
+                                 part.spawnPointsMeters.end());
   for (LevelPart p : part.parts) {
     p.firstTriangle += triangleOffset;
     level.parts.push_back(std::move(p));

@@ -28,6 +28,9 @@ struct LevelMesh {
   // they are not a wall a proxy should fit and rays pass them as they pass any opening, but a
   // reflection that reaches one is known to see the sky. Indices into positionsMeters.
   std::vector<glm::uvec3> skyTriangles;
+  // Where players start (BSP levels: the info_player_* entities, team spawns included), world
+  // frame: the walkable floor is what a player can reach from them.
+  std::vector<glm::dvec3> spawnPointsMeters;
 };
 
 struct LevelMeshStats {

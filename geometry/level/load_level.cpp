@@ -175,6 +175,8 @@ LevelMesh loadLevelMeshRef(const LevelMeshRef& ref, double sceneMetersPerUnit) {
                         : std::filesystem::path(ref.path.string() + ":" + ref.map.generic_string());
     throw InputError(named, "BSP has no solid faces");
   }
+  for (const BspSpawnPoint& s : bsp.spawnPoints)
+    bsp.mesh.spawnPointsMeters.push_back(s.originMeters);
   return std::move(bsp.mesh);
 }
 

@@ -23,5 +23,6 @@ Verb addCorrectVerb(CLI::App& app);
 Verb addBlendVerb(CLI::App& app);
 Verb addBenchVerb(CLI::App& app);
 Verb addLevelInfoVerb(CLI::App& app);  // hidden: BSP figures and spawn points for scripts
+Verb addSurveyVerb(CLI::App& app);
 
 }  // namespace probeproxy::cli

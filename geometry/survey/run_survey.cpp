@@ -1,0 +1,138 @@
+#include "geometry/survey/run_survey.h"
+
+#include "core/errors/input_error.h"
+#include "geometry/survey/area_percentile.h"
+#include "geometry/survey/floor_samples.h"
+#include "geometry/survey/survey_proxies.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace probeproxy {
+
+namespace {
+
+// Samples per cell, fewer on a floor so large the total would exceed the budget.
+int samplesPerCell(const WalkableFloor& floor, const SurveyOptions& o) {
+  const std::size_t cells = std::max<std::size_t>(1, floor.cells.size());
+  const std::size_t fit = o.maxSamples / cells;
+  return static_cast<int>(
+      std::clamp<std::size_t>(fit, 1, static_cast<std::size_t>(o.samplesPerCell)));
+}
+
+SurveyCellError cellError(std::span<const SurveySampleError> errors) {
+  SurveyCellError c;
+  c.samples = static_cast<int>(errors.size());
+  std::vector<AreaValue> visible;
+  double area = 0.0;
+  for (const SurveySampleError& e : errors) {
+    area += e.areaSquareMeters;
+    if (e.uncovered) c.uncoveredShare += e.areaSquareMeters;
+    c.occludedShare += e.occludedWeight * e.areaSquareMeters;
+    if (!std::isnan(e.errorDeg))
+      visible.push_back({e.errorDeg, e.areaSquareMeters * (1.0 - e.occludedWeight)});
+  }
+  if (area > 0.0) {
+    c.uncoveredShare /= area;
+    c.occludedShare /= area;
+  }
+  c.p95Deg = areaPercentile(visible, 0.95);
+  return c;
+}
+
+SurveyFigures figures(std::span<const SurveySampleError> errors, double toleranceDeg) {
+  SurveyFigures f;
+  f.samples = errors.size();
+  std::vector<AreaValue> visible;
+  double area = 0.0, over = 0.0, uncovered = 0.0, occluded = 0.0;
+  for (const SurveySampleError& e : errors) {
+    area += e.areaSquareMeters;
+    if (e.uncovered) uncovered += e.areaSquareMeters;
+    occluded += e.occludedWeight * e.areaSquareMeters;
+    if (std::isnan(e.errorDeg)) continue;
+    // A partly occluded sample stands for the part of its floor its visible probes shade.
+    const double seen = e.areaSquareMeters * (1.0 - e.occludedWeight);
+    visible.push_back({e.errorDeg, seen});
+    if (e.errorDeg > toleranceDeg) over += seen;
+  }
+  f.walkableSquareMeters = area;
+  if (area > 0.0) {
+    f.overToleranceShare = over / area;
+    f.uncoveredShare = uncovered / area;
+    f.occludedShare = occluded / area;
+  }
+  f.medianDeg = areaPercentile(visible, 0.5);
+  f.p95Deg = areaPercentile(visible, 0.95);
+  return f;
+}
+
+}  // namespace
+
+SurveyResult surveyProbes(std::span<const SurveyProbe> probes, const LevelRayCaster& level,
+                          const SurveyOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  o.check();
+  std::vector<glm::dvec3> seeds = o.seedPointsMeters;
+  if (seeds.empty())
+    for (const SurveyProbe& p : probes) seeds.push_back(p.captureMeters);
+
+  if (seeds.empty())
+    throw InputError("survey", "no seed points: the scene has no probes and none were given");
+  SurveyResult result;
+  result.toleranceDeg = o.toleranceDeg;
+  result.floor = walkableFloor(level, seeds, o.floor);
+  if (result.floor.cells.empty())
+    throw InputError("survey", "no walkable floor under any of the " +
+                                   std::to_string(seeds.size()) +
+                                   " seed points (spawn or capture points): is the level Z-up "
+                                   "and in metres, and does each seed stand over a floor?");
+
+  FloorSampleOptions so;
+  so.samplesPerCell = samplesPerCell(result.floor, o);
+  so.eyeHeightMeters = o.eyeHeightMeters;
+  so.maxViewAttempts = o.maxViewAttempts;
+  so.upwardCosine = o.floor.upwardCosine;
+  so.stepHeightMeters = o.floor.stepHeightMeters;
+  so.seed = o.seed;
+  const std::vector<FloorSample> samples = buildFloorSamples(level, result.floor, so);
+
+  std::vector<InfluenceVolume> volumes;
+  for (const SurveyProbe& p : probes) volumes.push_back(p.influence);
+  std::vector<SurveySampleError> errors(samples.size());
+  tbb::parallel_for(std::size_t{0}, samples.size(), [&](std::size_t i) {
+    errors[i] = blendedSampleError(level, probes, volumes, samples[i].sample, o.blend);
+    errors[i].areaSquareMeters = samples[i].areaSquareMeters;
+  });
+
+  // Samples come cell by cell, the same count each.
+  const std::size_t perCell = static_cast<std::size_t>(so.samplesPerCell);
+  result.cells.resize(result.floor.cells.size());
+  for (std::size_t c = 0; c < result.cells.size(); ++c)
+    result.cells[c] = cellError(std::span(errors).subspan(c * perCell, perCell));
+
+  result.figures = figures(errors, o.toleranceDeg);
+  result.figures.probes = probes.size();
+  result.figures.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+SurveyResult runSurvey(const Scene& scene, const LevelRayCaster& level, const SurveyOptions& o,
+                       const std::function<void(std::size_t, std::size_t)>& onProbeBuilt) {
+  const auto start = std::chrono::steady_clock::now();
+  o.check();
+  const std::vector<ProxyShape> shapes = surveyProxyShapes(scene, level, o, onProbeBuilt);
+  std::vector<SurveyProbe> probes;
+  for (std::size_t i = 0; i < scene.probes.size(); ++i)
+    probes.push_back({scene.probes[i].captureMeters, scene.probes[i].influence, shapes[i]});
+  SurveyResult result = surveyProbes(probes, level, o);
+  result.scene = scene.file.empty() ? std::string("scene") : scene.file.stem().stem().string();
+  result.figures.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace probeproxy

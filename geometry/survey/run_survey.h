@@ -1,0 +1,31 @@
+#pragma once
+// `survey`: what a player sees across the whole level (DESIGN.md, "Level-wide error"). The
+// walkable floor (walkable_floor.h) is flood-filled from the seed points, sampled area-uniform
+// with mirror_floor views (floor_samples.h), and every sample shaded as the runtime shades it:
+// the covering probes blended, each through its proxy (blended_error.h). Deterministic apart
+// from `seconds`: the same scene and options give the same figures and cells, whatever the
+// thread count.
+
+#include "core/scene/scene.h"
+#include "geometry/raycast/level_ray_caster.h"
+#include "geometry/survey/blended_error.h"
+#include "geometry/survey/survey_options.h"
+#include "geometry/survey/survey_result.h"
+
+#include <functional>
+#include <span>
+
+namespace probeproxy {
+
+// Checks the options, resolves each probe's proxy (survey_proxies.h) and surveys. Throws
+// InputError when no seed point stands over walkable floor.
+// `onProbeBuilt(done, total)` reports the proxy builds, the slow part on real levels.
+SurveyResult runSurvey(const Scene& scene, const LevelRayCaster& level,
+                       const SurveyOptions& options,
+                       const std::function<void(std::size_t, std::size_t)>& onProbeBuilt = {});
+
+// The same with the probes given: what runSurvey does once the proxies are known.
+SurveyResult surveyProbes(std::span<const SurveyProbe> probes, const LevelRayCaster& level,
+                          const SurveyOptions& options);
+
+}  // namespace probeproxy

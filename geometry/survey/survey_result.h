@@ -1,0 +1,50 @@
+#pragma once
+// What `survey` found: the DESIGN.md figures, and the floor and per-cell errors the error map is
+// drawn from. Plain data. Shares are of the walkable floor's area; errors in degrees are over
+// the floor that is covered and whose true hits some weighted probe sees.
+
+#include "geometry/survey/walkable_floor.h"
+
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace probeproxy {
+
+struct SurveyFigures {
+  double walkableSquareMeters = 0.0;
+  std::size_t samples = 0;
+  std::size_t probes = 0;
+  double medianDeg = std::numeric_limits<double>::quiet_NaN();  // area-weighted
+  double p95Deg = std::numeric_limits<double>::quiet_NaN();     // area-weighted
+  double overToleranceShare = 0.0;  // floor whose error exceeds the tolerance
+  double uncoveredShare = 0.0;      // floor no influence volume covers
+  double occludedShare = 0.0;       // blend weight of probes that cannot see the true hit
+  double seconds = 0.0;             // wall time of the whole survey, proxies included
+};
+
+// One floor sample: where, what it cost, and how it was split.
+struct SurveySampleError {
+  double errorDeg = std::numeric_limits<double>::quiet_NaN();  // NaN: uncovered or occluded
+  double areaSquareMeters = 0.0;                               // of floor this sample stands for
+  double occludedWeight = 0.0;  // blend weight of the probes that cannot see the true hit
+  bool uncovered = false;
+};
+
+struct SurveyCellError {  // per floor cell (WalkableFloor::cells, same order)
+  double p95Deg = std::numeric_limits<double>::quiet_NaN();  // of its samples; NaN: none visible
+  double uncoveredShare = 0.0;
+  double occludedShare = 0.0;
+  int samples = 0;
+};
+
+struct SurveyResult {
+  std::string scene;  // the scene file's stem (e.g. "corridor"), or "scene" in memory
+  SurveyFigures figures;
+  WalkableFloor floor;
+  std::vector<SurveyCellError> cells;
+  double toleranceDeg = 0.0;  // what over_tolerance_share was measured against
+};
+
+}  // namespace probeproxy

@@ -1,0 +1,41 @@
+#pragma once
+// `survey`: what a player sees across the whole walkable floor, every probe blended as the
+// runtime blends it (geometry/survey/run_survey.h): area-weighted figures, the report, and the
+// error maps (one PNG per storey).
+//
+// Path of one run: plugin/cli/verbs/survey_verb.cpp parses flags into SurveyJobOptions ->
+// runSurveyJob (here) reads the scene and level, seeds the floor at the level's spawn points ->
+// geometry/survey: walkable floor by flood fill, floor samples, each probe's proxy (built by
+// geometry/build where the scene says auto), blended error per sample -> core/blend weights and
+// core/parallax lookups -> figures and maps.
+
+#include "geometry/survey/survey_options.h"
+#include "geometry/survey/survey_result.h"
+#include "plugin/jobs/job_progress.h"
+#include "plugin/jobs/scene_input.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace probeproxy::jobs {
+
+struct SurveyJobOptions {
+  SceneInput input;
+  std::filesystem::path outFolder;  // survey.json and the maps; empty: nothing is written
+  int threads = 0;                  // 0: all cores
+  SurveyOptions survey;             // seedPointsMeters empty: the level's spawn points, else
+                                    // the capture points
+
+  void check() const;  // throws InputError naming the option at fault
+};
+
+struct SurveyJobResult {
+  SurveyResult result;
+  std::string json;                            // the `survey --json` report
+  std::vector<std::filesystem::path> written;  // survey.json and the maps, when written
+};
+
+SurveyJobResult runSurveyJob(const SurveyJobOptions& options, const Progress& progress = {});
+
+}  // namespace probeproxy::jobs

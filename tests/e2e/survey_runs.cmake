@@ -1,0 +1,28 @@
+# `probeproxy survey --out` writes survey.json and the error maps, the same map bytes and
+# figures (all but `seconds`) for every thread count, and --json prints the DESIGN.md names.
+foreach(threads 1 0)
+  set(out ${OUT}/threads${threads})
+  file(REMOVE_RECURSE ${out})
+  execute_process(COMMAND ${PROBEPROXY} survey ${SCENE} --json --out ${out} --threads ${threads}
+    RESULT_VARIABLE code OUTPUT_VARIABLE stdout ERROR_VARIABLE stderr)
+  if(NOT code EQUAL 0)
+    message(FATAL_ERROR "survey --threads ${threads} exited ${code}: ${stderr}")
+  endif()
+  foreach(key scene walkable_m2 samples probes median_deg p95_deg over_tolerance_share
+              uncovered_share occluded_share seconds)
+    string(JSON value ERROR_VARIABLE missing GET "${stdout}" ${key})
+    if(missing)
+      message(FATAL_ERROR "survey --json has no \"${key}\": ${stdout}")
+    endif()
+  endforeach()
+  string(JSON p95_${threads} GET "${stdout}" p95_deg)
+  file(GLOB maps ${out}/*_survey*.png)
+  if(NOT maps OR NOT EXISTS ${out}/survey.json)
+    message(FATAL_ERROR "survey --out wrote no map or no survey.json in ${out}")
+  endif()
+  list(GET maps 0 map)
+  file(SHA256 ${map} map_${threads})
+endforeach()
+if(NOT map_1 STREQUAL map_0 OR NOT p95_1 STREQUAL p95_0)
+  message(FATAL_ERROR "survey differs between thread counts (p95 ${p95_1} vs ${p95_0})")
+endif()
