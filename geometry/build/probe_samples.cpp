@@ -5,9 +5,11 @@ namespace probeproxy {
 ProbeSamples drawProbeSamples(const LevelRayCaster& level, const Probe& probe,
                               const ProxyBuildOptions& o) {
   ProbeSamples s;
-  const ReflectionSampleOptions& fitOptions = o.samples;
+  ReflectionSampleOptions fitOptions = o.samples;
+  fitOptions.connectedFloorOnly = true;
   ReflectionSampleOptions reportOptions = o.samples;
   reportOptions.seed = o.samples.seed + 1000;
+  reportOptions.connectedFloorOnly = false;
   s.fit = buildReflectionSamples(level, probe, SampleSet::MirrorFloor, fitOptions);
   for (const ReflectionSample& r :
        buildReflectionSamples(level, probe, SampleSet::AllSurfaces, fitOptions))

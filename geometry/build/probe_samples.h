@@ -13,11 +13,14 @@
 namespace probeproxy {
 
 struct ProbeSamples {
-  // mirror_floor then all_surfaces, seed options.samples.seed: fitting sees every surface,
-  // not just floors, or a proxy tuned to floor reflections alone would drop walls that floor
-  // reflections happen not to reach.
+  // mirror_floor then all_surfaces, seed options.samples.seed, from the floor walkable from the
+  // capture point (ReflectionSampleOptions::connectedFloorOnly): a proxy fits the room the
+  // probe is in, not the rooms its influence reaches through walls. Fitting sees every
+  // surface, not just floors, or a proxy tuned to floor reflections alone would drop walls
+  // that floor reflections happen not to reach.
   std::vector<ReflectionSample> fit;
-  // Seed + 1000: what every figure is reported on.
+  // Seed + 1000, all the floor the influence covers: what every figure is reported on and the
+  // kept proxy chosen by, since the runtime shades all of it with this probe.
   std::vector<ReflectionSample> floor;  // mirror_floor
   std::vector<ReflectionSample> all;    // all_surfaces
 };

@@ -92,8 +92,37 @@ bool trueHitHiddenFrom(const LevelRayCaster& level, glm::dvec3 capture, const Re
   return fromCapture.hit() && double(fromCapture.t) < distance - slack;
 }
 
+std::optional<WalkableFloor> servedFloor(const LevelRayCaster& level, const Probe& probe,
+                                         const ReflectionSampleOptions& o) {
+  if (!o.connectedFloorOnly) return std::nullopt;
+  glm::dvec3 lo, hi;
+  influenceBounds(probe.influence, lo, hi);
+  WalkableFloorOptions floorOptions;
+  floorOptions.regionMinMeters = glm::dvec2(lo);
+  floorOptions.regionMaxMeters = glm::dvec2(hi);
+  const glm::dvec3 seed[] = {probe.captureMeters};
+  WalkableFloor floor = walkableFloor(level, seed, floorOptions);
+  if (floor.cells.empty()) return std::nullopt;
+  return floor;
+}
+
+namespace {
+
+// A point on the floor counts when the probe's walkable floor reaches it (or there is none).
+bool onServedFloor(const std::optional<WalkableFloor>& floor, glm::dvec3 pointMeters) {
+  return !floor || floor->reaches(pointMeters, WalkableFloorOptions{}.stepHeightMeters);
+}
+
+}  // namespace
+
 std::vector<glm::dvec3> reflectionCameras(const LevelRayCaster& level, const Probe& probe,
                                           const ReflectionSampleOptions& o) {
+  return reflectionCameras(level, probe, o, servedFloor(level, probe, o));
+}
+
+std::vector<glm::dvec3> reflectionCameras(const LevelRayCaster& level, const Probe& probe,
+                                          const ReflectionSampleOptions& o,
+                                          const std::optional<WalkableFloor>& floor) {
   glm::dvec3 lo, hi;
   influenceBounds(probe.influence, lo, hi);
   const double longer = std::max(hi.x - lo.x, hi.y - lo.y);
@@ -107,14 +136,15 @@ std::vector<glm::dvec3> reflectionCameras(const LevelRayCaster& level, const Pro
       // Cell centres, so a one-cell grid sits in the middle.
       const glm::dvec3 column(lo.x + (i + 0.5) * (hi.x - lo.x) / nx,
                               lo.y + (j + 0.5) * (hi.y - lo.y) / ny, probe.captureMeters.z);
-      const RayHit floor = castDouble(level, column, {0, 0, -1});
-      if (!floor.hit() || floor.geometricNormal.z == 0.0f) continue;
-      glm::dvec3 eye = column - glm::dvec3(0, 0, floor.t) + glm::dvec3(0, 0, o.eyeHeightMeters);
+      const RayHit below = castDouble(level, column, {0, 0, -1});
+      if (!below.hit() || below.geometricNormal.z == 0.0f) continue;
+      if (!onServedFloor(floor, column - glm::dvec3(0, 0, below.t))) continue;
+      glm::dvec3 eye = column - glm::dvec3(0, 0, below.t) + glm::dvec3(0, 0, o.eyeHeightMeters);
       // Under a low ceiling (an attic's eaves, a closet) the eye goes halfway up instead.
       const RayHit ceiling =
-          castDouble(level, column - glm::dvec3(0, 0, floor.t - 1e-3), {0, 0, 1});
+          castDouble(level, column - glm::dvec3(0, 0, below.t - 1e-3), {0, 0, 1});
       if (ceiling.hit() && ceiling.t < o.eyeHeightMeters + 0.1) {
-        eye.z = column.z - floor.t + 0.5 * ceiling.t;
+        eye.z = column.z - below.t + 0.5 * ceiling.t;
       }
       if (insideInfluence(probe.influence, eye)) cameras.push_back(eye);
     }
@@ -126,7 +156,8 @@ std::vector<glm::dvec3> reflectionCameras(const LevelRayCaster& level, const Pro
 std::vector<ReflectionSample> buildReflectionSamples(const LevelRayCaster& level,
                                                      const Probe& probe, SampleSet set,
                                                      const ReflectionSampleOptions& o) {
-  const std::vector<glm::dvec3> cameras = reflectionCameras(level, probe, o);
+  const std::optional<WalkableFloor> floor = servedFloor(level, probe, o);
+  const std::vector<glm::dvec3> cameras = reflectionCameras(level, probe, o, floor);
   const bool floorOnly = set == SampleSet::MirrorFloor;
   std::mt19937 rng(o.seed * 2654435761u + (floorOnly ? 0u : 1u));
 
@@ -156,6 +187,7 @@ std::vector<ReflectionSample> buildReflectionSamples(const LevelRayCaster& level
       s.normal = glm::dvec3(hits[i].geometricNormal);
       if (glm::dot(s.normal, view) > 0) s.normal = -s.normal;  // face the camera
       if (floorOnly && s.normal.z < o.upwardCosine) continue;
+      if (floorOnly && !onServedFloor(floor, s.xMeters)) continue;
       s.reflected = glm::normalize(view - 2.0 * glm::dot(view, s.normal) * s.normal);
       samples.push_back(s);
     }

@@ -4,7 +4,10 @@
 
 #include "core/scene/probe.h"
 #include "geometry/evaluation/reflection_sample.h"
+#include "geometry/floor/walkable_floor.h"
 #include "geometry/raycast/level_ray_caster.h"
+
+#include <optional>
 
 #include <vector>
 
@@ -18,6 +21,14 @@ struct ReflectionSampleOptions {
   double minCameraSpacingMeters = 0.25;
   double upwardCosine = 0.9;  // mirror_floor: normal.z at least this (about 25 degrees)
   std::uint32_t seed = 1;
+  // Cameras stand, and mirror_floor samples lie, only on floor a player can walk to from the
+  // capture point within the influence volume (geometry/floor/walkable_floor.h): a 10 m sphere
+  // around a spawn point in a real map reaches through walls into rooms the probe cannot see,
+  // and a proxy fitted to their reflections is fitted to the wrong room. Where no such floor
+  // is found (a probe over a void) every floor in the volume counts, as without it. The proxy
+  // build fits on these; what a player sees (and every reported figure) is all the floor the
+  // influence covers, as the runtime shades it.
+  bool connectedFloorOnly = false;
 
   // Throws InputError unless targetSamples ("samples") is in [64, 1000000] and the rest is
   // usable (maxAttemptsPerSample >= 1, eye height and camera spacing positive).
@@ -32,6 +43,16 @@ std::vector<ReflectionSample> buildReflectionSamples(const LevelRayCaster& level
 // back to the capture point when no grid point qualifies (a closet, a probe over a void).
 std::vector<glm::dvec3> reflectionCameras(const LevelRayCaster& level, const Probe& probe,
                                           const ReflectionSampleOptions& options);
+
+// The floor the probe serves (connectedFloorOnly): walkable from the capture point within the
+// influence volume's bounds. Nothing when the option is off or no floor is found.
+std::optional<WalkableFloor> servedFloor(const LevelRayCaster& level, const Probe& probe,
+                                         const ReflectionSampleOptions& options);
+
+// reflectionCameras with the served floor already found.
+std::vector<glm::dvec3> reflectionCameras(const LevelRayCaster& level, const Probe& probe,
+                                          const ReflectionSampleOptions& options,
+                                          const std::optional<WalkableFloor>& floor);
 
 // A view direction a player at eye height looks at the floor with (unit, pointing down), from
 // three uniform numbers in [0, 1): the mirror_floor distribution, shared with `survey`.

@@ -8,7 +8,7 @@
 
 #include "geometry/evaluation/reflection_sample.h"
 #include "geometry/raycast/level_ray_caster.h"
-#include "geometry/survey/walkable_floor.h"
+#include "geometry/floor/walkable_floor.h"
 
 #include <cstdint>
 #include <vector>

@@ -3,7 +3,7 @@
 // above floor (a U-corridor's upper level over its lower one), the floor is split at heights
 // between the stacked cells; otherwise it is one storey.
 
-#include "geometry/survey/walkable_floor.h"
+#include "geometry/floor/walkable_floor.h"
 
 #include <vector>
 

@@ -5,7 +5,7 @@
 
 #include "core/blend/blend_weights.h"
 #include "geometry/build/build_probe_proxy.h"
-#include "geometry/survey/walkable_floor.h"
+#include "geometry/floor/walkable_floor.h"
 
 #include <glm/vec3.hpp>
 

@@ -3,7 +3,7 @@
 // drawn from. Plain data. Shares are of the walkable floor's area; errors in degrees are over
 // the floor that is covered and whose true hits some weighted probe sees.
 
-#include "geometry/survey/walkable_floor.h"
+#include "geometry/floor/walkable_floor.h"
 
 #include <cstddef>
 #include <limits>

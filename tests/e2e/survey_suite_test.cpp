@@ -8,7 +8,7 @@
 #include "geometry/scene/scene_file.h"
 #include "geometry/survey/run_survey.h"
 #include "geometry/survey/survey_proxies.h"
-#include "geometry/survey/walkable_floor.h"
+#include "geometry/floor/walkable_floor.h"
 
 #include <gtest/gtest.h>
 

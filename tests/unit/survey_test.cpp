@@ -11,7 +11,7 @@
 #include "geometry/survey/run_survey.h"
 #include "geometry/survey/storeys.h"
 #include "geometry/survey/survey_map.h"
-#include "geometry/survey/walkable_floor.h"
+#include "geometry/floor/walkable_floor.h"
 #include "plugin/jobs/survey/survey_report.h"
 
 #include <gtest/gtest.h>

@@ -1,9 +1,9 @@
 #pragma once
-// The walkable floor (DESIGN.md, "Measures"): upward-facing level surfaces a player can reach
-// from seed points (spawn points, or the probes' capture points), by a flood fill over a
-// regular XY grid of floor cells with a step height and a head clearance. The tops of pillars,
-// the outside of the map and sealed voids are not reached, so they do not count. World frame
-// (Z up), metres. Deterministic: the same level, seeds and options give the same floor,
+// The walkable floor (docs/methods_and_measures.md, "Measures"): upward-facing level surfaces a
+// player can reach from seed points (spawn points, or the probes' capture points), by a flood fill
+// over a regular XY grid of floor cells with a step height and a head clearance. The tops of
+// pillars, the outside of the map and sealed voids are not reached, so they do not count. World
+// frame (Z up), metres. Deterministic: the same level, seeds and options give the same floor,
 // whatever the thread count.
 
 #include "geometry/raycast/level_ray_caster.h"
@@ -25,7 +25,10 @@ struct WalkableFloorOptions {
   double kneeHeightMeters = 0.6;
   double upwardCosine = 0.7;         // |normal.z| at least this (about 45 degrees: ramps, stairs)
   std::size_t maxCells = 4'000'000;  // grid columns; the spacing is coarsened to stay within it
-  void check() const;                // InputError on a value out of range
+  // Only this part of the plan (world x, y) is searched, clipped to the level's bounds: the
+  // floor a probe serves, reachable within its influence. Unbounded by default.
+  glm::dvec2 regionMinMeters{-1e300}, regionMaxMeters{1e300};
+  void check() const;  // InputError on a value out of range
 };
 
 struct FloorCell {
@@ -44,6 +47,9 @@ struct WalkableFloor {
   std::size_t seedsOnFloor = 0;    // seed points that found a floor cell under them
 
   double areaSquareMeters() const;
+  // Whether a point lies on a reachable cell: in its column, on a cell within
+  // `heightToleranceMeters` of the point's height.
+  bool reaches(glm::dvec3 pointMeters, double heightToleranceMeters) const;
 };
 
 // The floor reachable from `seedsMeters`. A seed starts at the highest floor cell of its grid

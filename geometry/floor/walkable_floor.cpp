@@ -1,4 +1,4 @@
-#include "geometry/survey/walkable_floor.h"
+#include "geometry/floor/walkable_floor.h"
 
 #include "core/errors/option_checks.h"
 
@@ -39,7 +39,10 @@ struct Grid {
 };
 
 Grid makeGrid(const LevelRayCaster& level, const WalkableFloorOptions& o) {
-  const glm::dvec3 lo = level.boundsMinMeters(), hi = level.boundsMaxMeters();
+  glm::dvec3 lo = level.boundsMinMeters(), hi = level.boundsMaxMeters();
+  lo.x = std::max(lo.x, o.regionMinMeters.x), lo.y = std::max(lo.y, o.regionMinMeters.y);
+  hi.x = std::min(hi.x, o.regionMaxMeters.x), hi.y = std::min(hi.y, o.regionMaxMeters.y);
+  hi.x = std::max(hi.x, lo.x), hi.y = std::max(hi.y, lo.y);  // a region off the level: one cell
   Grid g;
   g.origin = glm::dvec2(lo);
   g.spacing = o.gridSpacingMeters;
@@ -136,6 +139,20 @@ void WalkableFloorOptions::check() const {
                      "must lie above the step height and below the head clearance");
   requireInRange("upward_cosine", upwardCosine, 1e-9, 1.0);
   requireInRange<std::size_t>("max_cells", maxCells, 1, std::size_t(1) << 40);
+}
+
+bool WalkableFloor::reaches(glm::dvec3 p, double heightToleranceMeters) const {
+  if (spacingMeters <= 0.0) return false;
+  const int column = static_cast<int>(std::floor((p.x - originMeters.x) / spacingMeters));
+  const int row = static_cast<int>(std::floor((p.y - originMeters.y) / spacingMeters));
+  // Cells are sorted by row, then column, then height.
+  const auto first = std::lower_bound(
+      cells.begin(), cells.end(), std::make_pair(row, column),
+      [](const FloorCell& c, auto key) { return std::make_pair(c.row, c.column) < key; });
+  for (auto it = first; it != cells.end() && it->row == row && it->column == column; ++it) {
+    if (std::abs(it->pointMeters.z - p.z) <= heightToleranceMeters) return true;
+  }
+  return false;
 }
 
 double WalkableFloor::areaSquareMeters() const {
