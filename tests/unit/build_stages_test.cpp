@@ -175,3 +175,34 @@ TEST(BuildStages, FinishingTheKeptConvexGivesItCornersAndChecksTheCapture) {
 
 }  // namespace
 }  // namespace probeproxy
+
+namespace probeproxy {
+namespace {
+
+// Issue 11: a probe's influence reaches through a wall into the next room; the proxy is fitted
+// on the floor a player can walk to from its capture point, not on the room behind the wall.
+TEST(BuildStages, FitSamplesStayOnTheFloorConnectedToTheCapturePoint) {
+  LevelMesh level = boxRoom({0, 0, 0}, {5, 4, 3}, "near");
+  appendLevelMesh(level, boxRoom({5.2f, 0, 0}, {10, 4, 3}, "behind_the_wall"));
+  const LevelRayCaster caster(level);
+  const Probe p = probeAt({2.5, 2, 1.6}, {0, 0, 0}, {10, 4, 3});
+  ReflectionSampleOptions o;
+  o.targetSamples = 512;
+  o.connectedFloorOnly = true;
+  const std::vector<glm::dvec3> cameras = reflectionCameras(caster, p, o);
+  ASSERT_FALSE(cameras.empty());
+  for (const glm::dvec3& c : cameras) EXPECT_LT(c.x, 5.0);
+  for (const ReflectionSample& s : buildReflectionSamples(caster, p, SampleSet::MirrorFloor, o))
+    EXPECT_LT(s.xMeters.x, 5.0);
+  o.connectedFloorOnly = false;  // what the runtime shades: the other room too
+  const std::vector<glm::dvec3> all = reflectionCameras(caster, p, o);
+  EXPECT_TRUE(std::any_of(all.begin(), all.end(), [](glm::dvec3 c) { return c.x > 5.2; }));
+  // The build fits on the first and reports on the second.
+  const ProbeSamples samples = drawProbeSamples(caster, p, options());
+  for (const ReflectionSample& s : samples.fit) EXPECT_LT(s.eyeMeters.x, 5.0);
+  EXPECT_TRUE(std::any_of(samples.floor.begin(), samples.floor.end(),
+                          [](const ReflectionSample& s) { return s.eyeMeters.x > 5.2; }));
+}
+
+}  // namespace
+}  // namespace probeproxy
