@@ -4,10 +4,10 @@
 floor (`probeproxy survey`) with the spawn probes looked up three ways: through the build's
 `aabb` candidate (what box projection gives an engine user), through the kept proxies, and with
 no correction. Prints two Markdown tables; with --maps DIR also writes the error maps of the
-maps named by --pictures into DIR.
+maps named by --pictures into DIR (aabb and kept only).
 
   /usr/bin/python3 scripts/corpus_table.py build/plugin/cli/probeproxy build/corpus/scenes \
-      [--maps scripts/charts --pictures downer toxic warfare]
+      [--maps scripts/charts/corpus --pictures downer toxic skyway]
 """
 import argparse
 import glob
@@ -49,7 +49,7 @@ def main():
                 rows[proxy] = run_json([args.probeproxy, "survey", scene_file, "--json",
                                         "--proxy", proxy, "--tolerance-deg", args.tolerance_deg,
                                         "--out", out])
-                if args.maps and name in args.pictures:
+                if args.maps and name in args.pictures and proxy != "infinite":
                     for png in sorted(glob.glob(os.path.join(out, "*.png"))):
                         target = os.path.join(args.maps, "corpus_%s_%s_%s" % (
                             name, proxy if proxy != "scene" else "kept",
