@@ -1,6 +1,7 @@
 """One corpus map end to end: level-info loads it (triangles, spawn points, floors found),
 its scene has a probe per spawn point at eye height over that floor, and `probeproxy build`
-on it exits 0 with a proxy and finite error figures for every probe.
+on it exits 0 with a proxy and finite error figures for every probe, each kept proxy no worse
+than its aabb candidate where none meets the tolerance.
     check_corpus_map.py PROBEPROXY PK3 SCENES MAP OUT"""
 import json
 import math
@@ -48,6 +49,14 @@ if build.returncode == 0:
             check(e[key] is not None and math.isfinite(e[key]) and 0 <= e[key] <= 180,
                   "%s %s = %s" % (p["name"], key, e[key]))
         check(0 <= e["miss_rate"] <= 1, "%s miss_rate %s" % (p["name"], e["miss_rate"]))
+        # Where nothing meets the tolerance, the kept proxy is never worse than the box an
+        # engine's box projection would use, beyond the selection's noise (2% + 0.05 deg),
+        # when the box's misses are within the allowed 0.1%.
+        boxes = [c["error"] for c in p["candidates"] if c["kind"] == "aabb"]
+        if boxes and e["p95_deg"] > 0.25 and boxes[0]["miss_rate"] <= 0.001:
+            check(e["p95_deg"] <= 1.02 * boxes[0]["p95_deg"] + 0.05,
+                  "%s keeps p95 %.2f deg, worse than its aabb's %.2f" % (
+                      p["name"], e["p95_deg"], boxes[0]["p95_deg"]))
         print("%s: %s, %s planes, p95 %.2f deg, miss %.3f" % (
             p["name"], p["proxy"]["kind"], p["proxy"]["planes"], e["p95_deg"], e["miss_rate"]))
 
