@@ -17,11 +17,10 @@ import os
 import shutil
 import sys
 
-import bmesh
 import bpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from addon_harness import (check, clear_objects, enable_addon, finish, parse_args,  # noqa: E402
+from addon_harness import (check, clear_objects, enable_addon, finish, inward_box, parse_args,  # noqa: E402
                            panel_findings, select_only, validate_like_cli)
 
 ROOM_MIN = (-3.0, -2.0, 0.0)  # metres, world frame (Z up)
@@ -52,24 +51,10 @@ def refused(operator, what, **kwargs):
     return message
 
 
-def box_part(name, lo, hi):
-    """A box with faces pointing inward (the side a probe inside sees)."""
-    bm = bmesh.new()
-    bmesh.ops.create_cube(bm, size=1.0)
-    for v in bm.verts:
-        v.co = [a if c < 0 else b for c, a, b in zip(v.co, lo, hi)]
-    bmesh.ops.reverse_faces(bm, faces=bm.faces)
-    mesh = bpy.data.meshes.new(name)
-    bm.to_mesh(mesh)
-    bm.free()
-    obj = bpy.data.objects.new(name, mesh)
-    bpy.context.scene.collection.objects.link(obj)
-    return obj
-
 
 # The room in two meshes: the lower and the upper half (an artist's level is many objects).
-lower = box_part("room_lower", ROOM_MIN, (3.0, 2.0, 3.0))
-floor_only = box_part("floor_slab", (-3.0, -2.0, -0.2), (3.0, 2.0, 0.0))
+lower = inward_box("room_lower", ROOM_MIN, (3.0, 2.0, 3.0))
+floor_only = inward_box("floor_slab", (-3.0, -2.0, -0.2), (3.0, 2.0, 0.0))
 
 # No probes: Export refuses, writes nothing.
 no_probe_dir = os.path.join(work, "no_probes")

@@ -15,11 +15,10 @@ import shutil
 import subprocess
 import sys
 
-import bmesh
 import bpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from addon_harness import (check, clear_objects, enable_addon, finish, parse_args,  # noqa: E402
+from addon_harness import (check, clear_objects, enable_addon, finish, inward_box, parse_args,  # noqa: E402
                            select_only, validate_like_cli)
 
 ROOM_MIN = (-3.0, -2.0, 0.0)  # metres, world frame (Z up)
@@ -38,22 +37,8 @@ os.chdir(work)  # an unsaved .blend anchors its scene in the working folder
 clear_objects()
 
 
-def box_room(name):
-    """A closed box room, faces pointing inward (the side a probe inside sees)."""
-    bm = bmesh.new()
-    bmesh.ops.create_cube(bm, size=1.0)
-    for v in bm.verts:
-        v.co = [lo if c < 0 else hi for c, lo, hi in zip(v.co, ROOM_MIN, ROOM_MAX)]
-    bmesh.ops.reverse_faces(bm, faces=bm.faces)
-    mesh = bpy.data.meshes.new(name)
-    bm.to_mesh(mesh)
-    bm.free()
-    obj = bpy.data.objects.new(name, mesh)
-    bpy.context.scene.collection.objects.link(obj)
-    return obj
 
-
-room = box_room("room")
+room = inward_box("room", ROOM_MIN, ROOM_MAX)
 bpy.context.scene.cursor.location = CAPTURE
 check(bpy.ops.probeproxy.add_probe() == {"FINISHED"}, "Add Probe at the 3D cursor")
 probe = bpy.context.view_layer.objects.active

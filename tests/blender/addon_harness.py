@@ -8,6 +8,7 @@ import os
 import subprocess
 import sys
 
+import bmesh
 import bpy
 
 failures = []
@@ -51,6 +52,22 @@ def enable_addon(addon_dir, module_dir):
 def clear_objects():
     for obj in list(bpy.data.objects):
         bpy.data.objects.remove(obj)
+
+
+def inward_box(name, lo, hi):
+    """A closed box mesh object from corner lo to hi, faces pointing inward (the side a probe
+    inside sees), linked into the scene."""
+    bm = bmesh.new()
+    bmesh.ops.create_cube(bm, size=1.0)
+    for v in bm.verts:
+        v.co = [a if c < 0 else b for c, a, b in zip(v.co, lo, hi)]
+    bmesh.ops.reverse_faces(bm, faces=bm.faces)
+    mesh = bpy.data.meshes.new(name)
+    bm.to_mesh(mesh)
+    bm.free()
+    obj = bpy.data.objects.new(name, mesh)
+    bpy.context.scene.collection.objects.link(obj)
+    return obj
 
 
 def import_scene(path, scene_io):
