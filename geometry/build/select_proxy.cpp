@@ -38,12 +38,14 @@ std::size_t selectProxy(const std::vector<ProxyCandidate>& candidates, const Pro
     if (best == candidates.size() || complexity(i) < complexity(best)) best = i;
   }
   if (best != candidates.size()) return best;
-  // None does: what a player would see decides, the p95 with each miss at 180 degrees (a
-  // proxy that misses a few rays can still beat one that never misses but is wrong
-  // everywhere, as cheap_k is in a real room). Among those within noise of the best (2% +
-  // 0.05 degrees) and missing no more than it does (plus the allowed rate), the simplest: a
-  // concave room that no convex proxy models gets a simple proxy, not 30 planes for a
-  // hundredth of a degree.
+  // None does. Two things a player sees decide: how wrong the reflection is over most of the
+  // floor (the mean, each miss at 180 degrees) and how wrong its worst twentieth is (the p95
+  // with misses). A candidate may not have a worse p95 than the box an engine's box
+  // projection would use (the aabb candidate, else the best p95), by more than noise (2% +
+  // 0.05 degrees); among those the most accurate by mean, sparing the planes that buy less
+  // than 5% of it: a concave room that no convex proxy models gets a simple proxy, not 30
+  // planes for a hundredth of a degree. Misses past ten times the allowed rate are a proxy
+  // that does not hold the room.
   const auto p95Of = [&](std::size_t i) {
     const double p = candidates[i].error.p95WithMissesDeg;
     return std::isfinite(p) ? p : 1e300;
@@ -52,24 +54,29 @@ std::size_t selectProxy(const std::vector<ProxyCandidate>& candidates, const Pro
     const double m = candidates[i].error.meanCostDeg;
     return std::isfinite(m) ? m : 1e300;
   };
-  // Misses show as 180 degrees here; past ten times the allowed rate they are a proxy that
-  // does not hold the room, whatever its p95 says.
   const auto admissible = [&](std::size_t i) {
     return generated(i) && candidates[i].error.missRate <= 10 * o.maxMissRate;
   };
+  double p95Limit = 1e300;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (admissible(i)) p95Limit = std::min(p95Limit, p95Of(i));
+  }
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (admissible(i) && candidates[i].origin == CandidateOrigin::Aabb)
+      p95Limit = std::max(p95Limit, p95Of(i));
+  }
+  p95Limit = 1.02 * p95Limit + 0.05;
+  const auto eligible = [&](std::size_t i) { return admissible(i) && p95Of(i) <= p95Limit; };
   std::size_t mostAccurate = candidates.size();
   for (std::size_t i = 0; i < candidates.size(); ++i) {
-    if (!admissible(i)) continue;
-    if (mostAccurate == candidates.size() ||
-        std::make_pair(p95Of(i), meanOf(i)) <
-            std::make_pair(p95Of(mostAccurate), meanOf(mostAccurate)))
+    if (eligible(i) && (mostAccurate == candidates.size() || meanOf(i) < meanOf(mostAccurate)))
       mostAccurate = i;
   }
   if (mostAccurate == candidates.size()) return 0;  // none admissible: keep the first
-  const double goodEnough = 1.02 * p95Of(mostAccurate) + 0.05;
+  const double goodEnough = 1.05 * meanOf(mostAccurate) + 0.01;
   const double missesAllowed = candidates[mostAccurate].error.missRate + o.maxMissRate;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
-    if (!admissible(i) || p95Of(i) > goodEnough || candidates[i].error.missRate > missesAllowed)
+    if (!eligible(i) || meanOf(i) > goodEnough || candidates[i].error.missRate > missesAllowed)
       continue;
     if (best == candidates.size() || complexity(i) < complexity(best)) best = i;
   }

@@ -12,11 +12,11 @@ namespace probeproxy {
 // 1. the authored one, unless options.regenerate;
 // 2. else the fewest planes (then the simpler test: infinite < cheap_k < sphere < aabb < obb <
 //    convex) among those meeting the tolerance (p95 and miss rate) within the plane budget;
-// 3. else, within the budget and missing at most ten times max_miss_rate, the simplest whose p95
-// with misses at 180 degrees
-//    (ErrorFigures::p95WithMissesDeg, what a player sees) is within 2% + 0.05 degrees of the
-//    best and that misses at most max_miss_rate more than the best: so the kept proxy is never
-//    worse than the aabb candidate by more than that noise;
+// 3. else, among those within the budget that miss at most ten times max_miss_rate and whose
+//    p95 with misses at 180 degrees (ErrorFigures::p95WithMissesDeg) is no worse than the
+//    aabb candidate's (what an engine's box projection uses) by more than 2% + 0.05 degrees,
+//    the simplest within 5% + 0.01 degrees of the lowest mean error (misses at 180 degrees):
+//    so the kept proxy is never worse than the box on either figure a player sees;
 // 4. else (none admissible) the first.
 std::size_t selectProxy(const std::vector<ProxyCandidate>& candidates,
                         const ProxyBuildOptions& options);
