@@ -6,15 +6,40 @@
 
 #include <tbb/parallel_for.h>
 
+#include <glm/geometric.hpp>
+
 #include <mutex>
 #include <sstream>
 
 namespace probeproxy {
 
-std::vector<ProbeProxyBuild> buildSceneProxies(
-    const Scene& scene, const LevelRayCaster& level, const ProxyBuildOptions& options,
-    const std::function<void(std::size_t, std::size_t)>& onProbeDone) {
-  options.check();
+namespace {
+
+struct SurfaceNearby {
+  double distanceMeters = 1e300;
+  std::uint32_t triangle = kNoTriangle;
+};
+
+// The nearest surface along the 26 directions to a cube's faces, edges and corners: enough to
+// find a floor, wall or corner the point sits on.
+SurfaceNearby nearestSurface(const LevelRayCaster& level, glm::dvec3 point) {
+  SurfaceNearby near;
+  for (int x = -1; x <= 1; ++x) {
+    for (int y = -1; y <= 1; ++y) {
+      for (int z = -1; z <= 1; ++z) {
+        if (x == 0 && y == 0 && z == 0) continue;
+        const glm::vec3 direction = glm::normalize(glm::vec3(x, y, z));
+        const RayHit hit = level.firstHit({point, direction});
+        if (hit.hit() && double(hit.t) < near.distanceMeters) near = {double(hit.t), hit.triangle};
+      }
+    }
+  }
+  return near;
+}
+
+}  // namespace
+
+void checkCapturePoints(const Scene& scene, const LevelRayCaster& level) {
   // A probe outside its own influence volume has no reflections to fit a proxy to (the samples
   // live in the volume): bad input, said before any work. `validate` reports it as a finding.
   for (std::size_t i = 0; i < scene.probes.size(); ++i) {
@@ -28,6 +53,31 @@ std::vector<ProbeProxyBuild> buildSceneProxies(
       throw InputError(scene.file, problem.str());
     }
   }
+
+  // A capture point on a surface sees half the level from behind it: no proxy can contain it.
+  // Said before any work, with the nearest surface and how far to move.
+  for (std::size_t i = 0; i < scene.probes.size(); ++i) {
+    const Probe& probe = scene.probes[i];
+    const SurfaceNearby near = nearestSurface(level, probe.captureMeters);
+    if (near.distanceMeters < kMinCaptureClearanceMeters) {
+      std::ostringstream problem;
+      problem << "$.probes[" << i << "]: probe '" << probe.name << "' captures at ("
+              << probe.captureMeters.x << ", " << probe.captureMeters.y << ", "
+              << probe.captureMeters.z << ") m, "
+              << (near.distanceMeters > 0.0 ? near.distanceMeters : 0.0)
+              << " m from a level surface (triangle " << near.triangle
+              << "); move the capture point at least " << kMinCaptureClearanceMeters
+              << " m off it, into the room";
+      throw InputError(scene.file, problem.str());
+    }
+  }
+}
+
+std::vector<ProbeProxyBuild> buildSceneProxies(
+    const Scene& scene, const LevelRayCaster& level, const ProxyBuildOptions& options,
+    const std::function<void(std::size_t, std::size_t)>& onProbeDone) {
+  options.check();
+  checkCapturePoints(scene, level);
 
   // Authored meshes are read first, on this thread: a bad one is reported before any work.
   std::vector<std::optional<ProxyShape>> authored;

@@ -12,6 +12,15 @@
 
 namespace probeproxy {
 
+// A capture point closer than this to a level surface is refused (InputError naming the probe,
+// the distance and the triangle): its cubemap would see the level from behind the surface.
+inline constexpr double kMinCaptureClearanceMeters = 0.01;
+
+// Throws InputError for the first probe whose capture point is outside its influence volume
+// (it has no reflections to fit to) or within kMinCaptureClearanceMeters of a surface. Run by
+// buildSceneProxies first; callers that read several scenes before any work run it too.
+void checkCapturePoints(const Scene& scene, const LevelRayCaster& level);
+
 // `onProbeDone(done, total)` is called as probes finish (from worker threads, serialized).
 std::vector<ProbeProxyBuild> buildSceneProxies(
     const Scene& scene, const LevelRayCaster& level, const ProxyBuildOptions& options,

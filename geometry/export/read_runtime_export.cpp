@@ -390,22 +390,6 @@ RuntimeExport runtimeFromDocument(const Json& root) {
   return runtime;
 }
 
-struct FileCloser {
-  void operator()(std::FILE* stream) const { std::fclose(stream); }
-};
-
-std::string readWholeFile(const std::filesystem::path& file) {
-  const std::unique_ptr<std::FILE, FileCloser> stream(std::fopen(file.c_str(), "rb"));
-  if (!stream) throw InputError(file, "cannot open: " + std::generic_category().message(errno));
-  std::string bytes;
-  char buffer[1 << 16];
-  std::size_t n;
-  while ((n = std::fread(buffer, 1, sizeof(buffer), stream.get())) > 0) bytes.append(buffer, n);
-  if (std::ferror(stream.get())) {
-    throw InputError(file, "cannot read: " + std::generic_category().message(errno));
-  }
-  return bytes;
-}
 
 }  // namespace
 
@@ -418,7 +402,7 @@ RuntimeExport parseRuntimeExport(std::string_view bytes, const std::filesystem::
 }
 
 RuntimeExport readRuntimeExport(const std::filesystem::path& proxiesJson) {
-  return parseRuntimeExport(readWholeFile(proxiesJson), proxiesJson);
+  return parseRuntimeExport(readJsonFile(proxiesJson), proxiesJson);
 }
 
 }  // namespace probeproxy

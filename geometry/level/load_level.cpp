@@ -1,7 +1,9 @@
 #include "geometry/level/load_level.h"
 
 #include "core/errors/input_error.h"
+#include "core/scene/scene_limits.h"
 #include "geometry/level/bsp/bsp_level.h"
+#include "geometry/level/polygon_soup_file.h"
 
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -136,9 +138,35 @@ std::mutex assimpMutex;
 
 }  // namespace
 
+// Every reader converts to float metres; a coordinate past the scene limit (or one that
+// overflowed float on the way) would reach Embree, so it stops here, whatever the format.
+void requireLevelWithinLimits(const std::filesystem::path& source, const LevelMesh& mesh) {
+  if (mesh.triangles.size() > kMaxLevelTriangles) {
+    throw InputError(source, "the level holds " + std::to_string(mesh.triangles.size()) +
+                                 " triangles, more than the limit of " +
+                                 std::to_string(kMaxLevelTriangles));
+  }
+  for (std::size_t i = 0; i < mesh.positionsMeters.size(); ++i) {
+    const glm::vec3 p = mesh.positionsMeters[i];
+    if (std::abs(p.x) <= kMaxSceneMeters && std::abs(p.y) <= kMaxSceneMeters &&
+        std::abs(p.z) <= kMaxSceneMeters)
+      continue;
+    std::ostringstream problem;
+    problem << "vertex " << i << " is at (" << p.x << ", " << p.y << ", " << p.z
+            << ") m, expected coordinates within " << kMaxSceneMeters
+            << " m (the limit of a scene, in metres)";
+    throw InputError(source, problem.str());
+  }
+}
+
 LevelMesh loadLevelMeshFile(const std::filesystem::path& file, UpAxis fileUp,
                             double metersPerUnit) {
   requireReadableMeshFile(file);
+  if (isPolygonSoupFile(file)) {
+    LevelMesh level = readPolygonSoupFile(file, fileUp, metersPerUnit);
+    requireLevelWithinLimits(file, level);
+    return level;
+  }
 
   const std::lock_guard<std::mutex> lock(assimpMutex);
   AssimpErrorLog errors;
@@ -160,6 +188,7 @@ LevelMesh loadLevelMeshFile(const std::filesystem::path& file, UpAxis fileUp,
     appendNode(*scene, *scene->mRootNode, aiMatrix4x4(), file, fileUp, metersPerUnit, level);
   }
   if (level.triangles.empty()) throw InputError(file, "mesh has no triangles");
+  requireLevelWithinLimits(file, level);
   return level;
 }
 
@@ -175,6 +204,7 @@ LevelMesh loadLevelMeshRef(const LevelMeshRef& ref, double sceneMetersPerUnit) {
                         : std::filesystem::path(ref.path.string() + ":" + ref.map.generic_string());
     throw InputError(named, "BSP has no solid faces");
   }
+  requireLevelWithinLimits(ref.path, bsp.mesh);
   for (const BspSpawnPoint& s : bsp.spawnPoints)
     bsp.mesh.spawnPointsMeters.push_back(s.originMeters);
   return std::move(bsp.mesh);
@@ -186,6 +216,7 @@ LevelMesh loadLevel(const Scene& scene) {
   for (const LevelMeshRef& ref : scene.level) {
     appendLevelMesh(level, loadLevelMeshRef(ref, scene.metersPerUnit));
   }
+  requireLevelWithinLimits(scene.file, level);
   return level;
 }
 

@@ -11,6 +11,10 @@
 
 namespace probeproxy {
 
+// Throws InputError naming `source` if `mesh` holds more than kMaxLevelTriangles triangles or
+// a vertex past kMaxSceneMeters (core/scene/scene_limits.h). Every loader below calls it.
+void requireLevelWithinLimits(const std::filesystem::path& source, const LevelMesh& mesh);
+
 // One mesh file. `fileUp` and `metersPerUnit` say how the file's coordinates map to the world.
 LevelMesh loadLevelMeshFile(const std::filesystem::path& file, UpAxis fileUp, double metersPerUnit);
 

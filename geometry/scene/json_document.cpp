@@ -1,7 +1,13 @@
 #include "geometry/scene/json_document.h"
 
+#include "core/errors/input_error.h"
+
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <memory>
 #include <optional>
+#include <system_error>
 #include <utility>
 #include <vector>
 
@@ -164,6 +170,11 @@ class PathTrackingParser final : public nlohmann::json_sax<Json> {
 
   bool open(Json emptyContainer) {
     std::string path = pathOfNextValue();
+    if (open_.size() >= kMaxJsonDepth) {
+      problem_ = path + ": nested deeper than " + std::to_string(kMaxJsonDepth) +
+                 " arrays and objects (the limit of probeproxy's JSON files)";
+      return false;
+    }
     Json* container = insert(std::move(emptyContainer));
     open_.push_back(OpenContainer{container, std::move(path), 0, {}});
     return true;
@@ -183,10 +194,44 @@ class PathTrackingParser final : public nlohmann::json_sax<Json> {
 }  // namespace
 
 nlohmann::json parseJsonDocument(std::string_view text) {
+  if (text.size() > kMaxJsonBytes) {
+    throw JsonProblem("is " + std::to_string(text.size()) + " bytes; JSON files are read up to " +
+                      std::to_string(kMaxJsonBytes >> 20) + " MiB");
+  }
   PathTrackingParser parser(text);
   const bool parsed = Json::sax_parse(text.begin(), text.end(), &parser);
   if (!parsed) throw JsonProblem(parser.problem().value_or("invalid JSON"));
   return std::move(parser.document());
+}
+
+namespace {
+
+struct FileCloser {
+  void operator()(std::FILE* stream) const { std::fclose(stream); }
+};
+
+}  // namespace
+
+std::string readJsonFile(const std::filesystem::path& file) {
+  const std::unique_ptr<std::FILE, FileCloser> stream(std::fopen(file.c_str(), "rb"));
+  if (!stream) throw InputError(file, "cannot open: " + std::generic_category().message(errno));
+  std::error_code error;
+  const std::uintmax_t size = std::filesystem::file_size(file, error);
+  if (!error && size > kMaxJsonBytes) {
+    throw InputError(file, "is " + std::to_string(size) + " bytes; JSON files are read up to " +
+                               std::to_string(kMaxJsonBytes >> 20) + " MiB");
+  }
+  std::string bytes;
+  char buffer[1 << 16];
+  std::size_t count;
+  while ((count = std::fread(buffer, 1, sizeof(buffer), stream.get())) > 0) {
+    bytes.append(buffer, count);
+    if (bytes.size() > kMaxJsonBytes) break;  // a pipe or a growing file: parse refuses it
+  }
+  if (std::ferror(stream.get())) {  // e.g. a folder: fopen succeeds, reading does not
+    throw InputError(file, "cannot read: " + std::generic_category().message(errno));
+  }
+  return bytes;
 }
 
 std::string jsonMemberPath(const std::string& objectPath, std::string_view key) {

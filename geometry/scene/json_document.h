@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -21,9 +22,20 @@ class JsonProblem : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The limits of the JSON probeproxy reads (scene files, proxies.json): every real file is far
+// inside them, and a hostile one is refused in time linear in its size, before it can exhaust
+// memory or the stack.
+inline constexpr std::size_t kMaxJsonBytes = std::size_t(64) << 20;  // 64 MiB
+inline constexpr std::size_t kMaxJsonDepth = 64;                     // nested arrays/objects
+
 // The document, or JsonProblem. Lines and columns count from 1; columns count characters
-// (UTF-8 code points), as editors do.
+// (UTF-8 code points), as editors do. Text over kMaxJsonBytes or nested deeper than
+// kMaxJsonDepth is refused.
 nlohmann::json parseJsonDocument(std::string_view text);
+
+// A JSON file's bytes, for parseJsonDocument. Throws InputError naming the file: cannot open,
+// cannot read (a folder), or larger than kMaxJsonBytes (checked before reading).
+std::string readJsonFile(const std::filesystem::path& file);
 
 // JSON paths as error messages spell them: `$`, `$.probes[1].influence.radius`, and
 // `$["odd key"]` for keys that are not plain identifiers.

@@ -13,6 +13,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <sstream>
 #include <cstdio>
 #include <initializer_list>
 #include <map>
@@ -293,12 +294,27 @@ bool isFinite(const glm::dvec3& v) {
   failExpected(path, "numbers that stay finite in metres", value);
 }
 
+// Ray casting (Embree, in float relative to the level's centre), the weight grids and every
+// allocation sized by the scene need numbers a level can hold: positions within
+// kMaxSceneMeters of the origin and sizes up to that, in metres after meters_per_unit.
+bool withinScene(const glm::dvec3& meters) {
+  return std::abs(meters.x) <= kMaxSceneMeters && std::abs(meters.y) <= kMaxSceneMeters &&
+         std::abs(meters.z) <= kMaxSceneMeters;
+}
+
+[[noreturn]] void failOutsideScene(const std::string& path, const Json& value, const char* what) {
+  std::ostringstream expected;
+  expected << what << " within " << kMaxSceneMeters << " m (the limit of a scene, in metres)";
+  failExpected(path, expected.str(), value);
+}
+
 glm::dvec3 pointMember(const Json& object, const std::string& path, const char* name,
                        const FileFrame& frame) {
   const std::string memberPath = jsonMemberPath(path, name);
   const Json& value = requiredMember(object, path, name);
   const glm::dvec3 meters = worldPointFromFile(frame, finiteVec3(value, memberPath));
   if (!isFinite(meters)) failOverflow(memberPath, value);
+  if (!withinScene(meters)) failOutsideScene(memberPath, value, "coordinates");
   return meters;
 }
 
@@ -308,6 +324,7 @@ glm::dvec3 halfExtentsMember(const Json& object, const std::string& path, const 
   const Json& value = requiredMember(object, path, name);
   const glm::dvec3 meters = worldHalfExtentsFromFile(frame, positiveVec3(value, memberPath));
   if (!isFinite(meters)) failOverflow(memberPath, value);
+  if (!withinScene(meters)) failOutsideScene(memberPath, value, "half-extents");
   return meters;
 }
 
@@ -317,6 +334,7 @@ double lengthMember(const Json& object, const std::string& path, const char* nam
   const Json& value = requiredMember(object, path, name);
   const double meters = worldLengthFromFile(frame, positiveNumber(value, memberPath));
   if (!std::isfinite(meters)) failOverflow(memberPath, value);
+  if (!(meters <= kMaxSceneMeters)) failOutsideScene(memberPath, value, "a length");
   return meters;
 }
 
@@ -559,6 +577,11 @@ Scene sceneFromDocument(const Json& root, const fs::path& absoluteFile) {
   scene.fileUp = upAxis(requiredMember(root, "$", "up"), "$.up");
   if (const Json* metersPerUnit = optionalMember(root, "meters_per_unit")) {
     scene.metersPerUnit = positiveNumber(*metersPerUnit, "$.meters_per_unit");
+    if (!(scene.metersPerUnit >= kMinMetersPerUnit && scene.metersPerUnit <= kMaxMetersPerUnit)) {
+      std::ostringstream expected;
+      expected << "a number from " << kMinMetersPerUnit << " to " << kMaxMetersPerUnit;
+      failExpected("$.meters_per_unit", expected.str(), *metersPerUnit);
+    }
   }
   const FileFrame frame{scene.fileUp, scene.metersPerUnit};
   const fs::path folder = absoluteFile.parent_path();
@@ -567,26 +590,6 @@ Scene sceneFromDocument(const Json& root, const fs::path& absoluteFile) {
   return scene;
 }
 
-struct FileCloser {
-  void operator()(std::FILE* stream) const { std::fclose(stream); }
-};
-
-std::string readWholeFile(const fs::path& file) {
-  const std::unique_ptr<std::FILE, FileCloser> stream(std::fopen(file.c_str(), "rb"));
-  if (!stream) {
-    throw InputError(file, "cannot open: " + std::generic_category().message(errno));
-  }
-  std::string bytes;
-  char buffer[1 << 16];
-  std::size_t count;
-  while ((count = std::fread(buffer, 1, sizeof(buffer), stream.get())) > 0) {
-    bytes.append(buffer, count);
-  }
-  if (std::ferror(stream.get())) {  // e.g. a folder: fopen succeeds, reading does not
-    throw InputError(file, "cannot read: " + std::generic_category().message(errno));
-  }
-  return bytes;
-}
 
 // ------------------------------------------------------------------------------------------
 // Writing.
@@ -797,7 +800,7 @@ Scene parseSceneFile(std::string_view bytes, const std::filesystem::path& file) 
 }
 
 Scene readSceneFile(const std::filesystem::path& file) {
-  return parseSceneFile(readWholeFile(file), file);
+  return parseSceneFile(readJsonFile(file), file);
 }
 
 std::string sceneFileJson(const Scene& scene) {

@@ -12,6 +12,7 @@
 // significant digits from 1e6 up), so conversion noise such as 30 * 0.01 / 0.01 never shows.
 
 #include "core/scene/scene.h"
+#include "core/scene/scene_limits.h"
 
 #include <filesystem>
 #include <string>

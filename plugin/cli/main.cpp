@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
     std::cerr << "probeproxy: error: " << e.what() << "\n";
     return kExitBadInput;
   } catch (const std::exception& e) {
-    std::cerr << "probeproxy: internal error: " << e.what() << "\n";
+    std::cerr << "probeproxy: internal error: " << oneLine(e.what()) << "\n";
     return 3;
   }
   return kExitBadInput;

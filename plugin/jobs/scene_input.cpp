@@ -26,6 +26,7 @@ LevelMesh loadSceneLevel(const Scene& scene, const SceneInput& input) {
     }
   }
   if (level.triangles.empty()) throw InputError(scene.file, "the level has no triangles");
+  requireLevelWithinLimits(scene.file, level);
   return level;
 }
 

@@ -3,6 +3,7 @@
 #include "core/errors/input_error.h"
 #include "core/errors/option_checks.h"
 #include "core/io/atomic_write.h"
+#include "core/io/output_folder.h"
 #include "plugin/jobs/bench/bench_report.h"
 
 namespace probeproxy::jobs {
@@ -12,6 +13,7 @@ void BenchJobOptions::check() const {
   requireInRange("repetitions", bench.timing.repetitions, 1, 100);
   requireInRange("min_time", bench.timing.minTimeSeconds, 0.001, 10.0);
   bench.proxy.check();
+  if (!outFolder.empty()) checkOutputFolder(outFolder);
 }
 
 BenchJobResult runBenchJob(const BenchJobOptions& o, const Say& say) {

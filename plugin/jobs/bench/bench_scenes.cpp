@@ -108,6 +108,7 @@ std::vector<BenchResult> benchScenes(const std::vector<std::string>& sceneFiles,
   for (const std::string& file : sceneFiles) {
     LoadedScene loaded{sceneName(file), readSceneFile(file), nullptr};
     loaded.level = std::make_unique<LevelRayCaster>(loadLevel(loaded.scene));
+    checkCapturePoints(loaded.scene, *loaded.level);
     scenes.push_back(std::move(loaded));
   }
 

@@ -5,6 +5,7 @@
 #include "core/cube/cubemap_io.h"
 #include "core/errors/input_error.h"
 #include "core/errors/option_checks.h"
+#include "core/io/output_folder.h"
 #include "core/image/write_png.h"
 #include "geometry/scene/scene_file.h"
 #include "plugin/jobs/mixing/mixing_inputs.h"
@@ -87,6 +88,8 @@ void BlendJobOptions::check() const {
   if (!outPattern.empty() && outPattern.find(kFace) == std::string::npos)
     throw InputError(outPattern, "output pattern has no {face} (e.g. out/blend_{face}.exr)");
   requireInRange("max_probes", blend.maxProbes, 1, 64);
+  if (!outPattern.empty()) checkOutputFolder(std::filesystem::path(outPattern).parent_path());
+  if (!weightsPng.empty()) checkOutputFolder(weightsPng.parent_path());
 }
 
 BlendJobResult runBlendJob(const BlendJobOptions& o) {

@@ -1,5 +1,6 @@
 #include "plugin/jobs/build/build_job.h"
 
+#include "core/io/output_folder.h"
 #include "geometry/build/build_scene_proxies.h"
 #include "geometry/export/runtime_export.h"
 #include "geometry/raycast/level_ray_caster.h"
@@ -7,7 +8,10 @@
 
 namespace probeproxy::jobs {
 
-void BuildJobOptions::check() const { proxy.check(); }
+void BuildJobOptions::check() const {
+  proxy.check();
+  if (!outFolder.empty()) checkOutputFolder(outFolder);
+}
 
 BuildJobResult runBuildJob(const BuildJobOptions& o, const Progress& progress) {
   o.check();

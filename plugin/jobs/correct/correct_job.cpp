@@ -2,6 +2,7 @@
 
 #include "core/cube/cubemap_io.h"
 #include "core/errors/input_error.h"
+#include "core/io/output_folder.h"
 #include "core/mixing/reflected_camera.h"
 #include "geometry/scene/scene_file.h"
 #include "plugin/jobs/mixing/mixing_inputs.h"
@@ -11,6 +12,7 @@ namespace probeproxy::jobs {
 void CorrectJobOptions::check() const {
   if (outPattern.find("{face}") == std::string::npos)
     throw InputError(outPattern, "the output pattern needs {face} (px nx py ny pz nz)");
+  checkOutputFolder(std::filesystem::path(outPattern).parent_path());
 }
 
 CorrectJobResult runCorrectJob(const CorrectJobOptions& o) {

@@ -6,6 +6,7 @@
 #include "core/errors/option_checks.h"
 #include "core/image/write_png.h"
 #include "core/io/atomic_write.h"
+#include "core/io/output_folder.h"
 #include "geometry/build/build_scene_proxies.h"
 #include "geometry/builtin/box_room.h"
 #include "geometry/builtin/builtin_corridor.h"
@@ -77,6 +78,7 @@ void drawCharts(const std::filesystem::path& benchJson, const std::filesystem::p
 void DemoJobOptions::check() const {
   if (outFolder.empty()) throw InputError("--out", "the demo needs an output folder");
   requireInRange("face_size", faceSize, 8, 2048);
+  checkOutputFolder(outFolder);
 }
 
 void runDemoJob(const DemoJobOptions& o, std::ostream& narrative) {

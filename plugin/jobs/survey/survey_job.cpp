@@ -1,6 +1,7 @@
 #include "plugin/jobs/survey/survey_job.h"
 
 #include "core/io/atomic_write.h"
+#include "core/io/output_folder.h"
 #include "geometry/raycast/level_ray_caster.h"
 #include "geometry/survey/run_survey.h"
 #include "geometry/survey/survey_map.h"
@@ -9,7 +10,10 @@
 
 namespace probeproxy::jobs {
 
-void SurveyJobOptions::check() const { survey.check(); }
+void SurveyJobOptions::check() const {
+  survey.check();
+  if (!outFolder.empty()) checkOutputFolder(outFolder);
+}
 
 SurveyJobResult runSurveyJob(const SurveyJobOptions& o, const Progress& progress) {
   o.check();  // before the level loads: a bad option is one line, at once
