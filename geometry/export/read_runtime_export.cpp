@@ -2,6 +2,7 @@
 #include "core/scene/file_frame.h"
 #include "geometry/export/runtime_export.h"
 #include "geometry/scene/json_document.h"
+#include "geometry/scene/json_values.h"
 
 #include <nlohmann/json.hpp>
 
@@ -22,43 +23,28 @@ using Json = nlohmann::json;
 // wrong; parseRuntimeExport turns that into an InputError naming the file. Members this
 // reader does not know are ignored: a runtime loader must accept additions of later versions.
 
-[[noreturn]] void fail(const std::string& path, const std::string& problem) {
-  throw JsonProblem(path + ": " + problem);
-}
-
-[[noreturn]] void failExpected(const std::string& path, const std::string& expected,
-                               const Json& got) {
-  fail(path, "expected " + expected + ", got " + describeJson(got));
-}
-
 // A value and where it is, so that every check can name it.
 struct At {
   const Json& value;
   std::string path;
 
   At member(const char* name) const {
-    if (!value.is_object()) failExpected(path, "an object", value);
+    if (!value.is_object()) failJsonExpected(path, "an object", value);
     const auto found = value.find(name);
-    if (found == value.end()) fail(path, std::string("expected member \"") + name + "\"");
+    if (found == value.end()) failJson(path, std::string("expected member \"") + name + "\"");
     return {*found, jsonMemberPath(path, name)};
   }
   bool has(const char* name) const { return value.is_object() && value.contains(name); }
   At operator[](std::size_t i) const { return {value[i], jsonIndexPath(path, i)}; }
 };
 
-bool isFiniteNumber(const Json& v) { return v.is_number() && std::isfinite(v.get<double>()); }
-
-double finiteNumber(const At& at) {
-  if (!isFiniteNumber(at.value)) failExpected(at.path, "a finite number", at.value);
-  return at.value.get<double>();
-}
-
-double positiveNumber(const At& at) {
-  if (!isFiniteNumber(at.value) || !(at.value.get<double>() > 0.0)) {
-    failExpected(at.path, "a positive number", at.value);
-  }
-  return at.value.get<double>();
-}
+// The kit's checks (geometry/scene/json_values.h), at a value and its path.
+double finiteNumber(const At& at) { return probeproxy::finiteNumber(at.value, at.path); }
+double positiveNumber(const At& at) { return probeproxy::positiveNumber(at.value, at.path); }
+glm::dvec3 vec3(const At& at) { return finiteVec3(at.value, at.path); }
+glm::dvec3 positiveVec3(const At& at) { return probeproxy::positiveVec3(at.value, at.path); }
+glm::dquat unitQuaternionWxyz(const At& at) { return probeproxy::unitQuaternionWxyz(at.value, at.path); }
+glm::dquat quaternionXyzw(const At& at) { return unitQuaternionXyzw(at.value, at.path); }
 
 double numberOrNull(const At& at) {  // null: not measured
   if (at.value.is_null()) return std::nan("");
@@ -66,74 +52,33 @@ double numberOrNull(const At& at) {  // null: not measured
 }
 
 bool boolean(const At& at) {
-  if (!at.value.is_boolean()) failExpected(at.path, "true or false", at.value);
+  if (!at.value.is_boolean()) failJsonExpected(at.path, "true or false", at.value);
   return at.value.get<bool>();
 }
 
 std::string string(const At& at) {
-  if (!at.value.is_string()) failExpected(at.path, "a string", at.value);
+  if (!at.value.is_string()) failJsonExpected(at.path, "a string", at.value);
   return at.value.get<std::string>();
 }
 
 std::size_t count(const At& at) {
-  if (!at.value.is_number_unsigned()) failExpected(at.path, "a non-negative integer", at.value);
+  if (!at.value.is_number_unsigned()) failJsonExpected(at.path, "a non-negative integer", at.value);
   return at.value.get<std::size_t>();
 }
 
 const Json& array(const At& at) {
-  if (!at.value.is_array()) failExpected(at.path, "an array", at.value);
+  if (!at.value.is_array()) failJsonExpected(at.path, "an array", at.value);
   return at.value;
 }
 
 template <std::size_t N>
 std::array<double, N> finiteNumbers(const At& at) {
+  if (!at.value.is_array() || at.value.size() != N) {
+    failJsonExpected(at.path, "an array of " + std::to_string(N) + " finite numbers", at.value);
+  }
   std::array<double, N> numbers{};
-  bool ok = at.value.is_array() && at.value.size() == N;
-  for (std::size_t i = 0; ok && i < N; ++i) {
-    ok = isFiniteNumber(at.value[i]);
-    if (ok) numbers[i] = at.value[i].get<double>();
-  }
-  if (!ok) failExpected(at.path, "an array of " + std::to_string(N) + " finite numbers", at.value);
+  for (std::size_t i = 0; i < N; ++i) numbers[i] = finiteNumber(at[i]);
   return numbers;
-}
-
-glm::dvec3 vec3(const At& at) {
-  const auto c = finiteNumbers<3>(at);
-  return {c[0], c[1], c[2]};
-}
-
-glm::dvec3 positiveVec3(const At& at) {
-  const glm::dvec3 v = vec3(at);
-  if (!(v.x > 0.0 && v.y > 0.0 && v.z > 0.0)) {
-    failExpected(at.path, "an array of 3 positive numbers", at.value);
-  }
-  return v;
-}
-
-constexpr double kUnitTolerance = 1e-6;  // written exactly; anything further off was edited
-
-glm::dquat unitQuaternionWxyz(const At& at) {
-  const auto c = finiteNumbers<4>(at);
-  const double length = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2] + c[3] * c[3]);
-  if (!(std::abs(length - 1.0) <= kUnitTolerance)) {
-    failExpected(at.path, "a unit quaternion [w, x, y, z]", at.value);
-  }
-  glm::dquat q;
-  q.w = c[0];
-  q.x = c[1];
-  q.y = c[2];
-  q.z = c[3];
-  return q;
-}
-
-glm::dquat quaternionXyzw(const At& at) {  // engine quaternions
-  const auto c = finiteNumbers<4>(at);
-  glm::dquat q;
-  q.x = c[0];
-  q.y = c[1];
-  q.z = c[2];
-  q.w = c[3];
-  return q;
 }
 
 std::string oneOf(const At& at, std::initializer_list<std::string_view> options) {
@@ -147,7 +92,7 @@ std::string oneOf(const At& at, std::initializer_list<std::string_view> options)
   for (std::string_view option : options) {
     expected += (option == *options.begin() ? " \"" : ", \"") + std::string(option) + "\"";
   }
-  failExpected(at.path, expected, at.value);
+  failJsonExpected(at.path, expected, at.value);
 }
 
 // ------------------------------------------------------------------------------------------
@@ -165,7 +110,7 @@ class Reader {
   double length(const At& at) const {
     const double meters = worldLengthFromFile(frame_, positiveNumber(at));
     if (!std::isfinite(meters))
-      failExpected(at.path, "a number that stays finite in metres", at.value);
+      failJsonExpected(at.path, "a number that stays finite in metres", at.value);
     return meters;
   }
   double perLength(const At& at) const {  // per file unit -> per metre
@@ -187,16 +132,20 @@ class Reader {
 
   ProxyPlane plane(const At& at) const {
     const auto c = finiteNumbers<4>(at);
-    const glm::dvec3 n(c[0], c[1], c[2]);
-    if (!(std::abs(std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z) - 1.0) <= kUnitTolerance)) {
-      failExpected(at.path, "[nx, ny, nz, d] with a unit normal", at.value);
+    const double length = lengthOf(std::array<double, 3>{c[0], c[1], c[2]});
+    if (!(std::abs(length - 1.0) <= kUnitLengthTolerance)) {
+      failJsonExpected(at.path, "[nx, ny, nz, d] with a unit normal (length within 1e-3 of 1)",
+                       at.value);
     }
-    return {worldDirectionFromFile(frame_, n), worldLengthFromFile(frame_, c[3])};
+    // Scaled as a whole, so the plane stays where it was written.
+    const double scale = isUnitToRounding(length) ? 1.0 : length;
+    const glm::dvec3 n = glm::dvec3(c[0], c[1], c[2]) / scale;
+    return {worldDirectionFromFile(frame_, n), worldLengthFromFile(frame_, c[3] / scale)};
   }
 
   glm::dmat4 worldToUnit(const At& at) const {
     if (!at.value.is_array() || at.value.size() != 4) {
-      failExpected(at.path, "4 rows of 4 finite numbers", at.value);
+      failJsonExpected(at.path, "4 rows of 4 finite numbers", at.value);
     }
     glm::dmat4 fileToUnit(0.0);
     for (std::size_t r = 0; r < 4; ++r) {
@@ -239,12 +188,12 @@ class Reader {
       const bool ok = t.value.is_array() && t.value.size() == 3 &&
                       t.value[0].is_number_unsigned() && t.value[1].is_number_unsigned() &&
                       t.value[2].is_number_unsigned();
-      if (!ok) failExpected(t.path, "3 vertex indices", t.value);
+      if (!ok) failJsonExpected(t.path, "3 vertex indices", t.value);
       glm::uvec3 tri;
       for (int k = 0; k < 3; ++k) {
         const auto index = t.value[static_cast<std::size_t>(k)].get<std::uint64_t>();
         if (index >= convex.verticesMeters.size()) {
-          failExpected(t.path,
+          failJsonExpected(t.path,
                        "vertex indices below " + std::to_string(convex.verticesMeters.size()),
                        t.value);
         }
@@ -258,7 +207,7 @@ class Reader {
  private:
   static glm::dvec3 checkedFinite(const At& at, glm::dvec3 meters) {
     if (!std::isfinite(meters.x) || !std::isfinite(meters.y) || !std::isfinite(meters.z)) {
-      failExpected(at.path, "numbers that stay finite in metres", at.value);
+      failJsonExpected(at.path, "numbers that stay finite in metres", at.value);
     }
     return meters;
   }
@@ -286,14 +235,14 @@ template <class T, class Read>
 std::optional<T> optionalEngine(const At& engines, const char* name, Read read) {
   const At at = engines.member(name);
   if (at.value.is_null()) return std::nullopt;
-  if (!at.value.is_object()) failExpected(at.path, "an object or null", at.value);
+  if (!at.value.is_object()) failJsonExpected(at.path, "an object or null", at.value);
   T engine = read(at);
   engine.source = engineSource(at);
   return engine;
 }
 
 RuntimeEngines engines(const At& at) {
-  if (!at.value.is_object()) failExpected(at.path, "an object", at.value);
+  if (!at.value.is_object()) failJsonExpected(at.path, "an object", at.value);
   RuntimeEngines e;
   e.unity = optionalEngine<UnityReflectionProbe>(at, "unity_reflection_probe", [](const At& u) {
     UnityReflectionProbe p;
@@ -345,11 +294,11 @@ RuntimeEngines engines(const At& at) {
 }
 
 RuntimeProbe probe(const At& at, const Reader& reader) {
-  if (!at.value.is_object()) failExpected(at.path, "an object", at.value);
+  if (!at.value.is_object()) failJsonExpected(at.path, "an object", at.value);
   RuntimeProbe p;
   p.name = string(at.member("name"));
   if (p.name.empty())
-    failExpected(jsonMemberPath(at.path, "name"), "a non-empty string", at.value["name"]);
+    failJsonExpected(jsonMemberPath(at.path, "name"), "a non-empty string", at.value["name"]);
   p.captureMeters = reader.point(at.member("capture"));
   p.method = *methodFromName(
       oneOf(at.member("kind"), {"infinite", "cheap_k", "sphere", "aabb", "obb", "convex"}));
@@ -374,10 +323,10 @@ RuntimeProbe probe(const At& at, const Reader& reader) {
 
 RuntimeExport runtimeFromDocument(const Json& root) {
   const At doc{root, "$"};
-  if (!root.is_object()) failExpected("$", "an object", root);
+  if (!root.is_object()) failJsonExpected("$", "an object", root);
   const At version = doc.member(kRuntimeExportFormatId);
   if (!version.value.is_number() || version.value.get<double>() != kRuntimeExportVersion) {
-    failExpected(version.path, std::to_string(kRuntimeExportVersion), version.value);
+    failJsonExpected(version.path, std::to_string(kRuntimeExportVersion), version.value);
   }
   RuntimeExport runtime;
   runtime.fileUp = oneOf(doc.member("up"), {"Y", "Z"}) == "Y" ? UpAxis::Y : UpAxis::Z;

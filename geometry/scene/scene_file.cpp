@@ -5,7 +5,9 @@
 #include "core/scene/file_frame.h"
 #include "geometry/scene/json_document.h"
 #include "geometry/scene/json_layout.h"
+#include "geometry/scene/json_values.h"
 
+#include <glm/vector_relational.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -30,8 +32,6 @@ using Json = nlohmann::json;
 namespace fs = std::filesystem;
 
 constexpr int kFormatVersion = 1;
-constexpr double kUnitQuaternionTolerance = 1e-3;  // how far from length 1 a typed-in
-                                                   // quaternion may be before we refuse it
 constexpr char kMeshExtensionsText[] = ".glb, .gltf, .obj, .ply or .off";
 constexpr char kLevelExtensionsText[] = ".glb, .gltf, .obj, .ply, .off, .bsp or .pk3";
 constexpr char kFacePlaceholder[] = "{face}";
@@ -70,62 +70,21 @@ UpAxis defaultMeshUp(const fs::path& mesh, UpAxis sceneUp) {
   return extension == ".glb" || extension == ".gltf" ? UpAxis::Y : sceneUp;
 }
 
-// Divides by the largest component first, so that 1e200-sized input does not overflow the
-// length. Reading and the writer's stability check must normalize the same way.
-template <std::size_t N>
-std::array<double, N> normalized(std::array<double, N> v) {
-  double largest = 0.0;
-  for (double c : v) largest = std::max(largest, std::abs(c));
-  double squaredLength = 0.0;
-  for (double& c : v) {
-    c /= largest;
-    squaredLength += c * c;
-  }
-  const double length = std::sqrt(squaredLength);
-  for (double& c : v) c /= length;
-  return v;
-}
-
-template <std::size_t N>
-double lengthOf(const std::array<double, N>& v) {
-  double squaredLength = 0.0;
-  for (double c : v) squaredLength += c * c;
-  return std::sqrt(squaredLength);
-}
-
 std::array<double, 4> wxyz(const glm::dquat& q) { return {q.w, q.x, q.y, q.z}; }
-
-glm::dquat quaternionFromWxyz(const std::array<double, 4>& c) {
-  glm::dquat q;  // members, not the constructor: its argument order depends on GLM's config
-  q.w = c[0];
-  q.x = c[1];
-  q.y = c[2];
-  q.z = c[3];
-  return q;
-}
 
 // ------------------------------------------------------------------------------------------
 // Reading. Each function checks one value and throws JsonProblem("<path>: ...") for the first
 // thing wrong; parseSceneFile turns that into an InputError naming the file.
 
-[[noreturn]] void fail(const std::string& path, const std::string& problem) {
-  throw JsonProblem(path + ": " + problem);
-}
-
-[[noreturn]] void failExpected(const std::string& path, const std::string& expected,
-                               const Json& got) {
-  fail(path, "expected " + expected + ", got " + describeJson(got));
-}
-
 std::string quoted(std::string_view text) { return "\"" + std::string(text) + "\""; }
 
 void requireObject(const Json& value, const std::string& path) {
-  if (!value.is_object()) failExpected(path, "an object", value);
+  if (!value.is_object()) failJsonExpected(path, "an object", value);
 }
 
 const Json& requiredMember(const Json& object, const std::string& path, const char* name) {
   const auto member = object.find(name);
-  if (member == object.end()) fail(path, "expected member " + quoted(name));
+  if (member == object.end()) failJson(path, "expected member " + quoted(name));
   return *member;
 }
 
@@ -179,94 +138,42 @@ void rejectUnknownMembers(const Json& object, const std::string& path,
         hint += (option == *known.begin() ? " " : ", ") + quoted(option);
       }
     }
-    fail(jsonMemberPath(path, name), "unknown member (" + hint + ")");
+    failJson(jsonMemberPath(path, name), "unknown member (" + hint + ")");
   }
 }
 
 void checkVersion(const Json& root) {
   const Json& version = requiredMember(root, "$", "probeproxy_scene");
   if (!version.is_number() || version.get<double>() != kFormatVersion) {
-    failExpected("$.probeproxy_scene", std::to_string(kFormatVersion), version);
+    failJsonExpected("$.probeproxy_scene", std::to_string(kFormatVersion), version);
   }
 }
 
 UpAxis upAxis(const Json& value, const std::string& path) {
   if (value == "Y") return UpAxis::Y;
   if (value == "Z") return UpAxis::Z;
-  failExpected(path, "\"Y\" or \"Z\"", value);
-}
-
-bool isFiniteNumber(const Json& value) {
-  return value.is_number() && std::isfinite(value.get<double>());
-}
-
-double positiveNumber(const Json& value, const std::string& path) {
-  if (!isFiniteNumber(value) || !(value.get<double>() > 0.0)) {
-    failExpected(path, "a positive number", value);
-  }
-  return value.get<double>();
-}
-
-template <std::size_t N>
-std::optional<std::array<double, N>> finiteNumbers(const Json& value) {
-  if (!value.is_array() || value.size() != N) return std::nullopt;
-  std::array<double, N> numbers;
-  for (std::size_t i = 0; i < N; ++i) {
-    if (!isFiniteNumber(value[i])) return std::nullopt;
-    numbers[i] = value[i].get<double>();
-  }
-  return numbers;
-}
-
-glm::dvec3 toVec3(const std::array<double, 3>& c) { return {c[0], c[1], c[2]}; }
-
-glm::dvec3 finiteVec3(const Json& value, const std::string& path) {
-  const auto numbers = finiteNumbers<3>(value);
-  if (!numbers) failExpected(path, "an array of 3 finite numbers", value);
-  return toVec3(*numbers);
-}
-
-bool allPositive(const std::array<double, 3>& numbers) {
-  return std::all_of(numbers.begin(), numbers.end(), [](double c) { return c > 0.0; });
-}
-
-glm::dvec3 positiveVec3(const Json& value, const std::string& path) {
-  const auto numbers = finiteNumbers<3>(value);
-  if (!numbers || !allPositive(*numbers)) {
-    failExpected(path, "an array of 3 positive numbers", value);
-  }
-  return toVec3(*numbers);
+  failJsonExpected(path, "\"Y\" or \"Z\"", value);
 }
 
 glm::dvec3 unitDirection(const Json& value, const std::string& path) {
-  const auto numbers = finiteNumbers<3>(value);
-  const auto isZero = [](const std::array<double, 3>& c) {
-    return c[0] == 0.0 && c[1] == 0.0 && c[2] == 0.0;
-  };
-  if (!numbers || isZero(*numbers)) {
-    failExpected(path, "a non-zero direction (an array of 3 finite numbers)", value);
+  const glm::dvec3 v = finiteVec3(value, path);
+  if (v == glm::dvec3(0.0)) {
+    failJsonExpected(path, "a non-zero direction (an array of 3 finite numbers)", value);
   }
-  return toVec3(normalized(*numbers));
-}
-
-glm::dquat unitQuaternion(const Json& value, const std::string& path) {
-  const auto numbers = finiteNumbers<4>(value);
-  if (!numbers || !(std::abs(lengthOf(*numbers) - 1.0) <= kUnitQuaternionTolerance)) {
-    failExpected(path, "a unit quaternion [w, x, y, z] (length within 1e-3 of 1)", value);
-  }
-  return quaternionFromWxyz(normalized(*numbers));
+  const auto unit = normalized(std::array<double, 3>{v.x, v.y, v.z});
+  return {unit[0], unit[1], unit[2]};
 }
 
 std::string nonEmptyString(const Json& value, const std::string& path) {
   if (!value.is_string() || value.get_ref<const std::string&>().empty()) {
-    failExpected(path, "a non-empty string", value);
+    failJsonExpected(path, "a non-empty string", value);
   }
   return value.get<std::string>();
 }
 
 fs::path meshPathAsWritten(const Json& value, const std::string& path) {
   if (!value.is_string() || !hasMeshExtension(value.get<std::string>())) {
-    failExpected(path, std::string("a mesh path ending in ") + kMeshExtensionsText, value);
+    failJsonExpected(path, std::string("a mesh path ending in ") + kMeshExtensionsText, value);
   }
   return fs::path(value.get<std::string>());
 }
@@ -274,7 +181,7 @@ fs::path meshPathAsWritten(const Json& value, const std::string& path) {
 fs::path levelPathAsWritten(const Json& value, const std::string& path) {
   if (!value.is_string() ||
       !(hasMeshExtension(value.get<std::string>()) || isBspLevel(value.get<std::string>()))) {
-    failExpected(path, std::string("a mesh path ending in ") + kLevelExtensionsText, value);
+    failJsonExpected(path, std::string("a mesh path ending in ") + kLevelExtensionsText, value);
   }
   return fs::path(value.get<std::string>());
 }
@@ -291,7 +198,7 @@ bool isFinite(const glm::dvec3& v) {
 }
 
 [[noreturn]] void failOverflow(const std::string& path, const Json& value) {
-  failExpected(path, "numbers that stay finite in metres", value);
+  failJsonExpected(path, "numbers that stay finite in metres", value);
 }
 
 // Ray casting (Embree, in float relative to the level's centre), the weight grids and every
@@ -305,7 +212,7 @@ bool withinScene(const glm::dvec3& meters) {
 [[noreturn]] void failOutsideScene(const std::string& path, const Json& value, const char* what) {
   std::ostringstream expected;
   expected << what << " within " << kMaxSceneMeters << " m (the limit of a scene, in metres)";
-  failExpected(path, expected.str(), value);
+  failJsonExpected(path, expected.str(), value);
 }
 
 glm::dvec3 pointMember(const Json& object, const std::string& path, const char* name,
@@ -346,14 +253,14 @@ std::string kindOf(const Json& object, const std::string& path,
     const std::string& name = kind.get_ref<const std::string&>();
     if (std::find(kinds.begin(), kinds.end(), name) != kinds.end()) return name;
   }
-  failExpected(jsonMemberPath(path, "kind"), expectedText, kind);
+  failJsonExpected(jsonMemberPath(path, "kind"), expectedText, kind);
 }
 
 // "maps/downer.bsp": a relative path inside the archive, kept as written.
 fs::path mapInArchive(const Json& value, const std::string& path) {
   const bool bspName = value.is_string() && hasExtension(value.get<std::string>(), ".bsp");
   if (!bspName || fs::path(value.get<std::string>()).is_absolute()) {
-    failExpected(path, "the path of a .bsp inside the .pk3, e.g. \"maps/downer.bsp\"", value);
+    failJsonExpected(path, "the path of a .bsp inside the .pk3, e.g. \"maps/downer.bsp\"", value);
   }
   return fs::path(value.get<std::string>());
 }
@@ -364,7 +271,7 @@ LevelMeshRef readLevelMesh(const Json& value, const std::string& path, UpAxis sc
   if (value.is_string()) {  // "corridor.glb" is short for {"mesh": "corridor.glb"}
     mesh.pathAsWritten = levelPathAsWritten(value, path);
     if (hasExtension(mesh.pathAsWritten, ".pk3")) {
-      failExpected(path, "an object {\"mesh\": \"<archive>.pk3\", \"map\": \"maps/<name>.bsp\"}",
+      failJsonExpected(path, "an object {\"mesh\": \"<archive>.pk3\", \"map\": \"maps/<name>.bsp\"}",
                    value);
     }
   } else if (value.is_object()) {
@@ -383,7 +290,7 @@ LevelMeshRef readLevelMesh(const Json& value, const std::string& path, UpAxis sc
       mesh.upWasExplicit = true;
     }
   } else {
-    failExpected(path, "a mesh path or an object with \"mesh\"", value);
+    failJsonExpected(path, "a mesh path or an object with \"mesh\"", value);
   }
   mesh.path = resolvedAgainst(mesh.pathAsWritten, folder);
   if (!mesh.upWasExplicit) mesh.up = defaultMeshUp(mesh.pathAsWritten, sceneUp);
@@ -392,7 +299,7 @@ LevelMeshRef readLevelMesh(const Json& value, const std::string& path, UpAxis sc
 
 std::vector<LevelMeshRef> readLevel(const Json& value, const std::string& path, UpAxis sceneUp,
                                     const fs::path& folder) {
-  if (!value.is_array() || value.empty()) failExpected(path, "a non-empty array of meshes", value);
+  if (!value.is_array() || value.empty()) failJsonExpected(path, "a non-empty array of meshes", value);
   std::vector<LevelMeshRef> level;
   for (std::size_t i = 0; i < value.size(); ++i) {
     level.push_back(readLevelMesh(value[i], jsonIndexPath(path, i), sceneUp, folder));
@@ -407,26 +314,23 @@ BoxInfluence readBoxInfluence(const Json& value, const std::string& path, const 
   box.centerMeters = pointMember(value, path, "center", frame);
   box.halfExtentsMeters = halfExtentsMember(value, path, "half_extents", frame);
   const Json& halfExtentsJson = value.at("half_extents");  // checked by halfExtentsMember
-  const glm::dvec3 halfExtentsInFile = toVec3(*finiteNumbers<3>(halfExtentsJson));
+  const glm::dvec3 halfExtentsInFile = finiteVec3(halfExtentsJson, "");
   glm::dquat boxToFile(1, 0, 0, 0);
   if (const Json* rotation = optionalMember(value, "rotation")) {
-    boxToFile = unitQuaternion(*rotation, jsonMemberPath(path, "rotation"));
+    boxToFile = unitQuaternionWxyz(*rotation, jsonMemberPath(path, "rotation"));
   }
   box.worldFromBox = worldRotationFromFile(frame, boxToFile);
   box.innerHalfExtentsMeters = box.halfExtentsMeters;  // no fade unless the file says so
   if (const Json* inner = optionalMember(value, "inner_half_extents")) {
-    const auto numbers = finiteNumbers<3>(*inner);
-    const auto withinOuter = [&](const std::array<double, 3>& c) {
-      return c[0] <= halfExtentsInFile.x && c[1] <= halfExtentsInFile.y &&
-             c[2] <= halfExtentsInFile.z;
-    };
-    if (!numbers || !allPositive(*numbers) || !withinOuter(*numbers)) {
-      failExpected(jsonMemberPath(path, "inner_half_extents"),
-                   "an array of 3 positive numbers, each at most half_extents " +
-                       describeJson(halfExtentsJson),
-                   *inner);
+    const std::string innerPath = jsonMemberPath(path, "inner_half_extents");
+    const glm::dvec3 innerInFile = positiveVec3(*inner, innerPath);
+    if (glm::any(glm::greaterThan(innerInFile, halfExtentsInFile))) {
+      failJsonExpected(innerPath,
+                       "an array of 3 positive numbers, each at most half_extents " +
+                           describeJson(halfExtentsJson),
+                       *inner);
     }
-    box.innerHalfExtentsMeters = worldHalfExtentsFromFile(frame, toVec3(*numbers));
+    box.innerHalfExtentsMeters = worldHalfExtentsFromFile(frame, innerInFile);
   }
   return box;
 }
@@ -442,7 +346,7 @@ SphereInfluence readSphereInfluence(const Json& value, const std::string& path,
     const Json& radiusJson = value.at("radius");
     if (!isFiniteNumber(*inner) || !(inner->get<double>() > 0.0) ||
         inner->get<double>() > radiusJson.get<double>()) {
-      failExpected(jsonMemberPath(path, "inner_radius"),
+      failJsonExpected(jsonMemberPath(path, "inner_radius"),
                    "a positive number at most radius " + describeJson(radiusJson), *inner);
     }
     sphere.innerRadiusMeters = worldLengthFromFile(frame, inner->get<double>());
@@ -461,7 +365,7 @@ ProxySpec readProxy(const Json& value, const std::string& path, const FileFrame&
                     const fs::path& folder) {
   if (value == "auto") return AutoProxy{};
   if (value == "infinite") return InfiniteProxy{};
-  if (!value.is_object()) failExpected(path, "\"auto\", \"infinite\" or an object", value);
+  if (!value.is_object()) failJsonExpected(path, "\"auto\", \"infinite\" or an object", value);
 
   const std::string kind = kindOf(value, path, {"box", "obb", "sphere", "convex"},
                                   "\"box\", \"obb\", \"sphere\" or \"convex\"");
@@ -476,7 +380,7 @@ ProxySpec readProxy(const Json& value, const std::string& path, const FileFrame&
                     halfExtentsMember(value, path, "half_extents", frame)};
     obb.worldFromBox = worldRotationFromFile(
         frame,
-        unitQuaternion(requiredMember(value, path, "rotation"), jsonMemberPath(path, "rotation")));
+        unitQuaternionWxyz(requiredMember(value, path, "rotation"), jsonMemberPath(path, "rotation")));
     return obb;
   }
   if (kind == "sphere") {
@@ -500,7 +404,7 @@ std::string cubemapPattern(const Json& value, const std::string& path) {
     return extension == ".exr" || extension == ".hdr" || extension == ".png";
   };
   if (!value.is_string() || !isImagePath(value.get_ref<const std::string&>())) {
-    failExpected(path,
+    failJsonExpected(path,
                  std::string("an .exr, .hdr or .png image path (six files with ") +
                      kFacePlaceholder + ", or one cross or equirectangular image)",
                  value);
@@ -510,7 +414,7 @@ std::string cubemapPattern(const Json& value, const std::string& path) {
 
 std::vector<ReflectionPlane> readReflectionPlanes(const Json& value, const std::string& path,
                                                   const FileFrame& frame) {
-  if (!value.is_array()) failExpected(path, "an array of planes", value);
+  if (!value.is_array()) failJsonExpected(path, "an array of planes", value);
   std::vector<ReflectionPlane> planes;
   for (std::size_t i = 0; i < value.size(); ++i) {
     const std::string planePath = jsonIndexPath(path, i);
@@ -551,7 +455,7 @@ Probe readProbe(const Json& value, const std::string& path, const FileFrame& fra
 
 std::vector<Probe> readProbes(const Json& value, const std::string& path, const FileFrame& frame,
                               const fs::path& folder) {
-  if (!value.is_array()) failExpected(path, "an array of probes", value);
+  if (!value.is_array()) failJsonExpected(path, "an array of probes", value);
   std::vector<Probe> probes;
   std::map<std::string, std::size_t> indexByName;
   for (std::size_t i = 0; i < value.size(); ++i) {
@@ -559,7 +463,7 @@ std::vector<Probe> readProbes(const Json& value, const std::string& path, const 
     probes.push_back(readProbe(value[i], probePath, frame, folder));
     const auto [first, isNew] = indexByName.emplace(probes.back().name, i);
     if (!isNew) {
-      fail(jsonMemberPath(probePath, "name"), describeJson(Json(probes.back().name)) +
+      failJson(jsonMemberPath(probePath, "name"), describeJson(Json(probes.back().name)) +
                                                   " is used by " +
                                                   jsonIndexPath(path, first->second) + " already");
     }
@@ -580,7 +484,7 @@ Scene sceneFromDocument(const Json& root, const fs::path& absoluteFile) {
     if (!(scene.metersPerUnit >= kMinMetersPerUnit && scene.metersPerUnit <= kMaxMetersPerUnit)) {
       std::ostringstream expected;
       expected << "a number from " << kMinMetersPerUnit << " to " << kMaxMetersPerUnit;
-      failExpected("$.meters_per_unit", expected.str(), *metersPerUnit);
+      failJsonExpected("$.meters_per_unit", expected.str(), *metersPerUnit);
     }
   }
   const FileFrame frame{scene.fileUp, scene.metersPerUnit};
@@ -630,7 +534,7 @@ JsonLayoutValue rotationJson(const glm::dquat& rotationInFile) {
   std::array<double, 4> c = wxyz(rotationInFile);
   // Only a unit quaternion is settled; anything else is written as it is, for the
   // read-back check to report.
-  if (std::abs(lengthOf(c) - 1.0) <= kUnitQuaternionTolerance) c = stableUnitForJson(c);
+  if (std::abs(lengthOf(c) - 1.0) <= kUnitLengthTolerance) c = stableUnitForJson(c);
   return numbersJson({c[0], c[1], c[2], c[3]});
 }
 

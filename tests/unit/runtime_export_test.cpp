@@ -834,6 +834,8 @@ TEST_F(RuntimeExportBadInput, MissingMemberNamesItsObject) {
 TEST_F(RuntimeExportBadInput, WrongTypeNamesTheValue) {
   EXPECT_EQ(problemAfter(R"("capture": [1.0, 0.5, 1.2])", R"("capture": "a")"),
             "$.probes[0].capture: expected an array of 3 finite numbers, got \"a\"");
+  EXPECT_EQ(problemAfter(R"("capture": [1.0, 0.5, 1.2])", R"("capture": [1.0, "x", 1.2])"),
+            "$.probes[0].capture[1]: expected a finite number, got \"x\"");
   EXPECT_EQ(problemAfter(R"("kind": "cheap_k")", R"("kind": "box")"),
             "$.probes[1].kind: expected one of \"infinite\", \"cheap_k\", \"sphere\", \"aabb\", "
             "\"obb\", \"convex\", got \"box\"");

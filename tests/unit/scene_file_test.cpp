@@ -339,7 +339,7 @@ TEST_F(SceneFileTest, FailedWriteLeavesNoFileBehind) {
     ADD_FAILURE() << "a NaN capture point was written";
   } catch (const InputError& error) {
     EXPECT_EQ(error.problem(),
-              "$.probes[0].capture: expected an array of 3 finite numbers, got [null, 0.0, 0.0]");
+              "$.probes[0].capture[0]: expected a finite number, got null");
   }
   EXPECT_TRUE(fs::is_empty(folder_));
 
@@ -521,6 +521,8 @@ std::vector<ErrorCase> errorCases() {
        R"($.probes[0].capture: expected an array of 3 finite numbers, got "abc")"},
       {"capture_two_numbers", sceneJson(probeJson({{"capture", "[1, 2]"}})),
        "$.probes[0].capture: expected an array of 3 finite numbers, got [1, 2]"},
+      {"capture_element_names_itself", sceneJson(probeJson({{"capture", R"([0, "x", 1])"}})),
+       R"($.probes[0].capture[1]: expected a finite number, got "x")"},
       {"capture_missing", sceneJson(probeJson({{"capture", ""}})),
        R"($.probes[0]: expected member "capture")"},
       {"capture_misspelled", sceneJson(probeJson({{"capture", ""}, {"captur", "[0, 0, 0]"}})),
@@ -549,8 +551,7 @@ std::vector<ErrorCase> errorCases() {
       {"zero_half_extent",
        sceneJson(probeJson(
            {{"influence", R"({"kind": "box", "center": [0, 0, 0], "half_extents": [1, 0, 1]})"}})),
-       "$.probes[0].influence.half_extents: expected an array of 3 positive numbers, got [1, 0, "
-       "1]"},
+       "$.probes[0].influence.half_extents[1]: expected a positive number, got 0"},
       {"inner_past_outer",
        sceneJson(probeJson({{"influence", box + R"(, "inner_half_extents": [4, 1, 1]})"}})),
        "$.probes[0].influence.inner_half_extents: expected an array of 3 positive numbers, each "
