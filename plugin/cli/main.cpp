@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   verbs.push_back(cli::addBenchVerb(app));
   verbs.push_back(cli::addLevelInfoVerb(app));
   verbs.push_back(cli::addSurveyVerb(app));
+  verbs.push_back(cli::addLayoutVerb(app));
 
   // CLI11 would only say "a subcommand is required"; name what was typed and what exists.
   std::string known;

@@ -24,5 +24,6 @@ Verb addBlendVerb(CLI::App& app);
 Verb addBenchVerb(CLI::App& app);
 Verb addLevelInfoVerb(CLI::App& app);  // hidden: BSP figures and spawn points for scripts
 Verb addSurveyVerb(CLI::App& app);
+Verb addLayoutVerb(CLI::App& app);
 
 }  // namespace probeproxy::cli

@@ -1,0 +1,33 @@
+#include "geometry/layout/layout_candidates.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace probeproxy {
+
+glm::dvec3 captureAbove(const LevelRayCaster& level, glm::dvec3 floorMeters, double heightMeters) {
+  Ray up;
+  up.originMeters = floorMeters + glm::dvec3(0.0, 0.0, 1e-3);
+  up.direction = {0.0f, 0.0f, 1.0f};
+  up.tMax = static_cast<float>(2.0 * heightMeters);
+  const RayHit hit = level.firstHit(up);
+  const double freeHeight = hit.hit() ? hit.t : 2.0 * heightMeters;
+  return floorMeters + glm::dvec3(0.0, 0.0, std::min(heightMeters, 0.5 * freeHeight));
+}
+
+std::vector<LayoutCandidate> layoutCandidates(const LevelRayCaster& level,
+                                              const WalkableFloor& floor, double spacingMeters,
+                                              double captureHeightMeters) {
+  // Every step-th column and row, offset by half a step so a room's first candidate stands off
+  // its wall.
+  const int step = std::max(1, static_cast<int>(std::lround(spacingMeters / floor.spacingMeters)));
+  std::vector<LayoutCandidate> candidates;
+  for (std::size_t i = 0; i < floor.cells.size(); ++i) {
+    const FloorCell& cell = floor.cells[i];
+    if (cell.column % step != step / 2 || cell.row % step != step / 2) continue;
+    candidates.push_back({captureAbove(level, cell.pointMeters, captureHeightMeters), i});
+  }
+  return candidates;
+}
+
+}  // namespace probeproxy

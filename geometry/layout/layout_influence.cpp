@@ -1,0 +1,28 @@
+#include "geometry/layout/layout_influence.h"
+
+#include <glm/common.hpp>
+
+#include <limits>
+
+namespace probeproxy {
+
+BoxInfluence influenceAroundFloor(const WalkableFloor& floor, std::span<const std::size_t> cells,
+                                  glm::dvec3 captureMeters, double bandMeters) {
+  glm::dvec3 lo(std::numeric_limits<double>::infinity());
+  glm::dvec3 hi(-std::numeric_limits<double>::infinity());
+  const double half = 0.5 * floor.spacingMeters;
+  for (std::size_t c : cells) {
+    const glm::dvec3 p = floor.cells[c].pointMeters;
+    lo = glm::min(lo, p - glm::dvec3(half, half, kInfluenceBelowFloorMeters));
+    hi = glm::max(hi, p + glm::dvec3(half, half, kInfluenceHeadRoomMeters));
+  }
+  lo = glm::min(lo, captureMeters - glm::dvec3(0.05));
+  hi = glm::max(hi, captureMeters + glm::dvec3(0.05));
+  BoxInfluence box;
+  box.centerMeters = 0.5 * (lo + hi);
+  box.innerHalfExtentsMeters = 0.5 * (hi - lo);
+  box.halfExtentsMeters = box.innerHalfExtentsMeters + glm::dvec3(bandMeters);
+  return box;
+}
+
+}  // namespace probeproxy

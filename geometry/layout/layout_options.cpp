@@ -1,0 +1,29 @@
+#include "geometry/layout/layout_options.h"
+
+#include "core/errors/option_checks.h"
+
+namespace probeproxy {
+
+ProxyBuildOptions LayoutOptions::coarseCandidateProxyOptions() {
+  ProxyBuildOptions o;
+  o.depthFaceSize = 32;
+  o.samples.targetSamples = 256;
+  o.samples.camerasAcross = 4;
+  o.maxPlanes = 16;
+  return o;
+}
+
+void LayoutOptions::check() const {
+  requirePositive("tolerance_deg", toleranceDeg);
+  requireInRange("spacing", spacingMeters, 0.25, 100.0);
+  requireInRange("reach", reachMeters, 0.5, 1000.0);
+  requireInRange("capture_height", captureHeightMeters, 0.05, 10.0);
+  requireNonNegative("blend_band", blendBandMeters);
+  requireInRange("samples_per_cell", samplesPerCell, 1, 64);
+  requireInRange<std::size_t>("max_probes", maxProbes, 0, 100'000);
+  floor.check();
+  candidateProxy.check();
+  finalProxy.check();
+}
+
+}  // namespace probeproxy

@@ -1,0 +1,43 @@
+#pragma once
+// What `layout` may do and what it must reach (README "Layout"): the tolerance each floor
+// sample is served within, how candidates are spread and built, and how the chosen probes'
+// influence volumes blend. Plain data; check() throws InputError for a value out of range.
+
+#include "geometry/build/proxy_build_options.h"
+#include "geometry/floor/walkable_floor.h"
+
+#include <cstddef>
+#include <cstdint>
+
+namespace probeproxy {
+
+enum class LayoutBaseline {
+  None,   // the layout itself: the fewest probes that serve the floor within the tolerance
+  Grid,   // a probe every `spacingMeters` over the walkable floor, box cells, aabb proxies
+  Spawn,  // a probe at every spawn point, a sphere of `reachMeters`, auto proxies
+};
+
+struct LayoutOptions {
+  LayoutBaseline baseline = LayoutBaseline::None;
+  double toleranceDeg = 5.0;   // a floor sample is served where one probe's error is this or less
+  std::size_t maxProbes = 0;   // 0: as many as the floor needs; else at most this many
+  double spacingMeters = 2.0;  // the candidates' grid (and the grid baseline's)
+  // A candidate is fitted to, and serves, floor samples within this distance of its capture
+  // point: a probe's cubemap is sharp only near it, and the search stays linear in the level.
+  double reachMeters = 10.0;
+  double captureHeightMeters = 1.6;  // above the floor; at most half the free height above it
+  double blendBandMeters = 1.0;      // each influence box's outer range past its inner one
+  // How finely candidates are judged: a coarser floor and fewer samples than `survey` takes.
+  WalkableFloorOptions floor{0.5};
+  int samplesPerCell = 2;
+  std::uint32_t seed = 1;
+  // Each candidate's proxy: a small depth cube and few samples (a few thousand candidates per
+  // level); the chosen probes are built again with `finalProxy`.
+  ProxyBuildOptions candidateProxy = coarseCandidateProxyOptions();
+  ProxyBuildOptions finalProxy;
+
+  static ProxyBuildOptions coarseCandidateProxyOptions();
+  void check() const;
+};
+
+}  // namespace probeproxy

@@ -1,0 +1,52 @@
+#pragma once
+// `layout`: probes for a whole level (README "Layout"). The walkable floor a player reaches from
+// the seed points is sampled as `survey` samples it (coarser); capture-point candidates are
+// spread over it (layout_candidates.h), each one's proxy built and its error measured on the
+// floor within reach (candidate_service.h, all cores); the fewest that serve the floor within
+// the tolerance are chosen (select_probes.h), and each gets an influence box around the floor
+// it shades best (layout_influence.h). The baselines place probes without measuring: a grid
+// (grid_layout.h) or the seed (spawn) points with spheres. Deterministic, whatever the thread
+// count.
+
+#include "core/scene/influence_volume.h"
+#include "geometry/layout/layout_options.h"
+#include "geometry/raycast/level_ray_caster.h"
+
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <functional>
+#include <limits>
+#include <span>
+#include <vector>
+
+namespace probeproxy {
+
+// The fit regions every capture point is tried with, as fractions of the reach.
+inline constexpr std::array<double, 3> kLayoutFitFractions = {0.25, 0.5, 1.0};
+
+struct LayoutProbe {
+  glm::dvec3 captureMeters{0.0};
+  InfluenceVolume influence;
+  double fitMeters = 0.0;  // its proxy is fitted to the floor connected to it within this radius
+};
+
+struct LayoutResult {
+  std::vector<LayoutProbe> probes;
+  std::size_t floorCells = 0, floorSamples = 0;
+  std::size_t candidates = 0;  // built and measured (0 for the baselines)
+  double candidateMedianMs = std::numeric_limits<double>::quiet_NaN();  // one candidate's cost
+  // Floor (area share) some chosen probe serves within the tolerance on its own, and that some
+  // candidate could: what the selection reached of what it could reach.
+  double servedShare = 0.0, servableShare = 0.0;
+  double spacingMeters = 0.0;  // the candidates' grid, or the grid baseline's spacing taken
+  double seconds = 0.0;
+};
+
+// `onCandidateDone(done, total)` reports candidate builds (serialized), the slow part.
+// Throws InputError when no seed stands over walkable floor.
+LayoutResult runLayout(const LevelRayCaster& level, std::span<const glm::dvec3> seedsMeters,
+                       const LayoutOptions& options,
+                       const std::function<void(std::size_t, std::size_t)>& onCandidateDone = {});
+
+}  // namespace probeproxy

@@ -1,0 +1,97 @@
+// `probeproxy layout`: flags into the layout job (plugin/jobs/layout/), its figures printed (a
+// line of layout figures and the survey's table, or layout.json under --json); with --out the
+// job writes the layout's scene, export, figures and error maps.
+
+#include "core/errors/input_error.h"
+#include "plugin/cli/terminal_progress.h"
+#include "plugin/cli/verb.h"
+#include "plugin/jobs/layout/layout_job.h"
+#include "plugin/jobs/survey/survey_report.h"
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+namespace probeproxy::cli {
+
+namespace {
+
+struct LayoutVerbOptions {
+  std::string input, out;
+  std::string baseline = "none";
+  bool json = false;
+  jobs::LayoutJobOptions job;
+};
+
+LayoutBaseline layoutBaseline(const std::string& name) {
+  if (name == "none") return LayoutBaseline::None;
+  if (name == "grid") return LayoutBaseline::Grid;
+  if (name == "spawn") return LayoutBaseline::Spawn;
+  throw InputError("--baseline", "expected none, grid or spawn, got '" + name + "'");
+}
+
+int runLayoutVerb(LayoutVerbOptions o) {
+  o.job.layout.baseline = layoutBaseline(o.baseline);
+  o.job.levelOrScene = o.input;
+  o.job.outFolder = o.out;
+  const jobs::LayoutJobResult r =
+      jobs::runLayoutJob(o.job, terminalProgress("probeproxy layout: candidates", "candidates"));
+  if (o.json) {
+    std::cout << r.json;
+  } else {
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "%zu probes from %zu candidates (median %.1f ms each), spacing %.2f m, "
+                  "%.1f%% of the floor served within %.2f deg by one probe (%.1f%% servable), "
+                  "%.1f s\n",
+                  r.scene.probes.size(), r.layout.candidates, r.layout.candidateMedianMs,
+                  r.layout.spacingMeters, 100.0 * r.layout.servedShare, o.job.layout.toleranceDeg,
+                  100.0 * r.layout.servableShare, r.layout.seconds);
+    std::cout << line;
+    jobs::printSurveyTable(std::cout, r.survey);
+  }
+  for (const std::filesystem::path& file : r.written)
+    std::cerr << "wrote " << file.string() << "\n";
+  return 0;
+}
+
+}  // namespace
+
+Verb addLayoutVerb(CLI::App& app) {
+  auto o = std::make_shared<LayoutVerbOptions>();
+  LayoutOptions& l = o->job.layout;
+  CLI::App* verb = app.add_subcommand(
+      "layout",
+      "Place the fewest probes that serve the level's walkable floor within the tolerance, "
+      "with their influence volumes and proxies, and survey the result; or a baseline layout");
+  verb->add_option("level_or_scene", o->input,
+                   "a scene file (*.scene.json) or a level (.glb .gltf .obj .ply .off .bsp)")
+      ->required();
+  verb->add_option("--out", o->out,
+                   "folder for layout.scene.json, proxies.json/.glb, layout.json and the maps");
+  verb->add_flag("--json", o->json, "print layout.json on stdout");
+  verb->add_option("--baseline", o->baseline,
+                   "none: the layout; grid: a probe every --spacing m with aabb proxies; "
+                   "spawn: a sphere of --reach m at every spawn point")
+      ->capture_default_str();
+  verb->add_option("--tolerance-deg", l.toleranceDeg,
+                   "a floor sample is served where one probe's error is at most this")
+      ->capture_default_str();
+  verb->add_option("--max-probes", l.maxProbes, "at most this many probes (0: no limit)")
+      ->capture_default_str();
+  verb->add_option("--spacing", l.spacingMeters, "the candidates' (and the grid's) spacing, m")
+      ->capture_default_str();
+  verb->add_option("--reach", l.reachMeters, "a candidate serves floor within this distance, m")
+      ->capture_default_str();
+  verb->add_option("--capture-height", l.captureHeightMeters,
+                   "capture points this far above the floor (at most half the free height), m")
+      ->capture_default_str();
+  verb->add_option("--blend-band", l.blendBandMeters,
+                   "influence boxes' outer range past the inner one, m")
+      ->capture_default_str();
+  verb->add_option("--threads", o->job.threads, "worker threads (0: all cores)")
+      ->capture_default_str();
+  return {verb, [o] { return runLayoutVerb(*o); }};
+}
+
+}  // namespace probeproxy::cli

@@ -1,0 +1,216 @@
+#include "plugin/jobs/layout/layout_job.h"
+
+#include "core/errors/input_error.h"
+#include "core/io/atomic_write.h"
+#include "core/io/output_folder.h"
+#include "geometry/build/build_probe_proxy.h"
+#include "geometry/build/build_scene_proxies.h"
+#include "geometry/export/runtime_export.h"
+#include "geometry/layout/candidate_service.h"
+#include "geometry/level/write_level_mesh.h"
+#include "geometry/raycast/level_ray_caster.h"
+#include "geometry/scene/scene_file.h"
+#include "geometry/survey/run_survey.h"
+#include "geometry/survey/survey_map.h"
+#include "plugin/jobs/survey/survey_report.h"
+#include "plugin/jobs/thread_limit.h"
+
+#include <nlohmann/json.hpp>
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace probeproxy::jobs {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+bool isSceneFile(const fs::path& file) {
+  const std::string name = file.filename().string();
+  return name.size() > 11 && name.compare(name.size() - 11, 11, ".scene.json") == 0;
+}
+
+// A bare level file is read as the scene that lists only it, so both inputs take one path.
+Scene readLevelOrScene(const fs::path& file) {
+  if (isSceneFile(file)) return readSceneFile(file);
+  const fs::path absolute = fs::absolute(file).lexically_normal();
+  const nlohmann::json text = {{"probeproxy_scene", 1},
+                               {"up", "Z"},
+                               {"level", {absolute.string()}},
+                               {"probes", nlohmann::json::array()}};
+  return parseSceneFile(text.dump(), absolute.string() + ".scene.json");
+}
+
+const char* baselineName(LayoutBaseline baseline) {
+  switch (baseline) {
+    case LayoutBaseline::Grid: return "grid";
+    case LayoutBaseline::Spawn: return "spawn";
+    case LayoutBaseline::None: break;
+  }
+  return "layout";
+}
+
+// The layout as a scene written into outFolder: the input's level, reached from there.
+Scene layoutScene(const Scene& input, const LayoutResult& layout, const fs::path& outFolder) {
+  Scene scene;
+  scene.fileUp = input.fileUp;
+  scene.metersPerUnit = input.metersPerUnit;
+  const fs::path folder = fs::absolute(outFolder).lexically_normal();
+  scene.file = folder / "layout.scene.json";
+  scene.level = input.level;
+  for (LevelMeshRef& ref : scene.level) ref.pathAsWritten = ref.path.lexically_relative(folder);
+  for (std::size_t i = 0; i < layout.probes.size(); ++i) {
+    char name[32];
+    std::snprintf(name, sizeof name, "probe_%03zu", i + 1);
+    Probe probe;
+    probe.name = name;
+    probe.captureMeters = layout.probes[i].captureMeters;
+    probe.influence = layout.probes[i].influence;
+    probe.proxy = AutoProxy{};
+    scene.probes.push_back(std::move(probe));
+  }
+  return scene;
+}
+
+// A chosen probe's proxy, fitted as its candidate was (to the floor connected to it within
+// reach) and finer: the proxy the selection measured, so the export is what the survey saw.
+ProbeProxyBuild buildAsCandidate(const LevelRayCaster& level, const Probe& probe,
+                                 double fitMeters, const LayoutOptions& o) {
+  ProbeProxyBuild build = buildProbeProxy(level, candidateFitProbe(probe.captureMeters, fitMeters),
+                                          std::nullopt, o.finalProxy);
+  build.probe = probe.name;
+  return build;
+}
+
+// The scene file says which proxy each probe has, so `build` on layout.scene.json keeps the
+// same ones: boxes, spheres and none as written, a convex proxy as a mesh beside the scene.
+// Only cheap_k has no authored form; it stays `auto`.
+ProxySpec authoredSpec(const ProxyShape& shape, const fs::path& meshFile, const std::string& name,
+                       std::vector<std::pair<fs::path, LevelMesh>>& meshes) {
+  if (std::holds_alternative<InfiniteShape>(shape)) return InfiniteProxy{};
+  if (const auto* box = std::get_if<BoxShape>(&shape))
+    return AuthoredObb{box->centerMeters, box->halfExtentsMeters, box->worldFromBox};
+  if (const auto* sphere = std::get_if<SphereShape>(&shape)) {
+    const glm::dvec3 r = sphere->radiiMeters;
+    if (r.x == r.y && r.y == r.z) return AuthoredSphere{sphere->centerMeters, r.x};
+  }
+  if (const auto* convex = std::get_if<ConvexProxy>(&shape)) {
+    LevelMesh mesh;
+    for (const glm::dvec3& v : convex->verticesMeters) mesh.positionsMeters.emplace_back(v);
+    mesh.triangles = convex->triangles;
+    mesh.parts.push_back({name, meshFile, 0, static_cast<std::uint32_t>(mesh.triangles.size())});
+    meshes.emplace_back(meshFile, std::move(mesh));
+    return AuthoredConvexMesh{meshFile, meshFile.filename()};
+  }
+  return AutoProxy{};
+}
+
+// The grid baseline is what engines give: box projection, the `aabb` candidate kept.
+void keepAabbs(Scene& scene, std::vector<ProbeProxyBuild>& builds) {
+  for (std::size_t i = 0; i < builds.size(); ++i) {
+    for (std::size_t c = 0; c < builds[i].candidates.size(); ++c) {
+      const ProxyCandidate& candidate = builds[i].candidates[c];
+      if (candidate.origin != CandidateOrigin::Aabb) continue;
+      builds[i].kept = c;
+      const BoxShape& box = std::get<BoxShape>(candidate.shape);
+      scene.probes[i].proxy = AuthoredBox{box.centerMeters, box.halfExtentsMeters};
+    }
+  }
+}
+
+nlohmann::ordered_json number(double v) {
+  return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
+}
+
+std::string layoutReportJson(const LayoutJobOptions& o, const LayoutJobResult& r) {
+  nlohmann::ordered_json j;
+  j["baseline"] = o.layout.baseline == LayoutBaseline::None ? "none" : baselineName(o.layout.baseline);
+  j["probes"] = r.scene.probes.size();
+  j["tolerance_deg"] = o.layout.toleranceDeg;
+  j["spacing_m"] = number(r.layout.spacingMeters);
+  j["floor_cells"] = r.layout.floorCells;
+  j["floor_samples"] = r.layout.floorSamples;
+  j["candidates"] = r.layout.candidates;
+  j["candidate_median_ms"] = number(r.layout.candidateMedianMs);
+  j["served_share"] = number(r.layout.servedShare);
+  j["servable_share"] = number(r.layout.servableShare);
+  j["layout_seconds"] = number(r.layout.seconds);
+  j["survey"] = nlohmann::ordered_json::parse(surveyReportJson(r.survey));
+  return j.dump(2) + "\n";
+}
+
+}  // namespace
+
+void LayoutJobOptions::check() const {
+  layout.check();
+  survey.check();
+  if (!outFolder.empty()) checkOutputFolder(outFolder);
+}
+
+LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress) {
+  o.check();
+  const ThreadLimit threads(o.threads);
+  const Scene input = readLevelOrScene(o.levelOrScene);
+  const LevelMesh level = loadSceneLevel(input, SceneInput{});
+  const LevelRayCaster rayCaster(level);
+  // Players enter at the spawn points; a level without them (an OBJ room) at its probes.
+  std::vector<glm::dvec3> seeds = level.spawnPointsMeters;
+  if (seeds.empty())
+    for (const Probe& p : input.probes) seeds.push_back(p.captureMeters);
+  if (seeds.empty())
+    throw InputError(o.levelOrScene,
+                     "no seed point: the level has no spawn points and the scene no probes");
+
+  LayoutJobResult r;
+  r.layout = runLayout(rayCaster, seeds, o.layout, progress);
+  r.scene = layoutScene(input, r.layout, o.outFolder.empty() ? fs::path(".") : o.outFolder);
+  std::vector<std::pair<fs::path, LevelMesh>> proxyMeshes;  // written with the scene
+  if (o.layout.baseline == LayoutBaseline::None) {
+    checkCapturePoints(r.scene, rayCaster);
+    r.builds.resize(r.scene.probes.size());
+    tbb::parallel_for(std::size_t{0}, r.builds.size(), [&](std::size_t i) {
+      r.builds[i] =
+          buildAsCandidate(rayCaster, r.scene.probes[i], r.layout.probes[i].fitMeters, o.layout);
+    });
+    const fs::path folder = r.scene.file.parent_path();
+    for (std::size_t i = 0; i < r.builds.size(); ++i) {
+      Probe& probe = r.scene.probes[i];
+      probe.proxy = authoredSpec(r.builds[i].candidates[r.builds[i].kept].shape,
+                                 folder / (probe.name + ".ply"), probe.name, proxyMeshes);
+    }
+  } else {
+    r.builds = buildSceneProxies(r.scene, rayCaster, o.layout.finalProxy);
+    if (o.layout.baseline == LayoutBaseline::Grid) keepAabbs(r.scene, r.builds);
+  }
+
+  std::vector<SurveyProbe> probes;
+  for (std::size_t i = 0; i < r.scene.probes.size(); ++i)
+    probes.push_back({r.scene.probes[i].captureMeters, r.scene.probes[i].influence,
+                      r.builds[i].candidates[r.builds[i].kept].shape});
+  SurveyOptions survey = o.survey;
+  survey.seedPointsMeters = seeds;
+  survey.toleranceDeg = o.layout.toleranceDeg;
+  r.survey = surveyProbes(probes, rayCaster, survey);
+  r.survey.scene = baselineName(o.layout.baseline);
+  r.json = layoutReportJson(o, r);
+
+  if (!o.outFolder.empty()) {
+    fs::create_directories(o.outFolder);
+    for (const auto& [file, mesh] : proxyMeshes) {
+      writeLevelMeshFile(mesh, file, UpAxis::Z);
+      r.written.push_back(file);
+    }
+    writeSceneFile(r.scene, o.outFolder / "layout.scene.json");
+    writeRuntimeExport(r.scene, r.builds, o.outFolder);
+    for (const char* name : {"layout.scene.json", "proxies.json", "proxies.glb", "layout.json"})
+      r.written.push_back(o.outFolder / name);
+    writeFileAtomically(o.outFolder / "layout.json", r.json);
+    for (const fs::path& map : writeSurveyMaps(r.survey, r.scene.probes, o.outFolder))
+      r.written.push_back(map);
+  }
+  return r;
+}
+
+}  // namespace probeproxy::jobs

@@ -1,0 +1,51 @@
+#pragma once
+// `layout`: the fewest probes for a whole level, their influence volumes and proxies, and what a
+// player then sees (README "Layout"); or a baseline layout (a grid, the spawn points) measured
+// the same way, so layouts compare with `survey`'s figures.
+//
+// Path of one run: plugin/cli/verbs/layout_verb.cpp parses flags into LayoutJobOptions ->
+// runLayoutJob (here) reads the level (a scene file's, or a mesh or BSP file) and seeds the
+// floor at its spawn points (else the scene's capture points) -> geometry/layout: candidates,
+// their coarse proxies and errors, the greedy cover, influence boxes -> geometry/build builds
+// each chosen probe's proxy -> geometry/survey measures the result -> the scene file, the
+// export and the error maps are written at the end, all or nothing.
+
+#include "core/proxy/proxy_candidate.h"
+#include "core/scene/scene.h"
+#include "geometry/layout/layout_options.h"
+#include "geometry/layout/run_layout.h"
+#include "geometry/survey/survey_options.h"
+#include "geometry/survey/survey_result.h"
+#include "plugin/jobs/job_progress.h"
+#include "plugin/jobs/scene_input.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace probeproxy::jobs {
+
+struct LayoutJobOptions {
+  // A scene file (its level; its probes seed the floor where the level has no spawn points), or
+  // a level file (.glb, .gltf, .obj, .ply, .off, .bsp) in Z-up metres (glTF: Y-up).
+  std::filesystem::path levelOrScene;
+  std::filesystem::path outFolder;  // layout.scene.json, proxies.json/.glb, layout.json, maps
+  int threads = 0;                  // 0: all cores
+  LayoutOptions layout;
+  SurveyOptions survey;  // how the result is measured; seeds as the layout's
+
+  void check() const;  // throws InputError naming the option at fault
+};
+
+struct LayoutJobResult {
+  Scene scene;  // the layout: its probes, level paths relative to outFolder
+  LayoutResult layout;
+  std::vector<ProbeProxyBuild> builds;  // scene order
+  SurveyResult survey;
+  std::string json;                            // layout.json: the layout's and survey's figures
+  std::vector<std::filesystem::path> written;  // when outFolder is set
+};
+
+LayoutJobResult runLayoutJob(const LayoutJobOptions& options, const Progress& progress = {});
+
+}  // namespace probeproxy::jobs

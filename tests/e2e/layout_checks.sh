@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# layout_checks.sh PROBEPROXY SUITE_DIR WORK
+# `layout` on suite levels whose answer is known (issue 12): the corridor (one box room) keeps one
+# probe; the L-room (two convex arms) gets two, whose survey p95 is under the build tolerance
+# with every floor sample covered; the output is the same bytes on 1 and 2 threads, and the
+# layout's scene builds again to the proxies it exported.
+set -eu
+probeproxy=$1 suite=$2 work=$3
+rm -rf "$work" && mkdir -p "$work"
+figure() { python3 -c "import json,sys; print(json.load(open(sys.argv[1]))$2)" "$1"; }
+fail() { echo "FAIL: $*"; exit 1; }
+
+"$probeproxy" layout "$suite/corridor/corridor.scene.json" --out "$work/corridor" --json >/dev/null
+[ "$(figure "$work/corridor/layout.json" "['probes']")" = 1 ] || fail "corridor: not one probe"
+
+for threads in 1 2; do
+  "$probeproxy" layout "$suite/l_room/l_room.scene.json" --out "$work/l_room_$threads" \
+    --threads $threads --json >/dev/null
+done
+[ "$(figure "$work/l_room_1/layout.json" "['probes']")" = 2 ] || fail "l_room: not two probes"
+python3 - "$work/l_room_1/layout.json" <<'PY' || fail "l_room: survey figures"
+import json, sys
+s = json.load(open(sys.argv[1]))["survey"]
+assert s["p95_deg"] <= 0.25, s
+assert s["uncovered_share"] == 0.0, s
+PY
+for f in layout.scene.json proxies.json proxies.glb probe_001.ply probe_002.ply layout_survey.png; do
+  cmp -s "$work/l_room_1/$f" "$work/l_room_2/$f" || fail "l_room: $f differs between 1 and 2 threads"
+done
+
+# What the scene says is what was exported: building it keeps the same proxy kinds.
+"$probeproxy" build "$work/l_room_1/layout.scene.json" --out "$work/rebuilt" >/dev/null
+kinds() { python3 -c "import json,sys; print([p['kind'] for p in json.load(open(sys.argv[1]))['probes']])" "$1"; }
+[ "$(kinds "$work/l_room_1/proxies.json")" = "$(kinds "$work/rebuilt/proxies.json")" ] ||
+  fail "l_room: the layout's scene builds other proxies than it exported"
+echo "layout checks passed"
