@@ -13,15 +13,6 @@
 
 namespace probeproxy {
 
-namespace {
-
-struct SurfaceNearby {
-  double distanceMeters = 1e300;
-  std::uint32_t triangle = kNoTriangle;
-};
-
-// The nearest surface along the 26 directions to a cube's faces, edges and corners: enough to
-// find a floor, wall or corner the point sits on.
 SurfaceNearby nearestSurface(const LevelRayCaster& level, glm::dvec3 point) {
   SurfaceNearby near;
   for (int x = -1; x <= 1; ++x) {
@@ -37,7 +28,6 @@ SurfaceNearby nearestSurface(const LevelRayCaster& level, glm::dvec3 point) {
   return near;
 }
 
-}  // namespace
 
 void checkCapturePoints(const Scene& scene, const LevelRayCaster& level) {
   // A probe outside its own influence volume has no reflections to fit a proxy to (the samples

@@ -1,10 +1,12 @@
 #include "geometry/layout/grid_layout.h"
 
+#include "geometry/build/build_scene_proxies.h"
 #include "geometry/layout/layout_candidates.h"
 #include "geometry/survey/storeys.h"
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -39,15 +41,23 @@ std::vector<GridCellProbe> placeCaptures(const LevelRayCaster& level, const Walk
     const auto [y, x, storey] = key;
     const glm::dvec3 centre(floor.originMeters.x + (x + 0.5) * spacingMeters,
                             floor.originMeters.y + (y + 0.5) * spacingMeters, 0.0);
-    std::size_t nearest = square.cells.front();
-    double nearestDistance = std::numeric_limits<double>::infinity();
+    // The floor cell nearest the centre whose capture point stands clear of every surface.
+    std::vector<std::pair<double, std::size_t>> byDistance;
     for (std::size_t c : square.cells) {
       const glm::dvec3 p = floor.cells[c].pointMeters;
-      const double d = glm::length(glm::dvec3(p.x, p.y, 0.0) - centre);
-      if (d < nearestDistance) nearestDistance = d, nearest = c;
+      byDistance.push_back({glm::length(glm::dvec3(p.x, p.y, 0.0) - centre), c});
     }
+    std::sort(byDistance.begin(), byDistance.end());
     square.captureMeters =
-        captureAbove(level, floor.cells[nearest].pointMeters, captureHeightMeters);
+        captureAbove(level, floor.cells[byDistance.front().second].pointMeters, captureHeightMeters);
+    for (const auto& [distance, c] : byDistance) {
+      const glm::dvec3 capture =
+          captureAbove(level, floor.cells[c].pointMeters, captureHeightMeters);
+      if (nearestSurface(level, capture).distanceMeters >= kLayoutCaptureClearanceMeters) {
+        square.captureMeters = capture;
+        break;
+      }
+    }
     probes.push_back(std::move(square));
   }
   return probes;

@@ -1,5 +1,7 @@
 #include "geometry/layout/layout_candidates.h"
 
+#include "geometry/build/build_scene_proxies.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -25,7 +27,10 @@ std::vector<LayoutCandidate> layoutCandidates(const LevelRayCaster& level,
   for (std::size_t i = 0; i < floor.cells.size(); ++i) {
     const FloorCell& cell = floor.cells[i];
     if (cell.column % step != step / 2 || cell.row % step != step / 2) continue;
-    candidates.push_back({captureAbove(level, cell.pointMeters, captureHeightMeters), i});
+    const glm::dvec3 capture = captureAbove(level, cell.pointMeters, captureHeightMeters);
+    // A point in a wall's face or a thin prop would capture the level from behind it.
+    if (nearestSurface(level, capture).distanceMeters < kLayoutCaptureClearanceMeters) continue;
+    candidates.push_back({capture, i});
   }
   return candidates;
 }

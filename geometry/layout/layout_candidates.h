@@ -2,7 +2,8 @@
 // Where `layout` may put a probe: capture points over the walkable floor, one per floor cell
 // on a grid of the layout's spacing (every storey of a grid column its own), at a capture
 // height that suits the room (the layout's height, at most half the free height above the
-// floor, so a low passage gets its probe in its middle). Deterministic, in floor cell order.
+// floor, so a low passage gets its probe in its middle), and at least
+// kLayoutCaptureClearanceMeters from every surface. Deterministic, in floor cell order.
 
 #include "geometry/floor/walkable_floor.h"
 #include "geometry/raycast/level_ray_caster.h"
@@ -12,6 +13,8 @@
 #include <vector>
 
 namespace probeproxy {
+
+inline constexpr double kLayoutCaptureClearanceMeters = 0.1;
 
 struct LayoutCandidate {
   glm::dvec3 captureMeters{0.0};
