@@ -1,6 +1,6 @@
 #include "geometry/layout/candidate_service.h"
 
-#include "geometry/build/build_probe_proxy.h"
+#include "geometry/probe_proxies/build_probe_proxy.h"
 #include "geometry/evaluation/evaluate_shape.h"
 #include "geometry/evaluation/reflection_samples.h"
 #include "geometry/survey/blended_error.h"

@@ -1,6 +1,6 @@
 #include "geometry/layout/grid_layout.h"
 
-#include "geometry/build/build_scene_proxies.h"
+#include "geometry/probe_proxies/build_scene_proxies.h"
 #include "geometry/layout/layout_candidates.h"
 #include "geometry/survey/storeys.h"
 

@@ -3,7 +3,7 @@
 // sample is served within, how candidates are spread and built, and how the chosen probes'
 // influence volumes blend. Plain data; check() throws InputError for a value out of range.
 
-#include "geometry/build/proxy_build_options.h"
+#include "geometry/probe_proxies/proxy_build_options.h"
 #include "geometry/floor/walkable_floor.h"
 
 #include <cstddef>

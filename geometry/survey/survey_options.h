@@ -4,7 +4,7 @@
 // inputs with the same one-line message.
 
 #include "core/blend/blend_weights.h"
-#include "geometry/build/build_probe_proxy.h"
+#include "geometry/probe_proxies/build_probe_proxy.h"
 #include "geometry/floor/walkable_floor.h"
 
 #include <glm/vec3.hpp>

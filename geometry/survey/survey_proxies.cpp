@@ -1,8 +1,8 @@
 #include "geometry/survey/survey_proxies.h"
 
 #include "core/errors/input_error.h"
-#include "geometry/build/authored_proxy_shape.h"
-#include "geometry/build/build_scene_proxies.h"
+#include "geometry/probe_proxies/authored_proxy_shape.h"
+#include "geometry/probe_proxies/build_scene_proxies.h"
 #include "geometry/export/runtime_probe_shape.h"
 
 #include <optional>

@@ -3,7 +3,7 @@
 // the build's own mirror_floor samples against the true hits (Embree).
 
 #include "core/proxy/proxy_shape.h"
-#include "geometry/build/build_probe_proxy.h"
+#include "geometry/probe_proxies/build_probe_proxy.h"
 #include "geometry/builtin/l_room.h"
 #include "geometry/sweeps/break_sweeps.h"
 

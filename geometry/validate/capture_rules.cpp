@@ -1,6 +1,6 @@
 // The rules about one probe's own pieces: its authored mesh, and where its capture point is.
 
-#include "geometry/build/authored_proxy_shape.h"
+#include "geometry/probe_proxies/authored_proxy_shape.h"
 #include "geometry/raycast/capture_depth_cube.h"
 #include "geometry/validate/proxy_mesh_checks.h"
 #include "geometry/validate/validation_rules.h"

@@ -1,7 +1,7 @@
 #include "geometry/validate/validate_scene.h"
 
 #include "core/errors/option_checks.h"
-#include "geometry/build/authored_proxy_shape.h"
+#include "geometry/probe_proxies/authored_proxy_shape.h"
 #include "geometry/validate/validation_rules.h"
 
 #include <algorithm>

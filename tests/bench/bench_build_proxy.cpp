@@ -1,11 +1,11 @@
-// Proxy build time per probe: the whole pipeline of geometry/build/build_probe_proxy.h (depth
+// Proxy build time per probe: the whole pipeline of geometry/probe_proxies/build_probe_proxy.h (depth
 // cube, reflection samples, hull, fits, simplification, evaluation) for each probe of a scene,
 // one probe at a time, with the share of each stage. Report medians:
 //   bench_build_proxy --scene build/scenes/hall_pillars/hall_pillars.scene.json --face-size 128
 //     --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 // Without --scene it runs on the built-in corridor.
 
-#include "geometry/build/build_probe_proxy.h"
+#include "geometry/probe_proxies/build_probe_proxy.h"
 #include "geometry/builtin/builtin_corridor.h"
 #include "geometry/level/load_level.h"
 #include "geometry/scene/scene_file.h"

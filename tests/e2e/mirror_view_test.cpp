@@ -5,7 +5,7 @@
 // cubemap.
 
 #include "core/cube/cubemap_io.h"
-#include "geometry/build/authored_proxy_shape.h"
+#include "geometry/probe_proxies/authored_proxy_shape.h"
 #include "geometry/evaluation/evaluate_shape.h"
 #include "geometry/evaluation/reflection_samples.h"
 #include "geometry/level/load_level.h"

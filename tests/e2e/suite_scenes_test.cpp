@@ -5,7 +5,7 @@
 
 #include "core/cube/cubemap_io.h"
 #include "core/cube/write_depth_cube.h"
-#include "geometry/build/build_scene_proxies.h"
+#include "geometry/probe_proxies/build_scene_proxies.h"
 #include "geometry/export/kept_box.h"
 #include "geometry/export/runtime_export.h"
 #include "geometry/level/load_level.h"

@@ -1,7 +1,7 @@
 // The per-probe pipeline on levels with known answers, and on the degenerate inputs real levels
 // produce: a valid proxy or a clear finding, never a crash.
 
-#include "geometry/build/build_probe_proxy.h"
+#include "geometry/probe_proxies/build_probe_proxy.h"
 #include "geometry/builtin/box_room.h"
 #include "geometry/tune/snap_box_to_walls.h"
 #include "geometry/validate/proxy_mesh_checks.h"

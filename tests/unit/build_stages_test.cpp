@@ -1,13 +1,13 @@
-// Each stage of the proxy build (geometry/build/build_probe_proxy.h) on its own, in a box room
+// Each stage of the proxy build (geometry/probe_proxies/build_probe_proxy.h) on its own, in a box room
 // where every answer is exact.
 
 #include "core/errors/invariant_checks.h"
-#include "geometry/build/build_probe_proxy.h"
-#include "geometry/build/fit_candidates.h"
-#include "geometry/build/probe_samples.h"
-#include "geometry/build/probe_view.h"
-#include "geometry/build/select_proxy.h"
-#include "geometry/build/simplify_hull.h"
+#include "geometry/probe_proxies/build_probe_proxy.h"
+#include "geometry/probe_proxies/fit_candidates.h"
+#include "geometry/probe_proxies/probe_samples.h"
+#include "geometry/probe_proxies/probe_view.h"
+#include "geometry/probe_proxies/select_proxy.h"
+#include "geometry/probe_proxies/simplify_hull.h"
 #include "geometry/builtin/box_room.h"
 #include "tests/unit/room_probe.h"
 

@@ -1,6 +1,6 @@
 #include "plugin/jobs/bench/bench_scenes.h"
 
-#include "geometry/build/build_scene_proxies.h"
+#include "geometry/probe_proxies/build_scene_proxies.h"
 #include "geometry/level/load_level.h"
 #include "geometry/mirror_view/mirror_view_reconstruction.h"
 #include "geometry/mirror_view/radiance_lookups.h"

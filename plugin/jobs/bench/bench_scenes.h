@@ -4,7 +4,7 @@
 // hull and every convex_k of the simplification), take their mirror_floor error from that
 // build, and time each candidate's lookup on the probe's mirror_floor rays.
 
-#include "geometry/build/build_probe_proxy.h"
+#include "geometry/probe_proxies/build_probe_proxy.h"
 #include "plugin/jobs/bench/bench_result.h"
 #include "plugin/jobs/bench/lookup_timing.h"
 

@@ -7,7 +7,7 @@
 #include "core/image/write_png.h"
 #include "core/io/atomic_write.h"
 #include "core/io/output_folder.h"
-#include "geometry/build/build_scene_proxies.h"
+#include "geometry/probe_proxies/build_scene_proxies.h"
 #include "geometry/builtin/box_room.h"
 #include "geometry/builtin/builtin_corridor.h"
 #include "geometry/export/runtime_export.h"

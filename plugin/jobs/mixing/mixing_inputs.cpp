@@ -3,8 +3,8 @@
 #include "core/errors/input_error.h"
 #include "core/mixing/reflected_camera.h"
 #include "core/proxy/proxy_shape.h"
-#include "geometry/build/authored_proxy_shape.h"
-#include "geometry/build/build_probe_proxy.h"
+#include "geometry/probe_proxies/authored_proxy_shape.h"
+#include "geometry/probe_proxies/build_probe_proxy.h"
 #include "geometry/level/load_level.h"
 
 namespace probeproxy::jobs {

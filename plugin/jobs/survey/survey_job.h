@@ -6,7 +6,7 @@
 // Path of one run: plugin/cli/verbs/survey_verb.cpp parses flags into SurveyJobOptions ->
 // runSurveyJob (here) reads the scene and level, seeds the floor at the level's spawn points ->
 // geometry/survey: walkable floor by flood fill, floor samples, each probe's proxy (built by
-// geometry/build where the scene says auto), blended error per sample -> core/blend weights and
+// geometry/probe_proxies where the scene says auto), blended error per sample -> core/blend weights and
 // core/parallax lookups -> figures and maps.
 
 #include "geometry/survey/survey_options.h"

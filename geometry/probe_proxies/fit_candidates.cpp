@@ -1,6 +1,6 @@
-#include "geometry/build/fit_candidates.h"
+#include "geometry/probe_proxies/fit_candidates.h"
 
-#include "geometry/build/stopwatch.h"
+#include "geometry/probe_proxies/stopwatch.h"
 #include "geometry/fit/bounding_sphere_fit.h"
 #include "geometry/fit/convex_hull_proxy.h"
 #include "geometry/fit/fit_error.h"

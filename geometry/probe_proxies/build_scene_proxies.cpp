@@ -1,6 +1,6 @@
-#include "geometry/build/build_scene_proxies.h"
+#include "geometry/probe_proxies/build_scene_proxies.h"
 
-#include "geometry/build/authored_proxy_shape.h"
+#include "geometry/probe_proxies/authored_proxy_shape.h"
 
 #include "core/errors/input_error.h"
 

@@ -5,7 +5,7 @@
 // (geometry/tune/greedy_plane_removal.h). One `convex_<planes>` candidate per plane count.
 
 #include "core/proxy/proxy_candidate.h"
-#include "geometry/build/probe_view.h"
+#include "geometry/probe_proxies/probe_view.h"
 #include "geometry/evaluation/reflection_sample.h"
 
 #include <span>

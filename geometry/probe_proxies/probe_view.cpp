@@ -1,4 +1,4 @@
-#include "geometry/build/probe_view.h"
+#include "geometry/probe_proxies/probe_view.h"
 
 #include "core/cube/depth_cube.h"
 #include "geometry/raycast/capture_depth_cube.h"

@@ -1,4 +1,4 @@
-#include "geometry/build/select_proxy.h"
+#include "geometry/probe_proxies/select_proxy.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 // the walls they nearly match (geometry/tune/snap_box_to_walls.h).
 
 #include "core/proxy/proxy_candidate.h"
-#include "geometry/build/probe_view.h"
+#include "geometry/probe_proxies/probe_view.h"
 #include "geometry/evaluation/reflection_sample.h"
 
 #include <optional>

@@ -1,6 +1,6 @@
-#include "geometry/build/simplify_hull.h"
+#include "geometry/probe_proxies/simplify_hull.h"
 
-#include "geometry/build/stopwatch.h"
+#include "geometry/probe_proxies/stopwatch.h"
 #include "geometry/fit/polytope_from_planes.h"
 #include "geometry/tune/greedy_plane_removal.h"
 

@@ -2,7 +2,7 @@
 // Stage 6 of the proxy build: which candidate to keep ("model no more than the scene needs").
 
 #include "core/proxy/proxy_candidate.h"
-#include "geometry/build/proxy_build_options.h"
+#include "geometry/probe_proxies/proxy_build_options.h"
 
 #include <vector>
 

@@ -1,4 +1,4 @@
-#include "geometry/build/authored_proxy_shape.h"
+#include "geometry/probe_proxies/authored_proxy_shape.h"
 
 #include "geometry/level/load_level.h"
 

@@ -13,8 +13,8 @@
 
 #include "core/proxy/proxy_candidate.h"
 #include "core/scene/probe.h"
-#include "geometry/build/proxy_build_options.h"
-#include "geometry/build/select_proxy.h"
+#include "geometry/probe_proxies/proxy_build_options.h"
+#include "geometry/probe_proxies/select_proxy.h"
 #include "geometry/evaluation/reflection_samples.h"
 #include "geometry/raycast/level_ray_caster.h"
 

@@ -4,7 +4,7 @@
 // flattered by fitting to the very samples they are measured on.
 
 #include "core/scene/probe.h"
-#include "geometry/build/proxy_build_options.h"
+#include "geometry/probe_proxies/proxy_build_options.h"
 #include "geometry/evaluation/reflection_sample.h"
 #include "geometry/raycast/level_ray_caster.h"
 

@@ -1,4 +1,4 @@
-#include "geometry/build/probe_samples.h"
+#include "geometry/probe_proxies/probe_samples.h"
 
 namespace probeproxy {
 

@@ -1,4 +1,4 @@
-#include "geometry/build/proxy_build_options.h"
+#include "geometry/probe_proxies/proxy_build_options.h"
 
 #include "core/errors/option_checks.h"
 

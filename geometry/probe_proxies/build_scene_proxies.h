@@ -4,7 +4,7 @@
 
 #include "core/proxy/proxy_candidate.h"
 #include "core/scene/scene.h"
-#include "geometry/build/build_probe_proxy.h"
+#include "geometry/probe_proxies/build_probe_proxy.h"
 #include "geometry/raycast/level_ray_caster.h"
 
 #include <functional>
