@@ -18,6 +18,8 @@ std::string candidateName(const ProxyCandidate& c) {
       return "aabb";
     case CandidateOrigin::Obb:
       return "obb";
+    case CandidateOrigin::RoomBox:
+      return "room_box";
     case CandidateOrigin::Hull:
       return "hull";
     case CandidateOrigin::Simplified:

@@ -19,6 +19,7 @@ enum class CandidateOrigin {
   MinSphere,   // smallest enclosing the points seen
   Aabb,        // axis-aligned box around them, faces snapped to the walls
   Obb,         // oriented box around them, faces snapped to the walls
+  RoomBox,     // the walls along the axes from the capture point (room_box.h)
   Hull,        // their convex hull
   Simplified,  // a step of the hull's error-driven simplification
 };

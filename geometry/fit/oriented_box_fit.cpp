@@ -212,6 +212,15 @@ Axes canonical(Axes axes) {
   return best;
 }
 
+BoxShape canonicalBoxAlong(const Axes& axes, std::span<const glm::dvec3> points) {
+  BoxShape box = boxAlong(canonical(axes), points);
+  // An axis-aligned room should come out as an aabb, not as an obb turned by rounding.
+  const glm::dquat q = box.worldFromBox;
+  if (2.0 * std::atan2(glm::length(glm::dvec3(q.x, q.y, q.z)), q.w) < 1e-9)
+    box = boxAlong(Axes(1.0), points);
+  return box;
+}
+
 void requirePoints(std::span<const glm::dvec3> points, std::string_view what) {
   if (points.empty()) throw FitError(std::string(what) + ": no points to fit");
   fit::requireFinite(points, what);
@@ -236,12 +245,13 @@ BoxShape orientedBoxFit(std::span<const glm::dvec3> points) {
       axes = volumeAxes(points);
       break;
   }
-  BoxShape box = boxAlong(canonical(axes), points);
-  // An axis-aligned room should come out as an aabb, not as an obb turned by rounding.
-  const glm::dquat q = box.worldFromBox;
-  if (2.0 * std::atan2(glm::length(glm::dvec3(q.x, q.y, q.z)), q.w) < 1e-9)
-    box = boxAlong(Axes(1.0), points);
-  return box;
+  return canonicalBoxAlong(axes, points);
+}
+
+BoxShape uprightBoxFit(std::span<const glm::dvec3> points) {
+  requirePoints(points, "upright box fit");
+  const glm::dvec3 up(0, 0, 1);
+  return canonicalBoxAlong(frameAround(smallestRectangleDirection(points, up), up), points);
 }
 
 BoxShape axisAlignedBoxFit(std::span<const glm::dvec3> points) {

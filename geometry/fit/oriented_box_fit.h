@@ -20,6 +20,12 @@ namespace probeproxy {
 // or a coordinate is not finite.
 BoxShape orientedBoxFit(std::span<const glm::dvec3> pointsMeters);
 
+// The oriented box that stands upright (one axis along +z) with the smallest footprint around
+// the points: CGAL's rotating calipers on their plan, no optimizer. Level rooms are upright,
+// so where thousands of coarse proxies are fitted (layout candidates) this is the box that
+// matters at a twentieth of the cost. Canonical rotation and FitError as above.
+BoxShape uprightBoxFit(std::span<const glm::dvec3> pointsMeters);
+
 // The world-axis box around the points (identity rotation). FitError as above.
 BoxShape axisAlignedBoxFit(std::span<const glm::dvec3> pointsMeters);
 

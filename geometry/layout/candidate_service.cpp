@@ -1,16 +1,23 @@
 #include "geometry/layout/candidate_service.h"
 
-#include "geometry/probe_proxies/build_probe_proxy.h"
 #include "geometry/evaluation/evaluate_shape.h"
-#include "geometry/evaluation/reflection_samples.h"
+#include "geometry/probe_proxies/build_probe_proxy.h"
 #include "geometry/survey/blended_error.h"
-
-#include <glm/geometric.hpp>
 
 #include <chrono>
 #include <cmath>
 
 namespace probeproxy {
+
+std::vector<double> fitRadiiFor(double farthestSeenMeters, double reachMeters) {
+  const double widest =
+      reachMeters > 0.0 ? std::min(farthestSeenMeters, reachMeters) : farthestSeenMeters;
+  std::vector<double> radii;
+  for (double r : {kRoomFitMeters, kRoomsFitMeters})
+    if (r < widest) radii.push_back(r);
+  radii.push_back(std::max(widest, 0.5));
+  return radii;
+}
 
 Probe candidateFitProbe(glm::dvec3 captureMeters, double fitMeters) {
   Probe probe;
@@ -20,9 +27,21 @@ Probe candidateFitProbe(glm::dvec3 captureMeters, double fitMeters) {
   return probe;
 }
 
-CandidateService serveFloor(const LevelRayCaster& level, glm::dvec3 captureMeters,
-                            double fitMeters, std::span<const FloorSample> samples,
-                            const LayoutOptions& o) {
+std::vector<float> errorsOnSeen(const ProxyShape& proxy, glm::dvec3 captureMeters,
+                                std::span<const FloorSample> samples,
+                                std::span<const std::uint32_t> seen) {
+  std::vector<float> errors;
+  errors.reserve(seen.size());
+  for (std::uint32_t i : seen) {
+    const double error = angularErrorDeg(proxy, captureMeters, samples[i].sample);
+    errors.push_back(static_cast<float>(std::isnan(error) ? kMissErrorDeg : error));
+  }
+  return errors;
+}
+
+CandidateService serveFloor(const LevelRayCaster& level, glm::dvec3 captureMeters, double fitMeters,
+                            std::span<const FloorSample> samples,
+                            std::span<const std::uint32_t> seen, const LayoutOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   CandidateService s;
   s.captureMeters = captureMeters;
@@ -30,17 +49,9 @@ CandidateService serveFloor(const LevelRayCaster& level, glm::dvec3 captureMeter
   const ProbeProxyBuild build = buildProbeProxy(level, candidateFitProbe(captureMeters, fitMeters),
                                                 std::nullopt, o.candidateProxy);
   s.proxy = build.candidates[build.kept].shape;
-
-  const double reach2 = o.reachMeters * o.reachMeters;
-  for (std::size_t i = 0; i < samples.size(); ++i) {
-    const ReflectionSample& sample = samples[i].sample;
-    const glm::dvec3 d = sample.xMeters - captureMeters;
-    if (glm::dot(d, d) > reach2) continue;
-    if (trueHitHiddenFrom(level, captureMeters, sample)) continue;
-    const double error = angularErrorDeg(s.proxy, captureMeters, sample);
-    s.samples.push_back(static_cast<std::uint32_t>(i));
-    s.errorDeg.push_back(static_cast<float>(std::isnan(error) ? kMissErrorDeg : error));
-  }
+  const std::vector<float> errors = errorsOnSeen(s.proxy, captureMeters, samples, seen);
+  for (std::size_t k = 0; k < seen.size(); ++k)
+    if (errors[k] <= o.toleranceDeg) s.served.push_back(seen[k]);
   s.buildMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return s;

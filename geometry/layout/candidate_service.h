@@ -1,10 +1,10 @@
 #pragma once
-// What one candidate probe would give the floor near it: its proxy, built as `build` builds
-// one for a sphere of influence of `fitMeters` (fitted on the floor connected to the capture
-// point) but coarse, and its lookup error on every floor sample within the layout's reach whose
-// true hit it sees (evaluate_shape.h's angle; a miss is 180 degrees). Samples it cannot see it
-// cannot serve, whatever its proxy. A small fit region models one room exactly, a large one
-// several rooms roughly; the cover chooses between them by the floor each serves.
+// What one candidate probe would give the floor: its proxy, built as `build` builds one for a
+// sphere of influence of `fitMeters` (fitted on the floor connected to the capture point) but
+// coarse, and the floor samples it serves within the tolerance among those it sees
+// (capture_sight.h; evaluate_shape.h's angle, a miss is 180 degrees). A small fit region models
+// one room exactly, a large one all the capture point sees roughly; the cover chooses between
+// them by the floor each serves.
 
 #include "core/proxy/proxy_shape.h"
 #include "core/scene/probe.h"
@@ -20,18 +20,29 @@
 
 namespace probeproxy {
 
+// The fit regions every capture point is tried with: a room, a few rooms, and all the floor it
+// sees (the farthest seen floor point's distance); none past the layout's reach.
+inline constexpr double kRoomFitMeters = 4.0, kRoomsFitMeters = 12.0;
+std::vector<double> fitRadiiFor(double farthestSeenMeters, double reachMeters);
+
 struct CandidateService {
+  std::size_t capture = 0;  // index of its capture point (and of that point's sight)
   glm::dvec3 captureMeters{0.0};
   double fitMeters = 0.0;  // the radius of the floor its proxy was fitted to
   ProxyShape proxy;
-  std::vector<std::uint32_t> samples;  // indices into the floor samples, ascending
-  std::vector<float> errorDeg;         // samples[i]'s error
-  double buildMs = 0.0;                // proxy and evaluation
+  std::vector<std::uint32_t> served;  // seen samples with error <= tolerance, ascending
+  double buildMs = 0.0;               // proxy and evaluation
 };
 
-CandidateService serveFloor(const LevelRayCaster& level, glm::dvec3 captureMeters,
-                            double fitMeters, std::span<const FloorSample> samples,
-                            const LayoutOptions& options);
+// `seen`: the samples the capture point sees (CaptureSight::seen).
+CandidateService serveFloor(const LevelRayCaster& level, glm::dvec3 captureMeters, double fitMeters,
+                            std::span<const FloorSample> samples,
+                            std::span<const std::uint32_t> seen, const LayoutOptions& options);
+
+// A proxy's error on each of `seen` (a miss is kMissErrorDeg), in that order.
+std::vector<float> errorsOnSeen(const ProxyShape& proxy, glm::dvec3 captureMeters,
+                                std::span<const FloorSample> samples,
+                                std::span<const std::uint32_t> seen);
 
 // The sphere a candidate's proxy is fitted to: the floor connected to the capture point in it.
 Probe candidateFitProbe(glm::dvec3 captureMeters, double fitMeters);

@@ -21,9 +21,15 @@ struct LayoutCandidate {
   std::size_t cell = 0;  // the floor cell under it (WalkableFloor::cells)
 };
 
-std::vector<LayoutCandidate> layoutCandidates(const LevelRayCaster& level,
-                                              const WalkableFloor& floor, double spacingMeters,
-                                              double captureHeightMeters);
+struct LayoutCandidates {
+  std::vector<LayoutCandidate> points;
+  double spacingMeters = 0.0;  // the grid's, after coarsening
+};
+
+// At most `maxCandidates`: the grid's step grows (by whole floor cells) until it fits.
+LayoutCandidates layoutCandidates(const LevelRayCaster& level, const WalkableFloor& floor,
+                                  double spacingMeters, double captureHeightMeters,
+                                  std::size_t maxCandidates);
 
 // The capture point above a floor point: `heightMeters` up, at most half the free height.
 glm::dvec3 captureAbove(const LevelRayCaster& level, glm::dvec3 floorMeters, double heightMeters);

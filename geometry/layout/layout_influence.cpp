@@ -6,6 +6,18 @@
 
 namespace probeproxy {
 
+namespace {
+
+BoxInfluence boxAround(glm::dvec3 lo, glm::dvec3 hi, double bandMeters) {
+  BoxInfluence box;
+  box.centerMeters = 0.5 * (lo + hi);
+  box.innerHalfExtentsMeters = 0.5 * (hi - lo);
+  box.halfExtentsMeters = box.innerHalfExtentsMeters + glm::dvec3(bandMeters);
+  return box;
+}
+
+}  // namespace
+
 BoxInfluence influenceAroundFloor(const WalkableFloor& floor, std::span<const std::size_t> cells,
                                   glm::dvec3 captureMeters, double bandMeters) {
   glm::dvec3 lo(std::numeric_limits<double>::infinity());
@@ -18,11 +30,14 @@ BoxInfluence influenceAroundFloor(const WalkableFloor& floor, std::span<const st
   }
   lo = glm::min(lo, captureMeters - glm::dvec3(0.05));
   hi = glm::max(hi, captureMeters + glm::dvec3(0.05));
-  BoxInfluence box;
-  box.centerMeters = 0.5 * (lo + hi);
-  box.innerHalfExtentsMeters = 0.5 * (hi - lo);
-  box.halfExtentsMeters = box.innerHalfExtentsMeters + glm::dvec3(bandMeters);
-  return box;
+  return boxAround(lo, hi, bandMeters);
+}
+
+BoxInfluence influenceOfRect(const WalkableFloor& floor, const FloorRect& rect,
+                             glm::dvec3 captureMeters, double bandMeters) {
+  glm::dvec3 lo, hi;
+  floorRectBounds(floor, rect, captureMeters, lo, hi);
+  return boxAround(lo, hi, bandMeters);
 }
 
 }  // namespace probeproxy

@@ -6,6 +6,7 @@
 
 #include "core/scene/influence_volume.h"
 #include "geometry/floor/walkable_floor.h"
+#include "geometry/layout/floor_rectangles.h"
 
 #include <glm/vec3.hpp>
 
@@ -13,11 +14,13 @@
 
 namespace probeproxy {
 
-inline constexpr double kInfluenceBelowFloorMeters = 0.25;
-inline constexpr double kInfluenceHeadRoomMeters = 2.5;
-
 // `cells` index floor.cells; at least one.
 BoxInfluence influenceAroundFloor(const WalkableFloor& floor, std::span<const std::size_t> cells,
                                   glm::dvec3 captureMeters, double bandMeters);
+
+// The box whose inner range is the rectangle's (floorRectBounds) and whose outer range reaches
+// `bandMeters` past it on every side.
+BoxInfluence influenceOfRect(const WalkableFloor& floor, const FloorRect& rect,
+                             glm::dvec3 captureMeters, double bandMeters);
 
 }  // namespace probeproxy

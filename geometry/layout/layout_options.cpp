@@ -10,13 +10,15 @@ ProxyBuildOptions LayoutOptions::coarseCandidateProxyOptions() {
   o.samples.targetSamples = 256;
   o.samples.camerasAcross = 4;
   o.maxPlanes = 16;
+  o.uprightObb = true;
   return o;
 }
 
 void LayoutOptions::check() const {
   requirePositive("tolerance_deg", toleranceDeg);
   requireInRange("spacing", spacingMeters, 0.25, 100.0);
-  requireInRange("reach", reachMeters, 0.5, 1000.0);
+  requireInRange("max_candidates", maxCandidates, std::size_t{1}, std::size_t{1'000'000});
+  if (reachMeters != 0.0) requireInRange("reach", reachMeters, 0.5, 1000.0);
   requireInRange("capture_height", captureHeightMeters, 0.05, 10.0);
   requireNonNegative("blend_band", blendBandMeters);
   requireInRange("samples_per_cell", samplesPerCell, 1, 64);

@@ -3,8 +3,8 @@
 // sample is served within, how candidates are spread and built, and how the chosen probes'
 // influence volumes blend. Plain data; check() throws InputError for a value out of range.
 
-#include "geometry/probe_proxies/proxy_build_options.h"
 #include "geometry/floor/walkable_floor.h"
+#include "geometry/probe_proxies/proxy_build_options.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -14,7 +14,7 @@ namespace probeproxy {
 enum class LayoutBaseline {
   None,   // the layout itself: the fewest probes that serve the floor within the tolerance
   Grid,   // a probe every `spacingMeters` over the walkable floor, box cells, aabb proxies
-  Spawn,  // a probe at every spawn point, a sphere of `reachMeters`, auto proxies
+  Spawn,  // a probe at every spawn point, a sphere of `reachMeters` (or 10 m), auto proxies
 };
 
 struct LayoutOptions {
@@ -22,9 +22,12 @@ struct LayoutOptions {
   double toleranceDeg = 5.0;   // a floor sample is served where one probe's error is this or less
   std::size_t maxProbes = 0;   // 0: as many as the floor needs; else at most this many
   double spacingMeters = 2.0;  // the candidates' grid (and the grid baseline's)
+  // At most this many capture points: on a level whose floor holds more at `spacingMeters`,
+  // the candidates' grid is coarsened until it fits (layout time grows with the count).
+  std::size_t maxCandidates = 800;
   // A candidate is fitted to, and serves, floor samples within this distance of its capture
-  // point: a probe's cubemap is sharp only near it, and the search stays linear in the level.
-  double reachMeters = 10.0;
+  // point; 0: all the floor it sees (a hangar keeps one probe).
+  double reachMeters = 0.0;
   double captureHeightMeters = 1.6;  // above the floor; at most half the free height above it
   double blendBandMeters = 1.0;      // each influence box's outer range past its inner one
   // How finely candidates are judged: a coarser floor and fewer samples than `survey` takes.

@@ -2,6 +2,7 @@
 
 #include "core/errors/input_error.h"
 #include "geometry/layout/candidate_service.h"
+#include "geometry/layout/capture_sight.h"
 #include "geometry/layout/grid_layout.h"
 #include "geometry/layout/layout_candidates.h"
 #include "geometry/layout/layout_influence.h"
@@ -9,10 +10,12 @@
 #include "geometry/survey/floor_samples.h"
 
 #include <tbb/parallel_for.h>
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <mutex>
 
 namespace probeproxy {
@@ -25,32 +28,46 @@ double median(std::vector<double> values) {
   return values[values.size() / 2];
 }
 
-std::vector<CandidateService> serveAll(
-    const LevelRayCaster& level, const std::vector<LayoutCandidate>& candidates,
-    std::span<const FloorSample> samples, const LayoutOptions& o,
-    const std::function<void(std::size_t, std::size_t)>& onDone) {
-  // Each capture point with each fit region, smallest first.
-  const std::size_t fits = kLayoutFitFractions.size();
-  std::vector<CandidateService> services(candidates.size() * fits);
+// Every capture point's sight, then its proxy for each fit region, smallest first; capture
+// points in parallel, results in capture order whatever the thread count.
+struct Candidates {
+  std::vector<CaptureSight> sights;
+  std::vector<CandidateService> services;
+};
+
+Candidates serveAll(const LevelRayCaster& level, const std::vector<LayoutCandidate>& captures,
+                    std::span<const FloorSample> samples, const LayoutOptions& o,
+                    const std::function<void(std::size_t, std::size_t)>& onDone) {
+  Candidates c;
+  c.sights.resize(captures.size());
+  std::vector<std::vector<CandidateService>> perCapture(captures.size());
   std::mutex progress;
   std::size_t done = 0;
-  tbb::parallel_for(std::size_t{0}, services.size(), [&](std::size_t i) {
-    services[i] = serveFloor(level, candidates[i / fits].captureMeters,
-                             kLayoutFitFractions[i % fits] * o.reachMeters, samples, o);
+  tbb::parallel_for(std::size_t{0}, captures.size(), [&](std::size_t i) {
+    const glm::dvec3 capture = captures[i].captureMeters;
+    c.sights[i] = captureSight(level, capture, samples, o.reachMeters);
+    double farthest = 0.0;
+    for (std::uint32_t s : c.sights[i].seen)
+      farthest = std::max(farthest, glm::distance(samples[s].sample.xMeters, capture));
+    for (double fit : fitRadiiFor(farthest, o.reachMeters)) {
+      perCapture[i].push_back(serveFloor(level, capture, fit, samples, c.sights[i].seen, o));
+      perCapture[i].back().capture = i;
+    }
     if (!onDone) return;
     const std::lock_guard<std::mutex> lock(progress);
-    onDone(++done, services.size());
+    onDone(++done, captures.size());
   });
-  return services;
+  for (std::vector<CandidateService>& services : perCapture)
+    for (CandidateService& s : services) c.services.push_back(std::move(s));
+  return c;
 }
 
-// Area shares of the floor served within the tolerance by any of `which` services.
+// Area share of the floor some of `which` candidates serve within the tolerance.
 double servedShare(std::span<const CandidateService> services, std::span<const std::size_t> which,
-                   std::span<const FloorSample> samples, double toleranceDeg) {
+                   std::span<const FloorSample> samples) {
   std::vector<char> served(samples.size(), 0);
   for (std::size_t c : which)
-    for (std::size_t k = 0; k < services[c].samples.size(); ++k)
-      if (services[c].errorDeg[k] <= toleranceDeg) served[services[c].samples[k]] = 1;
+    for (std::uint32_t s : services[c].served) served[s] = 1;
   double area = 0.0, servedArea = 0.0;
   for (std::size_t i = 0; i < samples.size(); ++i) {
     area += samples[i].areaSquareMeters;
@@ -71,31 +88,34 @@ void layoutByCandidates(const LevelRayCaster& level, const WalkableFloor& floor,
   const std::vector<FloorSample> samples = buildFloorSamples(level, floor, so);
   r.floorSamples = samples.size();
 
-  const std::vector<LayoutCandidate> candidates =
-      layoutCandidates(level, floor, o.spacingMeters, o.captureHeightMeters);
-  const std::vector<CandidateService> services = serveAll(level, candidates, samples, o, onDone);
+  const LayoutCandidates grid =
+      layoutCandidates(level, floor, o.spacingMeters, o.captureHeightMeters, o.maxCandidates);
+  const std::vector<LayoutCandidate>& candidates = grid.points;
+  r.spacingMeters = grid.spacingMeters;
+  const Candidates built = serveAll(level, candidates, samples, o, onDone);
+  const std::vector<CandidateService>& services = built.services;
   r.candidates = services.size();
   std::vector<double> ms;
   for (const CandidateService& s : services) ms.push_back(s.buildMs);
   r.candidateMedianMs = median(ms);
 
-  const ProbeSelection selection = selectProbes(services, samples, o.toleranceDeg, o.maxProbes);
+  std::vector<std::size_t> captureCells;
+  for (const LayoutCandidate& c : candidates) captureCells.push_back(c.cell);
+  SelectionOptions select;
+  select.maxProbes = o.maxProbes;
+  select.gapCells = static_cast<int>(std::lround(o.blendBandMeters / floor.spacingMeters));
+  const ProbeSelection selection =
+      selectProbes(services, built.sights, captureCells, samples, floor, select);
   std::vector<std::size_t> all(services.size());
   for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
-  r.servableShare = servedShare(services, all, samples, o.toleranceDeg);
-  r.servedShare = servedShare(services, selection.chosen, samples, o.toleranceDeg);
-
-  std::vector<std::vector<std::size_t>> ownedCells(selection.chosen.size());
-  for (std::size_t i = 0; i < samples.size(); ++i)
-    if (!selection.chosen.empty()) ownedCells[selection.owner[i]].push_back(samples[i].cell);
+  r.servableShare = servedShare(services, all, samples);
+  r.servedShare = servedShare(services, selection.chosen, samples);
   for (std::size_t p = 0; p < selection.chosen.size(); ++p) {
     const CandidateService& chosen = services[selection.chosen[p]];
-    std::vector<std::size_t>& cells = ownedCells[p];
-    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
-    if (cells.empty()) cells.push_back(candidates[selection.chosen[p] / kLayoutFitFractions.size()].cell);
-    r.probes.push_back({chosen.captureMeters,
-                        influenceAroundFloor(floor, cells, chosen.captureMeters, o.blendBandMeters),
-                        chosen.fitMeters});
+    r.probes.push_back(
+        {chosen.captureMeters,
+         influenceOfRect(floor, selection.ranges[p], chosen.captureMeters, o.blendBandMeters),
+         chosen.fitMeters});
   }
 }
 
@@ -109,8 +129,9 @@ LayoutResult runLayout(const LevelRayCaster& level, std::span<const glm::dvec3> 
   LayoutResult r;
   r.spacingMeters = o.spacingMeters;
   if (o.baseline == LayoutBaseline::Spawn) {
+    const double spawnRadius = o.reachMeters > 0.0 ? o.reachMeters : kSpawnSphereMeters;
     for (const glm::dvec3& seed : seedsMeters)
-      r.probes.push_back({seed, SphereInfluence{seed, o.reachMeters, o.reachMeters}});
+      r.probes.push_back({seed, SphereInfluence{seed, spawnRadius, spawnRadius}});
   } else {
     const WalkableFloor floor = walkableFloor(level, seedsMeters, o.floor);
     if (floor.cells.empty())
@@ -119,9 +140,8 @@ LayoutResult runLayout(const LevelRayCaster& level, std::span<const glm::dvec3> 
                                      " seed points (spawn or capture points)");
     r.floorCells = floor.cells.size();
     if (o.baseline == LayoutBaseline::Grid) {
-      for (const GridCellProbe& g : gridLayoutWithin(level, floor, o.spacingMeters,
-                                                     o.captureHeightMeters, o.maxProbes,
-                                                     r.spacingMeters))
+      for (const GridCellProbe& g : gridLayoutWithin(
+               level, floor, o.spacingMeters, o.captureHeightMeters, o.maxProbes, r.spacingMeters))
         r.probes.push_back({g.captureMeters, influenceAroundFloor(floor, g.cells, g.captureMeters,
                                                                   o.blendBandMeters)});
     } else {

@@ -22,8 +22,8 @@
 
 namespace probeproxy {
 
-// The fit regions every capture point is tried with, as fractions of the reach.
-inline constexpr std::array<double, 3> kLayoutFitFractions = {0.25, 0.5, 1.0};
+// The spawn baseline's spheres when the layout has no reach.
+inline constexpr double kSpawnSphereMeters = 10.0;
 
 struct LayoutProbe {
   glm::dvec3 captureMeters{0.0};

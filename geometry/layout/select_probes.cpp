@@ -1,152 +1,230 @@
 #include "geometry/layout/select_probes.h"
 
-#include <glm/geometric.hpp>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <limits>
-#include <map>
+#include <functional>
 #include <queue>
 
 namespace probeproxy {
 
 namespace {
 
-// Greedy weighted cover with lazy gains: a candidate's gain only shrinks as floor is served, so
-// one whose recomputed gain still tops the queue is the best.
-void greedyCover(std::span<const CandidateService> services, std::span<const FloorSample> samples,
-                 const std::vector<std::vector<std::uint32_t>>& covers, std::vector<char>& covered,
-                 std::vector<std::size_t>& chosen, std::size_t maxProbes) {
-  const auto gainOf = [&](std::size_t c) {
+// Per candidate, the floor cells it serves whole and those it sees a sample of.
+struct CellSets {
+  std::vector<std::vector<char>> served, seen;
+  std::vector<char> servable;  // some candidate serves the cell whole
+};
+
+CellSets cellSets(std::span<const CandidateService> services, std::span<const CaptureSight> sights,
+                  std::span<const FloorSample> samples, std::size_t cellCount) {
+  std::vector<int> perCell(cellCount, 0);
+  for (const FloorSample& s : samples) ++perCell[s.cell];
+  CellSets sets;
+  sets.served.resize(services.size());
+  sets.seen.resize(services.size());
+  tbb::parallel_for(std::size_t{0}, services.size(), [&](std::size_t c) {
+    std::vector<int> count(cellCount, 0);
+    for (std::uint32_t i : services[c].served) ++count[samples[i].cell];
+    sets.served[c].assign(cellCount, 0);
+    for (std::size_t cell = 0; cell < cellCount; ++cell)
+      sets.served[c][cell] = perCell[cell] > 0 && count[cell] == perCell[cell];
+    sets.seen[c].assign(cellCount, 0);
+    for (std::uint32_t i : sights[services[c].capture].seen) sets.seen[c][samples[i].cell] = 1;
+  });
+  sets.servable.assign(cellCount, 0);
+  for (const std::vector<char>& served : sets.served)
+    for (std::size_t cell = 0; cell < cellCount; ++cell) sets.servable[cell] |= served[cell];
+  return sets;
+}
+
+struct Cover {
+  const FloorColumns& columns;
+  std::span<const CandidateService> services;
+  std::span<const std::size_t> captureCells;
+  const SelectionOptions& options;
+  std::vector<char> claimed;  // inside a chosen range or its gap
+  ProbeSelection selection;
+
+  FloorRect rectOf(std::size_t c, const std::function<bool(std::size_t)>& acceptable) const {
+    return growFloorRect(
+        columns, captureCells[services[c].capture], acceptable,
+        [&](std::size_t cell) { return claimed[cell] != 0; }, options.acceptedShare);
+  }
+
+  double gainOf(const FloorRect& rect, const std::function<double(std::size_t)>& worth) const {
     double gain = 0.0;
-    for (std::uint32_t s : covers[c])
-      if (!covered[s]) gain += samples[s].areaSquareMeters;
+    if (!rect.empty()) columns.forEachIn(rect, [&](std::size_t cell) { gain += worth(cell); });
     return gain;
-  };
-  using Entry = std::pair<double, std::size_t>;  // gain, candidate
-  const auto lower = [](const Entry& a, const Entry& b) {
-    return a.first < b.first || (a.first == b.first && a.second > b.second);
-  };
-  std::priority_queue<Entry, std::vector<Entry>, decltype(lower)> queue(lower);
-  for (std::size_t c = 0; c < services.size(); ++c) {
-    if (std::find(chosen.begin(), chosen.end(), c) != chosen.end()) continue;
-    const double gain = gainOf(c);
-    if (gain > 0.0) queue.push({gain, c});
   }
-  while (!queue.empty() && (maxProbes == 0 || chosen.size() < maxProbes)) {
-    const Entry top = queue.top();
-    queue.pop();
-    const double gain = gainOf(top.second);
-    if (gain <= 0.0) continue;
-    if (!queue.empty() && lower(Entry{gain, top.second}, queue.top())) {
-      queue.push({gain, top.second});
-      continue;
-    }
-    chosen.push_back(top.second);
-    for (std::uint32_t s : covers[top.second]) covered[s] = 1;
+
+  void choose(std::size_t c, const FloorRect& rect) {
+    selection.chosen.push_back(c);
+    selection.ranges.push_back(rect);
+    columns.forEachIn(widened(rect, options.gapCells),
+                      [&](std::size_t cell) { claimed[cell] = 1; });
   }
-}
 
-// Which samples each candidate covers: those it serves within the tolerance, or every one it
-// sees.
-std::vector<std::vector<std::uint32_t>> coverSets(std::span<const CandidateService> services,
-                                                  double toleranceDeg, bool withinTolerance) {
-  std::vector<std::vector<std::uint32_t>> covers(services.size());
-  for (std::size_t c = 0; c < services.size(); ++c)
-    for (std::size_t k = 0; k < services[c].samples.size(); ++k)
-      if (!withinTolerance || services[c].errorDeg[k] <= toleranceDeg)
-        covers[c].push_back(services[c].samples[k]);
-  return covers;
-}
-
-// How many chosen probes cover each sample.
-std::vector<int> coverCounts(const std::vector<std::vector<std::uint32_t>>& covers,
-                             const std::vector<std::size_t>& chosen, std::size_t sampleCount) {
-  std::vector<int> counts(sampleCount, 0);
-  for (std::size_t c : chosen)
-    for (std::uint32_t s : covers[c]) ++counts[s];
-  return counts;
-}
-
-// Drops, latest first, every probe whose served and seen floor other probes serve and see.
-void dropRedundant(const std::vector<std::vector<std::uint32_t>>& serves,
-                   const std::vector<std::vector<std::uint32_t>>& sees,
-                   std::vector<std::size_t>& chosen, std::size_t sampleCount) {
-  std::vector<int> served = coverCounts(serves, chosen, sampleCount);
-  std::vector<int> seen = coverCounts(sees, chosen, sampleCount);
-  for (std::size_t k = chosen.size(); k-- > 0;) {
-    const std::size_t c = chosen[k];
-    const auto alsoElsewhere = [](const std::vector<std::uint32_t>& set,
-                                  const std::vector<int>& counts) {
-      return std::all_of(set.begin(), set.end(), [&](std::uint32_t s) { return counts[s] > 1; });
+  // Greedy with lazy gains: claims only grow, so a candidate's rectangle and gain only shrink,
+  // and one whose recomputed gain still tops the queue is the best.
+  void greedy(const std::function<bool(std::size_t, std::size_t)>& acceptable,
+              const std::function<double(std::size_t, std::size_t)>& worth, double minGain) {
+    const auto evaluate = [&](std::size_t c, FloorRect& rect) {
+      rect = rectOf(c, [&](std::size_t cell) { return acceptable(c, cell); });
+      return gainOf(rect, [&](std::size_t cell) { return worth(c, cell); });
     };
-    if (!alsoElsewhere(serves[c], served) || !alsoElsewhere(sees[c], seen)) continue;
-    for (std::uint32_t s : serves[c]) --served[s];
-    for (std::uint32_t s : sees[c]) --seen[s];
-    chosen.erase(chosen.begin() + static_cast<std::ptrdiff_t>(k));
+    std::vector<double> gains(services.size(), 0.0);
+    tbb::parallel_for(std::size_t{0}, services.size(), [&](std::size_t c) {
+      FloorRect rect;
+      gains[c] = evaluate(c, rect);
+    });
+    using Entry = std::pair<double, std::size_t>;  // gain, candidate
+    const auto lower = [](const Entry& a, const Entry& b) {
+      return a.first < b.first || (a.first == b.first && a.second > b.second);
+    };
+    std::priority_queue<Entry, std::vector<Entry>, decltype(lower)> queue(lower);
+    for (std::size_t c = 0; c < services.size(); ++c)
+      if (gains[c] >= minGain) queue.push({gains[c], c});
+    while (!queue.empty() &&
+           (options.maxProbes == 0 || selection.chosen.size() < options.maxProbes)) {
+      const Entry top = queue.top();
+      queue.pop();
+      FloorRect rect;
+      const double gain = evaluate(top.second, rect);
+      if (gain < minGain) continue;
+      if (!queue.empty() && lower(Entry{gain, top.second}, queue.top())) {
+        queue.push({gain, top.second});
+        continue;
+      }
+      choose(top.second, rect);
+    }
+  }
+};
+
+bool sameStorey(const FloorRect& a, const FloorRect& b) {
+  return std::abs(a.floorMeters - b.floorMeters) <
+         kInfluenceBelowFloorMeters + kInfluenceHeadRoomMeters;
+}
+
+bool rangesOverlap(const FloorRect& a, const FloorRect& b) {
+  return a.column0 <= b.column1 && b.column0 <= a.column1 && a.row0 <= b.row1 && b.row0 <= a.row1 &&
+         sameStorey(a, b);
+}
+
+// How many cells the rectangle must stretch, along both axes, for its band to reach a cell.
+int stretchNeeded(const FloorRect& rect, const FloorCell& cell, int gapCells) {
+  const int dc =
+      std::max({0, rect.column0 - gapCells - cell.column, cell.column - rect.column1 - gapCells});
+  const int dr = std::max({0, rect.row0 - gapCells - cell.row, cell.row - rect.row1 - gapCells});
+  return dc + dr;
+}
+
+FloorRect stretchedToward(FloorRect rect, const FloorCell& cell, int gapCells) {
+  rect.column0 = std::min(rect.column0, cell.column + gapCells);
+  rect.column1 = std::max(rect.column1, cell.column - gapCells);
+  rect.row0 = std::min(rect.row0, cell.row + gapCells);
+  rect.row1 = std::max(rect.row1, cell.row - gapCells);
+  return rect;
+}
+
+FloorRect boundingUnion(const FloorRect& a, const FloorRect& b) {
+  FloorRect u = a;
+  u.column0 = std::min(a.column0, b.column0), u.column1 = std::max(a.column1, b.column1);
+  u.row0 = std::min(a.row0, b.row0), u.row1 = std::max(a.row1, b.row1);
+  return u;
+}
+
+// The refining pass: a probe whose whole range a neighbour can take over, serving (in the
+// accepted share) the floor its range would gain and overlapping no third range, is dropped,
+// the last taken (the smallest gain) first. Greedy order leaves such probes where the first
+// big range blocked a second one's growth (the L-room's corner, between its two arms).
+void dropAbsorbed(const FloorColumns& columns, const CellSets& sets, double acceptedShare,
+                  ProbeSelection& selection) {
+  for (std::size_t p = selection.chosen.size(); p-- > 0;) {
+    for (std::size_t q = 0; q < selection.chosen.size(); ++q) {
+      if (q == p || !sameStorey(selection.ranges[p], selection.ranges[q])) continue;
+      const FloorRect merged = boundingUnion(selection.ranges[q], selection.ranges[p]);
+      bool clear = true;
+      for (std::size_t j = 0; j < selection.ranges.size() && clear; ++j)
+        clear = j == p || j == q || !rangesOverlap(merged, selection.ranges[j]);
+      if (!clear) continue;
+      double gained = 0.0, served = 0.0;
+      const std::vector<char>& servedByQ = sets.served[selection.chosen[q]];
+      columns.forEachIn(merged, [&](std::size_t cell) {
+        if (selection.ranges[q].holds(columns.floor().cells[cell])) return;
+        const double area = columns.floor().cells[cell].areaSquareMeters;
+        gained += area;
+        if (servedByQ[cell]) served += area;
+      });
+      if (served < acceptedShare * gained) continue;
+      selection.ranges[q] = merged;
+      selection.chosen.erase(selection.chosen.begin() + static_cast<std::ptrdiff_t>(p));
+      selection.ranges.erase(selection.ranges.begin() + static_cast<std::ptrdiff_t>(p));
+      break;
+    }
   }
 }
 
-// Whole floor cells go to one probe each, so the regions (and the influence boxes around them)
-// stay compact: the probe that serves most of the cell's samples within the tolerance, then
-// the one that sees most of them, then the nearest capture point.
-std::vector<std::size_t> owners(std::span<const CandidateService> services,
-                                std::span<const FloorSample> samples,
-                                const std::vector<std::size_t>& chosen, double toleranceDeg) {
-  struct Score {
-    int served = 0, seen = 0;
+// Floor that no range's band reaches (crumbs too small to be worth a probe, floor between
+// ranges wider than the band): the range on its storey that needs the least stretch takes it,
+// where the stretched range overlaps no other. Every floor cell is then in some influence.
+void coverLeftovers(const WalkableFloor& floor, int gapCells, std::vector<FloorRect>& ranges) {
+  const auto banded = [&](std::size_t cell) {
+    return std::any_of(ranges.begin(), ranges.end(), [&](const FloorRect& r) {
+      return widened(r, gapCells).holds(floor.cells[cell]);
+    });
   };
-  std::map<std::pair<std::size_t, std::size_t>, Score> scores;  // (cell, probe)
-  for (std::size_t p = 0; p < chosen.size(); ++p) {
-    const CandidateService& s = services[chosen[p]];
-    for (std::size_t k = 0; k < s.samples.size(); ++k) {
-      Score& score = scores[{samples[s.samples[k]].cell, p}];
-      ++score.seen;
-      if (s.errorDeg[k] <= toleranceDeg) ++score.served;
+  for (std::size_t cell = 0; cell < floor.cells.size(); ++cell) {
+    if (banded(cell)) continue;
+    const FloorCell& at = floor.cells[cell];
+    std::vector<std::pair<int, std::size_t>> order;  // stretch, range
+    for (std::size_t i = 0; i < ranges.size(); ++i) {
+      FloorRect storey = ranges[i];
+      storey.column0 = storey.column1 = at.column, storey.row0 = storey.row1 = at.row;
+      if (storey.holds(at)) order.push_back({stretchNeeded(ranges[i], at, gapCells), i});
+    }
+    std::sort(order.begin(), order.end());
+    for (const auto& [stretch, i] : order) {
+      const FloorRect stretched = stretchedToward(ranges[i], at, gapCells);
+      bool clear = true;
+      for (std::size_t j = 0; j < ranges.size() && clear; ++j)
+        clear = j == i || !rangesOverlap(stretched, ranges[j]);
+      if (!clear) continue;
+      ranges[i] = stretched;
+      break;
     }
   }
-  const auto distance2 = [&](std::size_t p, std::size_t sample) {
-    const glm::dvec3 d = services[chosen[p]].captureMeters - samples[sample].sample.xMeters;
-    return glm::dot(d, d);
-  };
-  std::vector<std::size_t> owner(samples.size(), 0);
-  for (std::size_t i = 0; i < samples.size(); ++i) {
-    if (i > 0 && samples[i].cell == samples[i - 1].cell) {
-      owner[i] = owner[i - 1];
-      continue;
-    }
-    const std::size_t cell = samples[i].cell;
-    const auto better = [&](std::size_t a, std::size_t b) {  // is probe a a better owner than b?
-      const auto sa = scores.find({cell, a}), sb = scores.find({cell, b});
-      const Score x = sa == scores.end() ? Score{} : sa->second;
-      const Score y = sb == scores.end() ? Score{} : sb->second;
-      if (x.served != y.served) return x.served > y.served;
-      if (x.seen != y.seen) return x.seen > y.seen;
-      return distance2(a, i) < distance2(b, i);
-    };
-    for (std::size_t p = 1; p < chosen.size(); ++p)
-      if (better(p, owner[i])) owner[i] = p;
-  }
-  return owner;
 }
 
 }  // namespace
 
 ProbeSelection selectProbes(std::span<const CandidateService> services,
-                            std::span<const FloorSample> samples, double toleranceDeg,
-                            std::size_t maxProbes) {
-  const auto serves = coverSets(services, toleranceDeg, true);
-  const auto sees = coverSets(services, toleranceDeg, false);
-  ProbeSelection selection;
-  std::vector<char> covered(samples.size(), 0);
-  greedyCover(services, samples, serves, covered, selection.chosen, maxProbes);
-  // Floor no candidate serves within the tolerance: the candidates that see most of it.
-  std::fill(covered.begin(), covered.end(), 0);
-  for (std::size_t c : selection.chosen)
-    for (std::uint32_t s : sees[c]) covered[s] = 1;
-  greedyCover(services, samples, sees, covered, selection.chosen, maxProbes);
-  if (maxProbes == 0) dropRedundant(serves, sees, selection.chosen, samples.size());
-  selection.owner = owners(services, samples, selection.chosen, toleranceDeg);
-  return selection;
+                            std::span<const CaptureSight> sights,
+                            std::span<const std::size_t> captureCells,
+                            std::span<const FloorSample> samples, const WalkableFloor& floor,
+                            const SelectionOptions& o) {
+  const FloorColumns columns(floor);
+  const CellSets sets = cellSets(services, sights, samples, floor.cells.size());
+  Cover cover{columns, services, captureCells, o, std::vector<char>(floor.cells.size(), 0), {}};
+  const auto area = [&](std::size_t cell) { return floor.cells[cell].areaSquareMeters; };
+  const double minGain = std::max(o.minGainSquareMeters, o.minGainShare * floor.areaSquareMeters());
+  // Served floor first; floor nobody serves goes to those who see it, worth a quarter as much.
+  cover.greedy(
+      [&](std::size_t c, std::size_t cell) {
+        return sets.served[c][cell] || (!sets.servable[cell] && sets.seen[c][cell]);
+      },
+      [&](std::size_t c, std::size_t cell) {
+        return sets.served[c][cell] ? area(cell) : sets.seen[c][cell] ? 0.25 * area(cell) : 0.0;
+      },
+      minGain);
+  // What is left outside every range and band: the candidates that see it.
+  cover.greedy(
+      [&](std::size_t c, std::size_t cell) { return sets.seen[c][cell] != 0; },
+      [&](std::size_t c, std::size_t cell) { return sets.seen[c][cell] ? area(cell) : 0.0; },
+      minGain);
+  dropAbsorbed(columns, sets, o.acceptedShare, cover.selection);
+  coverLeftovers(floor, o.gapCells, cover.selection.ranges);
+  return cover.selection;
 }
 
 }  // namespace probeproxy

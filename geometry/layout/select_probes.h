@@ -1,13 +1,20 @@
 #pragma once
-// Which candidates become probes (README "Layout"): the fewest that serve every floor sample
-// within the tolerance some candidate can serve it in, by greedy cover of floor area (each
-// step takes the candidate that serves the most floor not yet served; ties to the lower
-// index). Floor no candidate serves within the tolerance still gets the candidates that see
-// it most, the same way, so every sample some candidate sees is seen by a probe. A refining
-// pass then drops every probe whose floor the others serve and see as well. With `maxProbes`,
-// the cover stops at that many. Deterministic.
+// Which candidates become probes, and the floor each one's inner range holds (README "Layout").
+// Lagarde's blend gives a box's probe 100% inside its inner range, so the selection picks
+// candidates together with their ranges: rectangles of floor (floor_rectangles.h) grown from
+// each capture point over the floor its proxy serves within the tolerance, no two within the
+// blend band of each other. Greedy by area: each step takes the candidate whose rectangle holds
+// the most floor it serves (ties to the lower index), until none gains `minGainSquareMeters`.
+// Floor no candidate serves goes to the candidates that see it, in the same rectangles. Then
+// the floor left outside every range and band goes, the same way, to the candidates that see
+// it; crumbs smaller than the gain a probe must bring stretch the nearest range until its band
+// holds them. With `maxProbes`, the cover stops at that many. Deterministic whatever the
+// thread count.
 
+#include "geometry/floor/walkable_floor.h"
 #include "geometry/layout/candidate_service.h"
+#include "geometry/layout/capture_sight.h"
+#include "geometry/layout/floor_rectangles.h"
 
 #include <cstddef>
 #include <span>
@@ -15,16 +22,28 @@
 
 namespace probeproxy {
 
-struct ProbeSelection {
-  std::vector<std::size_t> chosen;  // candidate indices, in the order they were taken
-  // Per floor sample, the index into `chosen` of the probe whose region it is: whole floor
-  // cells, each to the probe that serves most of its samples within the tolerance, then sees
-  // most, then stands nearest.
-  std::vector<std::size_t> owner;
+struct SelectionOptions {
+  std::size_t maxProbes = 0;  // 0: no limit
+  int gapCells = 2;           // floor cells between two inner ranges (the blend band)
+  // A probe must bring at least the larger of these: a probe for a crumb of floor costs a
+  // cubemap and a blend band, and its band disturbs the neighbours that already shade it.
+  double minGainSquareMeters = 1.0;
+  double minGainShare = 0.005;  // of the walkable floor's area
+  // A rectangle grows by a strip of which at least this share is floor its probe may shade.
+  double acceptedShare = 0.9;
 };
 
+struct ProbeSelection {
+  std::vector<std::size_t> chosen;  // candidate indices, in the order they were taken
+  std::vector<FloorRect> ranges;    // chosen[i]'s inner range
+};
+
+// `sights[services[c].capture]` is what candidate c sees; `captureCells[services[c].capture]`
+// the floor cell under its capture point.
 ProbeSelection selectProbes(std::span<const CandidateService> services,
-                            std::span<const FloorSample> samples, double toleranceDeg,
-                            std::size_t maxProbes);
+                            std::span<const CaptureSight> sights,
+                            std::span<const std::size_t> captureCells,
+                            std::span<const FloorSample> samples, const WalkableFloor& floor,
+                            const SelectionOptions& options);
 
 }  // namespace probeproxy

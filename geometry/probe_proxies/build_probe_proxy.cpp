@@ -1,15 +1,15 @@
 #include "geometry/probe_proxies/build_probe_proxy.h"
 
 #include "core/errors/invariant_checks.h"
+#include "geometry/evaluation/evaluate_shape.h"
+#include "geometry/fit/fit_error.h"
+#include "geometry/fit/polytope_from_planes.h"
 #include "geometry/probe_proxies/fit_candidates.h"
 #include "geometry/probe_proxies/ieee_float_mode.h"
 #include "geometry/probe_proxies/probe_samples.h"
 #include "geometry/probe_proxies/probe_view.h"
 #include "geometry/probe_proxies/simplify_hull.h"
 #include "geometry/probe_proxies/stopwatch.h"
-#include "geometry/evaluation/evaluate_shape.h"
-#include "geometry/fit/fit_error.h"
-#include "geometry/fit/polytope_from_planes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -80,7 +80,7 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
   const ProbeSamples samples = drawProbeSamples(level, probe, o);
   build.samplingMs = stage.lap();
 
-  FittedCandidates fitted = fitCandidates(view, samples.fit, authored);
+  FittedCandidates fitted = fitCandidates(view, samples.fit, authored, o.uprightObb);
   build.hullMs = fitted.hullMs;
   build.fitMs = fitted.fitMs;
   for (std::string& f : fitted.findings) build.findings.push_back(std::move(f));

@@ -1,18 +1,19 @@
 #include "geometry/probe_proxies/fit_candidates.h"
 
-#include "geometry/probe_proxies/stopwatch.h"
 #include "geometry/fit/bounding_sphere_fit.h"
 #include "geometry/fit/convex_hull_proxy.h"
 #include "geometry/fit/fit_error.h"
 #include "geometry/fit/oriented_box_fit.h"
 #include "geometry/fit/polytope_from_planes.h"
+#include "geometry/probe_proxies/room_box.h"
+#include "geometry/probe_proxies/stopwatch.h"
 #include "geometry/tune/one_dimensional_fits.h"
 #include "geometry/tune/snap_box_to_walls.h"
 
 namespace probeproxy {
 
 FittedCandidates fitCandidates(const ProbeView& view, std::span<const ReflectionSample> fitSamples,
-                               const std::optional<ProxyShape>& authored) {
+                               const std::optional<ProxyShape>& authored, bool uprightObb) {
   FittedCandidates f;
   const glm::dvec3 capture = view.captureMeters;
   const auto add = [&](CandidateOrigin origin, ProxyShape shape, double buildMs) {
@@ -53,9 +54,11 @@ FittedCandidates fitCandidates(const ProbeView& view, std::span<const Reflection
     add(CandidateOrigin::MinSphere, minimumEnclosingSphere(corners), each.lap());
     add(CandidateOrigin::Aabb,
         snapBoxToWalls(axisAlignedBoxFit(corners), view.wallPlanes, snapMeters), each.lap());
-    add(CandidateOrigin::Obb, snapBoxToWalls(orientedBoxFit(corners), view.wallPlanes, snapMeters),
-        each.lap());
+    const BoxShape obb = uprightObb ? uprightBoxFit(corners) : orientedBoxFit(corners);
+    add(CandidateOrigin::Obb, snapBoxToWalls(obb, view.wallPlanes, snapMeters), each.lap());
   }
+  if (const std::optional<BoxShape> room = roomBox(capture, view.axisWallsMeters, corners))
+    add(CandidateOrigin::RoomBox, *room, each.lap());
   f.fitMs = fitTime.ms();
   if (f.hull) add(CandidateOrigin::Hull, *f.hull, f.hullMs);
   return f;

@@ -1,12 +1,12 @@
 #pragma once
 // Stage 3 of the proxy build: one candidate of every kind fitted to what the probe sees, in a
 // fixed order: `authored` (when the scene authors one), infinite, cheap_k, sphere (around the
-// capture point), min_sphere (smallest enclosing), aabb, obb, hull. The boxes' faces move onto
-// the walls they nearly match (geometry/tune/snap_box_to_walls.h).
+// capture point), min_sphere (smallest enclosing), aabb, obb, room_box (room_box.h), hull. The
+// boxes' faces move onto the walls they nearly match (geometry/tune/snap_box_to_walls.h).
 
 #include "core/proxy/proxy_candidate.h"
-#include "geometry/probe_proxies/probe_view.h"
 #include "geometry/evaluation/reflection_sample.h"
+#include "geometry/probe_proxies/probe_view.h"
 
 #include <optional>
 #include <span>
@@ -22,7 +22,9 @@ struct FittedCandidates {
   std::vector<std::string> findings;  // why there is no hull, when there is none
 };
 
+// `uprightObb`: the obb candidate stands upright (oriented_box_fit.h's uprightBoxFit) instead
+// of CGAL's optimized box, for builds that fit thousands of coarse proxies.
 FittedCandidates fitCandidates(const ProbeView& view, std::span<const ReflectionSample> fitSamples,
-                               const std::optional<ProxyShape>& authored);
+                               const std::optional<ProxyShape>& authored, bool uprightObb = false);
 
 }  // namespace probeproxy

@@ -1,6 +1,7 @@
 #include "geometry/probe_proxies/probe_view.h"
 
 #include "core/cube/depth_cube.h"
+#include "geometry/probe_proxies/room_box.h"
 #include "geometry/raycast/capture_depth_cube.h"
 #include "geometry/tune/visible_surface_planes.h"
 
@@ -51,6 +52,7 @@ ProbeView seeLevel(const LevelRayCaster& level, glm::dvec3 capture, int faceSize
   view.toleranceMeters = 1e-4 * std::max(view.farthestMeters, 1e-3) + 1e-4;
   // The planes of the walls the probe sees, exact where the hull's facets tilt by a texel.
   view.wallPlanes = visibleSurfacePlanes(view.hits, capture, faceSize, 10 * view.toleranceMeters);
+  view.axisWallsMeters = axisWallDistances(level, capture);
   return view;
 }
 

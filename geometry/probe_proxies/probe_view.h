@@ -8,6 +8,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <array>
 #include <vector>
 
 namespace probeproxy {
@@ -18,9 +19,10 @@ struct ProbeView {
   std::vector<glm::dvec3> pointsMeters;  // the texels that hit the level
   double nearestMeters = 1.0;            // from the capture point; 1 when nothing is seen
   double farthestMeters = 1.0;
-  double skyShare = 0.0;               // texels that hit nothing
-  double toleranceMeters = 1e-4;       // hull tolerance: 1e-4 x farthest + 0.1 mm
-  std::vector<ProxyPlane> wallPlanes;  // large planar surfaces seen (visibleSurfacePlanes)
+  double skyShare = 0.0;                    // texels that hit nothing
+  double toleranceMeters = 1e-4;            // hull tolerance: 1e-4 x farthest + 0.1 mm
+  std::vector<ProxyPlane> wallPlanes;       // large planar surfaces seen (visibleSurfacePlanes)
+  std::array<double, 6> axisWallsMeters{};  // room_box.h: walls along -x, +x, -y, +y, -z, +z
 };
 
 ProbeView seeLevel(const LevelRayCaster& level, glm::dvec3 captureMeters, int faceSize);

@@ -13,6 +13,7 @@ struct ProxyBuildOptions {
   double maxMissRate = 0.001;  // a kept proxy may miss at most this share of visible samples
   int depthFaceSize = 128;     // depth cube the candidates are fitted to
   bool regenerate = false;     // build a proxy even where the scene file has an authored one
+  bool uprightObb = false;     // the obb candidate stands upright, no optimizer (layout)
   ReflectionSampleOptions samples;
 
   // Throws InputError naming the first option outside its range (core/errors/option_checks.h):

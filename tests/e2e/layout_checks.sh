@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # layout_checks.sh PROBEPROXY SUITE_DIR WORK
 # `layout` on suite levels whose answer is known (issue 12): the corridor (one box room) keeps one
-# probe; the L-room (two convex arms) gets two, whose survey p95 is under the build tolerance
-# with every floor sample covered; the output is the same bytes on 1 and 2 threads, and the
+# probe; the L-room (two convex arms) gets two or three (its corner square sees into both arms,
+# so neither arm's box serves it), whose survey p95 is under the build tolerance with every
+# floor sample covered; the output is the same bytes on 1 and 2 threads, and the
 # layout's scene builds again to the proxies it exported.
 set -eu
 probeproxy=$1 suite=$2 work=$3
@@ -17,14 +18,17 @@ for threads in 1 2; do
   "$probeproxy" layout "$suite/l_room/l_room.scene.json" --out "$work/l_room_$threads" \
     --threads $threads --json >/dev/null
 done
-[ "$(figure "$work/l_room_1/layout.json" "['probes']")" = 2 ] || fail "l_room: not two probes"
+l_probes=$(figure "$work/l_room_1/layout.json" "['probes']")
+[ "$l_probes" -ge 2 ] && [ "$l_probes" -le 3 ] || fail "l_room: $l_probes probes, not two or three"
 python3 - "$work/l_room_1/layout.json" <<'PY' || fail "l_room: survey figures"
 import json, sys
 s = json.load(open(sys.argv[1]))["survey"]
 assert s["p95_deg"] <= 0.25, s
 assert s["uncovered_share"] == 0.0, s
 PY
-for f in layout.scene.json proxies.json proxies.glb probe_001.ply probe_002.ply layout_survey.png; do
+[ "$(ls "$work/l_room_1")" = "$(ls "$work/l_room_2")" ] || fail "l_room: other files on 2 threads"
+for f in $(ls "$work/l_room_1"); do
+  [ "$f" = layout.json ] && continue  # holds the run's seconds
   cmp -s "$work/l_room_1/$f" "$work/l_room_2/$f" || fail "l_room: $f differs between 1 and 2 threads"
 done
 

@@ -3,6 +3,7 @@
 
 #include "geometry/probe_proxies/build_probe_proxy.h"
 #include "geometry/builtin/box_room.h"
+#include "geometry/probe_proxies/room_box.h"
 #include "geometry/tune/snap_box_to_walls.h"
 #include "geometry/validate/proxy_mesh_checks.h"
 #include "tests/unit/room_probe.h"
@@ -117,6 +118,20 @@ TEST(BuildProbeProxy, LRoomBeatsItsBoundingBoxByHalf) {
   EXPECT_LE(kept(b).error.p95Deg, 0.05 * artist.p95Deg);
   EXPECT_LE(kept(b).error.medianDeg, artist.medianDeg + 0.005);
   EXPECT_LT(planeCount(kept(b).shape), 32);
+}
+
+TEST(RoomBox, ProbeInAnLArmGetsItsArmNotTheHullAcrossTheCorner) {
+  const LevelRayCaster level(lRoom());
+  const glm::dvec3 capture(6.5, 1.5, 1.6);
+  const std::array<double, 6> walls = axisWallDistances(level, capture);
+  EXPECT_NEAR(walls[0], 6.5, 1e-4);  // -x: the far end of the arm, past the corner
+  EXPECT_NEAR(walls[1], 1.5, 1e-4);
+  EXPECT_NEAR(walls[2], 1.5, 1e-4);
+  EXPECT_NEAR(walls[3], 1.5, 1e-4);  // +y: the arm's inner wall, which no hull facet holds
+  const std::optional<BoxShape> box = roomBox(capture, walls, {});
+  ASSERT_TRUE(box.has_value());
+  EXPECT_LE(glm::length(box->centerMeters - glm::dvec3(4, 1.5, 1.5)), 1e-4);
+  EXPECT_LE(glm::length(box->halfExtentsMeters - glm::dvec3(4, 1.5, 1.5)), 1e-4);
 }
 
 TEST(BuildProbeProxy, AuthoredProxyIsKeptAndMeasured) {

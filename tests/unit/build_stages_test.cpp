@@ -1,14 +1,14 @@
-// Each stage of the proxy build (geometry/probe_proxies/build_probe_proxy.h) on its own, in a box room
-// where every answer is exact.
+// Each stage of the proxy build (geometry/probe_proxies/build_probe_proxy.h) on its own, in a box
+// room where every answer is exact.
 
 #include "core/errors/invariant_checks.h"
+#include "geometry/builtin/box_room.h"
 #include "geometry/probe_proxies/build_probe_proxy.h"
 #include "geometry/probe_proxies/fit_candidates.h"
 #include "geometry/probe_proxies/probe_samples.h"
 #include "geometry/probe_proxies/probe_view.h"
 #include "geometry/probe_proxies/select_proxy.h"
 #include "geometry/probe_proxies/simplify_hull.h"
-#include "geometry/builtin/box_room.h"
 #include "tests/unit/room_probe.h"
 
 #include <gtest/gtest.h>
@@ -81,7 +81,7 @@ TEST(BuildStages, FitCandidatesComeInTheirFixedOrderAndTheBoxIsTheRoom) {
   std::vector<std::string> kinds;
   for (const ProxyCandidate& c : f.candidates) kinds.push_back(candidateName(c));
   EXPECT_EQ(kinds, (std::vector<std::string>{"authored", "infinite", "cheap_k", "sphere",
-                                             "min_sphere", "aabb", "obb", "hull"}));
+                                             "min_sphere", "aabb", "obb", "room_box", "hull"}));
   ASSERT_TRUE(f.hull.has_value());
   EXPECT_TRUE(f.findings.empty());
   const BoxShape& box = std::get<BoxShape>(f.candidates[5].shape);

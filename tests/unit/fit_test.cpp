@@ -649,6 +649,22 @@ TEST(OrientedBoxFit, BoxTurned30DegreesAboutZIsRecovered) {
   expectBoxContains(box, points, 1e-9);
 }
 
+TEST(UprightBoxFit, BoxTurned30DegreesAboutZIsRecoveredAndATiltedOneStandsUp) {
+  const glm::dvec3 half(5.0, 3.0, 1.5);
+  const glm::dquat turn = glm::angleAxis(std::numbers::pi / 6, glm::dvec3(0, 0, 1));
+  const BoxShape want{{2.0, -1.0, 1.5}, half, turn};
+  const Points points = transformed(boxRoomPoints(-half, half, 12), turn, want.centerMeters);
+  const BoxShape box = uprightBoxFit(points);
+  expectSameCorners(box, want, 1e-6);
+  expectBoxContains(box, points, 1e-9);
+  // A box tilted off the vertical gets an upright box around it: +z stays a box axis.
+  const glm::dquat tilt = glm::angleAxis(0.3, glm::dvec3(1, 0, 0));
+  const BoxShape upright = uprightBoxFit(transformed(points, tilt, glm::dvec3(0)));
+  EXPECT_NEAR(std::abs(glm::dot(upright.worldFromBox * glm::dvec3(0, 0, 1), glm::dvec3(0, 0, 1))),
+              1.0, 1e-12);
+  expectBoxContains(upright, transformed(points, tilt, glm::dvec3(0)), 1e-9);
+}
+
 TEST(OrientedBoxFit, TiltedBoxIsRecoveredAndTheSameEveryTime) {
   const glm::dvec3 half(4.0, 2.5, 1.0);
   const glm::dquat turn = glm::normalize(glm::angleAxis(0.4, glm::normalize(glm::dvec3(1, 2, 3))));

@@ -81,7 +81,11 @@ Verb addLayoutVerb(CLI::App& app) {
       ->capture_default_str();
   verb->add_option("--spacing", l.spacingMeters, "the candidates' (and the grid's) spacing, m")
       ->capture_default_str();
-  verb->add_option("--reach", l.reachMeters, "a candidate serves floor within this distance, m")
+  verb->add_option("--max-candidates", l.maxCandidates,
+                   "at most this many capture points; the spacing coarsens to fit")
+      ->capture_default_str();
+  verb->add_option("--reach", l.reachMeters,
+                   "a candidate serves floor within this distance, m (0: all it sees)")
       ->capture_default_str();
   verb->add_option("--capture-height", l.captureHeightMeters,
                    "capture points this far above the floor (at most half the free height), m")

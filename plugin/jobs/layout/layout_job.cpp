@@ -3,11 +3,11 @@
 #include "core/errors/input_error.h"
 #include "core/io/atomic_write.h"
 #include "core/io/output_folder.h"
-#include "geometry/probe_proxies/build_probe_proxy.h"
-#include "geometry/probe_proxies/build_scene_proxies.h"
 #include "geometry/export/runtime_export.h"
 #include "geometry/layout/candidate_service.h"
 #include "geometry/level/write_level_mesh.h"
+#include "geometry/probe_proxies/build_probe_proxy.h"
+#include "geometry/probe_proxies/build_scene_proxies.h"
 #include "geometry/raycast/level_ray_caster.h"
 #include "geometry/scene/scene_file.h"
 #include "geometry/survey/run_survey.h"
@@ -15,8 +15,8 @@
 #include "plugin/jobs/survey/survey_report.h"
 #include "plugin/jobs/thread_limit.h"
 
-#include <nlohmann/json.hpp>
 #include <tbb/parallel_for.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -45,9 +45,12 @@ Scene readLevelOrScene(const fs::path& file) {
 
 const char* baselineName(LayoutBaseline baseline) {
   switch (baseline) {
-    case LayoutBaseline::Grid: return "grid";
-    case LayoutBaseline::Spawn: return "spawn";
-    case LayoutBaseline::None: break;
+    case LayoutBaseline::Grid:
+      return "grid";
+    case LayoutBaseline::Spawn:
+      return "spawn";
+    case LayoutBaseline::None:
+      break;
   }
   return "layout";
 }
@@ -74,14 +77,17 @@ Scene layoutScene(const Scene& input, const LayoutResult& layout, const fs::path
   return scene;
 }
 
-// A chosen probe's proxy, fitted as its candidate was (to the floor connected to it within
-// reach) and finer: the proxy the selection measured, so the export is what the survey saw.
-ProbeProxyBuild buildAsCandidate(const LevelRayCaster& level, const Probe& probe,
-                                 double fitMeters, const LayoutOptions& o) {
-  ProbeProxyBuild build = buildProbeProxy(level, candidateFitProbe(probe.captureMeters, fitMeters),
-                                          std::nullopt, o.finalProxy);
-  build.probe = probe.name;
-  return build;
+// A chosen probe's proxy, built as `build` builds it for its influence box: fitted to the
+// floor its inner range holds, which the selection found its candidate serves.
+// The proxy is chosen on the floor the probe alone lights, its inner range: in the blend band
+// a neighbour carries part of the weight, and floor there that this proxy's room does not
+// contain would count as misses against the proxy that fits the probe's own room best.
+ProbeProxyBuild buildForRegion(const LevelRayCaster& level, Probe probe, const LayoutOptions& o) {
+  if (auto* box = std::get_if<BoxInfluence>(&probe.influence))
+    box->halfExtentsMeters = box->innerHalfExtentsMeters;
+  else if (auto* sphere = std::get_if<SphereInfluence>(&probe.influence))
+    sphere->radiusMeters = sphere->innerRadiusMeters;
+  return buildProbeProxy(level, probe, std::nullopt, o.finalProxy);
 }
 
 // The scene file says which proxy each probe has, so `build` on layout.scene.json keeps the
@@ -126,7 +132,8 @@ nlohmann::ordered_json number(double v) {
 
 std::string layoutReportJson(const LayoutJobOptions& o, const LayoutJobResult& r) {
   nlohmann::ordered_json j;
-  j["baseline"] = o.layout.baseline == LayoutBaseline::None ? "none" : baselineName(o.layout.baseline);
+  j["baseline"] =
+      o.layout.baseline == LayoutBaseline::None ? "none" : baselineName(o.layout.baseline);
   j["probes"] = r.scene.probes.size();
   j["tolerance_deg"] = o.layout.toleranceDeg;
   j["spacing_m"] = number(r.layout.spacingMeters);
@@ -171,8 +178,7 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
     checkCapturePoints(r.scene, rayCaster);
     r.builds.resize(r.scene.probes.size());
     tbb::parallel_for(std::size_t{0}, r.builds.size(), [&](std::size_t i) {
-      r.builds[i] =
-          buildAsCandidate(rayCaster, r.scene.probes[i], r.layout.probes[i].fitMeters, o.layout);
+      r.builds[i] = buildForRegion(rayCaster, r.scene.probes[i], o.layout);
     });
     const fs::path folder = r.scene.file.parent_path();
     for (std::size_t i = 0; i < r.builds.size(); ++i) {
