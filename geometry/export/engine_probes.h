@@ -42,10 +42,22 @@ struct EngineSource {
   bool keptProxy = false;
 };
 
-// Unity ReflectionProbe with box projection (ScriptReference: ReflectionProbe.center "relative
-// to the position of the probe", ReflectionProbe.size "in world space", boxProjection). The
-// box is axis-aligned in Unity's world: Unity ignores the probe's rotation, so only an `aabb`
-// candidate is exported. The box is both the influence and the projection volume.
+// Each engine's entry below was checked against the engine's own shader and node code (or, for
+// Unity and Unreal, whose engine source is not public, the documented shader include and the
+// scripting reference); docs/engines.md has the same citations and the formulas the tests
+// apply (tests/e2e/engine_presets_test.cpp).
+
+// Unity ReflectionProbe with box projection. ScriptReference: ReflectionProbe.center "relative
+// to the position of the probe", ReflectionProbe.size "in world space" (full size),
+// boxProjection. The box projection itself, UnityStandardUtils.cginc
+// BoxProjectedCubemapDirection(worldRefl, worldPos, cubemapCenter, boxMin, boxMax): boxMin /
+// boxMax are world-space corners (no rotation anywhere) and the lookup is
+// worldPos - cubemapCenter + nrdir * t, cubemapCenter being the probe's position: the capture
+// point. So: world box = [position + center -+ size / 2], axis-aligned in Unity's world; only an
+// `aabb` candidate is exported. The box is both the influence and the projection volume.
+// blendDistance (ScriptReference: "Distance around probe used for blending (used in deferred
+// probes)", default 1) is not exported: Unity does not document on which side of the box it
+// fades.
 struct UnityReflectionProbe {
   EngineSource source;
   glm::dvec3 position{0.0};  // Transform.position: the capture point, metres
@@ -54,25 +66,30 @@ struct UnityReflectionProbe {
   bool boxProjection = true;
 };
 
-// Unreal BoxReflectionCapture (UBoxReflectionCaptureComponent): the capture box is a box of
-// extent 1 (InitBoxExtent(1, 1, 1)) under the actor's transform, so the actor scale is the
-// box's half-extents in cm; the cubemap is captured at location + CaptureOffset ("world space
-// offset to apply before capturing"); BoxTransitionDistance (cm, default 100) fades the
-// influence in, inside the box (UE docs "Reflection Captures": "fades in over the transition
-// distance as well, inside the box").
+// Unreal BoxReflectionCapture (UBoxReflectionCaptureComponent). Engine/Shaders/Private/
+// ReflectionEnvironmentShared.ush, GetLookupVectorForBoxCapture(): the ray goes into the box's
+// local space "where it is an AABB with mins at -1 and maxs at 1" (BoxTransform = inverse of the
+// component's transform with scale), so Scale 3D is the box's half-extent in cm; the lookup is
+// hit - (capture position + CaptureOffset), CaptureOffset being "World space offset to apply
+// before capturing" (UReflectionCaptureComponent::CaptureOffset): world axes, not the actor's.
+// The fade (BoxScales.w = BoxTransitionDistance, cm): "Shrink the box by the transition distance
+// so that the fade happens inside the box influence area": weight = 1 - smoothstep(0, 0.7 T,
+// distance to the box shrunk by T / 2), so full weight from T / 2 inside each face, about 0.21
+// on the face itself, 0 only 0.2 T outside it (docs "Reflection Environment": Box Transition
+// Distance fades inside the box).
 struct UnrealBoxReflectionCapture {
   EngineSource source;
   glm::dvec3 location{0.0};            // cm: the box centre
   glm::dquat rotation{1, 0, 0, 0};     // actor rotation, Unreal axes
   glm::dvec3 scale3D{1.0};             // = box half-extents, cm
   glm::dvec3 captureOffset{0.0};       // cm, Unreal world axes: capture point - location
-  double boxTransitionDistance = 0.0;  // cm: transitionDistanceMeters(influence), applied
-                                       // inside the box on every axis, as Unreal does
+  double boxTransitionDistance = 0.0;  // cm: transitionDistanceMeters(influence)
 };
 
 // Unreal SphereReflectionCapture: InfluenceRadius (cm) is both the area that receives the
-// reflection and the sphere it is reprojected onto (UE docs "Reflection Captures"), centred on
-// the actor; the capture point again via CaptureOffset. Only a true sphere (equal radii).
+// reflection and the sphere it is reprojected onto (UE docs "Reflection Environment"), centred on
+// the actor (GetLookupVectorForSphereCapture, ReflectionEnvironmentShared.ush); the capture
+// point again via CaptureOffset. Only a true sphere (equal radii).
 struct UnrealSphereReflectionCapture {
   EngineSource source;
   glm::dvec3 location{0.0};       // cm: the sphere centre
@@ -80,35 +97,48 @@ struct UnrealSphereReflectionCapture {
   glm::dvec3 captureOffset{0.0};  // cm, Unreal world axes
 };
 
-// Godot 4 ReflectionProbe with box_projection: `size` is the full size of a box centred on the
-// node (Godot 3's `extents` were half-sizes), `origin_offset` moves the capture point in the
-// node's own frame; the node's transform carries the rotation. Godot clamps each component of
-// origin_offset to size / 2 - 0.01 (ReflectionProbe::set_origin_offset), so a capture point
-// closer than 1 cm to a face, or outside the box, is moved: then `exact` is false.
+// Godot ReflectionProbe with box_projection. The shader (Godot 3: drivers/gles3/shaders/
+// scene.glsl; Godot 4: servers/rendering/renderer_rd/shaders/forward_clustered/
+// scene_forward_lights_inc.glsl; both reflection_process()): local_pos = local_matrix * vertex
+// (the node's inverse transform), inside where |local_pos| <= box_extents, hit = local_pos +
+// nrdir * t against +-box_extents, lookup = hit - box_offset. So the box is centred on the node,
+// box_extents are half-sizes (Godot 3 `extents`; Godot 4 `size` = 2 x extents) and origin_offset
+// is the capture point in the node's own frame. ReflectionProbe::set_origin_offset /
+// set_extents (scene/3d/reflection_probe.cpp) clamp each component to |offset| <= extents -
+// 0.01, so a capture point closer than 1 cm to a face, or outside the box, moves: then `exact`
+// is false. The node ignores scale (set_disable_scale(true)); its basis carries the rotation.
+// Blend: Godot 4.3+ `blend_distance` fades per axis over min(blend_distance, extent) inside the
+// box, weights multiplied then squared; Godot 3 has no blend distance (its weight is a fixed
+// curve of |local_pos / extents|): the Godot 3 importer keeps it as node metadata.
 struct GodotReflectionProbe {
   EngineSource source;
-  glm::dvec3 origin{0.0};           // node Transform3D origin: the box centre, metres
+  glm::dvec3 origin{0.0};           // node Transform origin: the box centre, metres
   glm::dquat rotation{1, 0, 0, 0};  // node basis, Godot axes
-  glm::dvec3 size{0.0};             // full size in the node's frame, metres
+  glm::dvec3 size{0.0};             // full size in the node's frame, metres (Godot 3: extents
+                                    // = size / 2)
   glm::dvec3 originOffset{0.0};     // capture point - origin, in the node's frame, metres
-  double blendDistance = 0.0;       // metres: transitionDistanceMeters(influence); Godot 4.3+
-                                    // fades the probe over it inside the box on every axis
+  double blendDistance = 0.0;       // metres: transitionDistanceMeters(influence)
   bool boxProjection = true;
   bool exact = true;
 };
 
 // Bevy light probe (LightProbe + EnvironmentMapLight): "conceptually a unit cube (1x1x1)
-// centered on the origin" under the entity's Transform, so scale = full size. Since Bevy 0.19
-// reflection probes are parallax-corrected by default against that same box
-// (ParallaxCorrection::Auto, release notes "Parallax Corrected Cubemaps");
-// ParallaxCorrection::Custom(half-extents) is also centred on the probe. Bevy projects from the
-// probe's centre (LightProbe.world_position): with the capture point elsewhere `exact` is false
-// and the cubemap should be re-captured at `translation`.
+// centered on the origin" under the entity's Transform (bevy_light, LightProbe), so scale =
+// full size. Reflection probes are parallax-corrected by default against that same cube
+// (ParallaxCorrection::Auto "equivalent to ParallaxCorrection::Custom(Vec3::splat(0.5))", half
+// extents in light-probe space; release notes "Parallax Corrected Cubemaps", Bevy PR 22582).
+// The lookup is made in the cube's own scaled, turned space from its centre (engine_bevy.cpp
+// cites compute_cubemap_sample_dir): it is the true direction only for a cube, not turned, with
+// the capture point at the centre: `exact` says so; `captureAtCentre` says whether the cubemap
+// can be used as captured or must be re-captured at `translation`.
 struct BevyLightProbe {
   EngineSource source;
   glm::dvec3 translation{0.0};      // the box centre, metres
   glm::dquat rotation{1, 0, 0, 0};  // Bevy axes
   glm::dvec3 scale{1.0};            // full size, metres
+  glm::dvec3 falloff{0.0};          // LightProbe::falloff, per axis in [0, 1]: fade = falloff *
+                                    // scale / 2 inside each face; transitionDistanceMeters
+  bool captureAtCentre = true;
   bool exact = true;
 };
 
@@ -131,7 +161,8 @@ UnrealSphereReflectionCapture unrealSphereReflectionCapture(const SphereShape& s
                                                             glm::dvec3 captureMeters);
 GodotReflectionProbe godotReflectionProbe(const BoxShape& box, glm::dvec3 captureMeters,
                                           const InfluenceVolume& influence);
-BevyLightProbe bevyLightProbe(const BoxShape& box, glm::dvec3 captureMeters);
+BevyLightProbe bevyLightProbe(const BoxShape& box, glm::dvec3 captureMeters,
+                              const InfluenceVolume& influence);
 
 // The one fade distance Unreal's BoxTransitionDistance and Godot's blend_distance take, from the
 // influence's fade (outer minus inner range, per axis for a box), metres.

@@ -122,7 +122,7 @@ RuntimeEngines enginesFor(const ProbeProxyBuild& build, const Probe& probe) {
     engines.unrealBox->source = source;
     engines.godot = godotReflectionProbe(*box, probe.captureMeters, probe.influence);
     engines.godot->source = source;
-    engines.bevy = bevyLightProbe(*box, probe.captureMeters);
+    engines.bevy = bevyLightProbe(*box, probe.captureMeters, probe.influence);
     engines.bevy->source = source;
   }
   if (const auto i = bestCandidate(cs, isTrueSphere)) {

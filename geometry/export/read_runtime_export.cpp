@@ -286,7 +286,9 @@ RuntimeEngines engines(const At& at) {
     p.translation = vec3(b.member("translation"));
     p.rotation = quaternionXyzw(b.member("rotation_xyzw"));
     p.scale = vec3(b.member("scale"));
+    p.falloff = vec3(b.member("falloff"));
     oneOf(b.member("parallax_correction"), {"auto"});
+    p.captureAtCentre = boolean(b.member("capture_at_centre"));
     p.exact = boolean(b.member("exact"));
     return p;
   });

@@ -70,8 +70,8 @@
 //                                             "capture_offset" },
 //       "godot_reflection_probe": { .., "origin", "rotation_xyzw", "size", "origin_offset",
 //                                   "blend_distance", "box_projection", "exact" },
-//       "bevy_light_probe": { .., "translation", "rotation_xyzw", "scale",
-//                             "parallax_correction": "auto", "exact" }
+//       "bevy_light_probe": { .., "translation", "rotation_xyzw", "scale", "falloff",
+//                             "parallax_correction": "auto", "capture_at_centre", "exact" }
 //     }
 //   } ]
 // }
@@ -80,7 +80,8 @@
 // Unity the best `aabb` candidate (lowest p95), the other box engines the best `aabb` or `obb`;
 // Unreal's sphere capture the best `sphere` candidate with equal radii.
 // box_transition_distance (cm) and blend_distance (m): transitionDistanceMeters (engine_probes.h),
-// the smallest fade of the influence over the axes that fade. Numbers in the
+// the smallest fade of the influence over the axes that fade; Bevy's falloff is that distance
+// over each half-size (clamped to [0, 1]). Numbers in the
 // file read back to the same world values (shortest round-trip decimals; a file-unit value is
 // rounded to 1e-9 only where that reads back to the same metres); engine numbers are rounded
 // to 1e-9 of the engine's unit. Same input, same bytes.

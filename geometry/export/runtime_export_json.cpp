@@ -206,7 +206,10 @@ JsonLayoutValue enginesJson(const RuntimeEngines& e) {
                                          return {{"translation", engineVec3(p.translation)},
                                                  {"rotation_xyzw", engineQuat(p.rotation)},
                                                  {"scale", engineVec3(p.scale)},
+                                                 {"falloff", engineVec3(p.falloff)},
                                                  {"parallax_correction", jsonString("auto")},
+                                                 {"capture_at_centre",
+                                                  boolJson(p.captureAtCentre)},
                                                  {"exact", boolJson(p.exact)}};
                                        })}},
       /*oneItemPerLine=*/true);

@@ -263,6 +263,8 @@ void expectEnginesClose(const RuntimeEngines& a, const RuntimeEngines& b) {
     expectClose(a.bevy->translation, b.bevy->translation, kEngine);
     expectClose(a.bevy->rotation, b.bevy->rotation, kEngine);
     expectClose(a.bevy->scale, b.bevy->scale, kEngine);
+    expectClose(a.bevy->falloff, b.bevy->falloff, kEngine);
+    EXPECT_EQ(a.bevy->captureAtCentre, b.bevy->captureAtCentre);
     EXPECT_EQ(a.bevy->exact, b.bevy->exact);
   }
 }
@@ -549,11 +551,26 @@ TEST_F(RuntimeExport, GodotBoxIsYUpFullSizeWithALocalOriginOffset) {
 }
 
 TEST_F(RuntimeExport, BevyScalesAUnitCubeAndNeedsTheCaptureAtItsCentre) {
-  const BevyLightProbe b = bevyLightProbe(kRoomBox, kCapture);
+  const InfluenceVolume fade{
+      BoxInfluence{{0, 0, 1.5}, {3.0, 2.0, 1.5}, quat(1, 0, 0, 0), {2.5, 2.0, 1.5}}};  // 0.5 m
+  const BevyLightProbe b = bevyLightProbe(kRoomBox, kCapture, fade);
   expectClose(b.translation, {0.0, 1.5, 0.0}, 0.0);
   expectClose(b.scale, {6.0, 3.0, 4.0}, 0.0);
+  // falloff * scale / 2 = 0.5 m on every axis.
+  expectClose(b.falloff, {0.5 / 3.0, 0.5 / 1.5, 0.5 / 2.0}, 1e-15);
+  EXPECT_FALSE(b.captureAtCentre);
   EXPECT_FALSE(b.exact);
-  EXPECT_TRUE(bevyLightProbe(kRoomBox, kRoomBox.centerMeters).exact);
+  // At the centre, but a 6 x 3 x 4 box: Bevy looks up in the scaled cube, not exact.
+  const BevyLightProbe centred = bevyLightProbe(kRoomBox, kRoomBox.centerMeters, fade);
+  EXPECT_TRUE(centred.captureAtCentre);
+  EXPECT_FALSE(centred.exact);
+  // A cube, not turned, captured at its centre: exact.
+  const BoxShape cube{{1.0, 2.0, 3.0}, {2.0, 2.0, 2.0}, quat(1, 0, 0, 0)};
+  EXPECT_TRUE(bevyLightProbe(cube, cube.centerMeters, fade).exact);
+  // The same cube turned 30 degrees about Z: the lookup is in the turned axes, not exact.
+  const BoxShape turned{cube.centerMeters, cube.halfExtentsMeters,
+                        glm::angleAxis(glm::radians(30.0), glm::dvec3(0, 0, 1))};
+  EXPECT_FALSE(bevyLightProbe(turned, turned.centerMeters, fade).exact);
 }
 
 // Issue 18: the transition distance is the smallest fade over the axes that fade; the old

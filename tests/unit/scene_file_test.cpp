@@ -32,11 +32,11 @@ std::string fileBytes(const fs::path& file) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-// The example under "### Scene file" in README.md: the documented canonical form.
+// The example under "### Scene file" in docs/cli_and_formats.md: the documented canonical form.
 std::string readmeSceneExample() {
   // This file is tests/unit/scene_file_test.cpp; CMake compiles it by its absolute path.
   const fs::path sourceRoot = fs::path(__FILE__).parent_path().parent_path().parent_path();
-  const std::string readme = fileBytes(sourceRoot / "README.md");
+  const std::string readme = fileBytes(sourceRoot / "docs" / "cli_and_formats.md");
   const std::size_t section = readme.find("### Scene file");
   const std::string fence = "```json\n";
   const std::size_t start = readme.find(fence, section);
@@ -98,7 +98,7 @@ std::string sceneJson(const std::string& probes, const std::string& head = kHead
 
 TEST_F(SceneFileTest, ReadmeExampleRoundTripsByteExactly) {
   const std::string example = readmeSceneExample();
-  ASSERT_FALSE(example.empty()) << "README.md has no ```json block under ### Scene file";
+  ASSERT_FALSE(example.empty()) << "docs/cli_and_formats.md has no ```json block under ### Scene file";
   const fs::path file = write("level.scene.json", example);
 
   const Scene scene = readSceneFile(file);

@@ -28,7 +28,8 @@ int runCorrect(const CorrectVerbOptions& o) {
   job.proxiesJson = o.proxies;
   const jobs::CorrectJobResult r = jobs::runCorrectJob(job);
   for (std::size_t i = 0; i < r.written.size(); ++i)
-    std::cout << "wrote " << r.written[i] << " (" << r.faceSizes[i] << " px)\n";
+    std::cout << "wrote " << r.written[i] << " (" << r.faceSizes[i] << " px), miss mask "
+              << r.missMasks[i] << "\n";
   const glm::dvec3 reflected = r.reflectedCameraMeters;
   std::cout << o.method << ": reflected camera (" << reflected.x << ", " << reflected.y << ", "
             << reflected.z << ") " << (r.reflectedCameraInsideProxy ? "inside" : "outside")

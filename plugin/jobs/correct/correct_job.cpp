@@ -1,6 +1,8 @@
 #include "plugin/jobs/correct/correct_job.h"
 
+#include "core/cube/cube_face.h"
 #include "core/cube/cubemap_io.h"
+#include "core/measures/error_images.h"
 #include "core/errors/input_error.h"
 #include "core/io/output_folder.h"
 #include "core/mixing/reflected_camera.h"
@@ -40,6 +42,19 @@ CorrectJobResult runCorrectJob(const CorrectJobOptions& o) {
     writeCubemap(corrected.cube, pattern, level);
     result.written.push_back(pattern);
     result.faceSizes.push_back(corrected.cube.faceSize(level));
+    // The miss mask, face by face, as `bench` draws it (writeMissMaskPng): red where the
+    // texel's ray leaves no proxy face.
+    std::filesystem::path maskPattern(pattern);
+    maskPattern.replace_extension();
+    const std::string maskNames = maskPattern.string() + "_miss.png";
+    const int size = corrected.cube.faceSize(level);
+    const std::vector<std::uint8_t> everyTexel(static_cast<std::size_t>(size) * size, 1);
+    for (int face = 0; face < kCubeFaceCount; ++face) {
+      std::string file = maskNames;
+      file.replace(file.find("{face}"), 6, cubeFaceName(static_cast<CubeFace>(face)));
+      writeMissMaskPng(file, size, size, everyTexel, corrected.missMask[level][face]);
+    }
+    result.missMasks.push_back(maskNames);
   }
   result.reflectedCameraMeters = c.reflectedCameraMeters;
   result.reflectedCameraInsideProxy =

@@ -28,6 +28,9 @@ struct CorrectJobOptions {
 struct CorrectJobResult {
   std::vector<std::string> written;  // one pattern per mip level written
   std::vector<int> faceSizes;        // px, per file pattern written
+  // Per level written, the miss masks' pattern ({face} kept): the output's name with
+  // `_miss.png` for its extension; missed texels pure red, the others white (as `bench`).
+  std::vector<std::string> missMasks;
   glm::dvec3 reflectedCameraMeters{0.0};
   bool reflectedCameraInsideProxy = false;
   std::size_t missedTexels = 0;  // over every level (drawn red)

@@ -1,0 +1,72 @@
+# probeproxy's Godot importer (Godot 3.2+, GDScript): reads a proxies.json written by
+# `probeproxy export` / `build --out` and makes one ReflectionProbe per probe that has a
+# `godot_reflection_probe` entry (docs/godot.md, docs/engines.md).
+#
+#   var root = preload("probeproxy_import.gd").import_probes("res://level/proxies.json")
+#
+# Each node: name = the probe's name; transform = the entry's origin and rotation (Godot axes,
+# metres); extents = size / 2 (Godot 3's extents are half sizes; Godot 4's `size` is the full
+# size); origin_offset = the capture point in the node's frame (Godot clamps it 1 cm inside the
+# box: `exact` false in proxies.json says where); box_projection on; interior on (probeproxy's
+# probes model rooms; pass interior = false for outdoor probes). Godot 3 has no blend distance:
+# the entry's blend_distance is kept as the metadata "probeproxy_blend_distance" (Godot 4.3+
+# sets ReflectionProbe.blend_distance). Also kept as metadata: "probeproxy_exact" and
+# "probeproxy_candidate".
+extends Reference
+
+const FORMAT_ID = "probeproxy_runtime"
+
+
+static func read_json(path):
+	var file = File.new()
+	if file.open(path, File.READ) != OK:
+		push_error("probeproxy: cannot open " + path)
+		return null
+	var parsed = JSON.parse(file.get_as_text())
+	file.close()
+	if parsed.error != OK:
+		push_error("probeproxy: %s:%d: %s" % [path, parsed.error_line, parsed.error_string])
+		return null
+	if typeof(parsed.result) != TYPE_DICTIONARY or not parsed.result.has(FORMAT_ID):
+		push_error("probeproxy: " + path + " is not a probeproxy runtime export")
+		return null
+	return parsed.result
+
+
+static func vec3(a):
+	return Vector3(a[0], a[1], a[2])
+
+
+# One ReflectionProbe from one `godot_reflection_probe` entry.
+static func make_probe(name, entry, interior = true):
+	var probe = ReflectionProbe.new()
+	probe.name = name
+	var q = entry["rotation_xyzw"]
+	probe.transform = Transform(Basis(Quat(q[0], q[1], q[2], q[3])), vec3(entry["origin"]))
+	# extents before origin_offset: set_origin_offset clamps against the current extents.
+	probe.extents = vec3(entry["size"]) / 2.0
+	probe.origin_offset = vec3(entry["origin_offset"])
+	probe.box_projection = entry["box_projection"]
+	probe.interior_enable = interior
+	probe.set_meta("probeproxy_blend_distance", entry["blend_distance"])
+	probe.set_meta("probeproxy_exact", entry["exact"])
+	probe.set_meta("probeproxy_candidate", entry["candidate"])
+	return probe
+
+
+# A Spatial named "probeproxy_probes" holding one ReflectionProbe per probe with a Godot entry,
+# in the file's order, each owned by the root (so PackedScene.pack keeps them). null on error.
+static func import_probes(path, interior = true):
+	var data = read_json(path)
+	if data == null:
+		return null
+	var root = Spatial.new()
+	root.name = "probeproxy_probes"
+	for p in data["probes"]:
+		var entry = p["engines"]["godot_reflection_probe"]
+		if entry == null:
+			continue
+		var probe = make_probe(p["name"], entry, interior)
+		root.add_child(probe)
+		probe.owner = root
+	return root
