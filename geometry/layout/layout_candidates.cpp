@@ -1,5 +1,6 @@
 #include "geometry/layout/layout_candidates.h"
 
+#include "geometry/layout/floor_rectangles.h"
 #include "geometry/probe_proxies/build_scene_proxies.h"
 
 #include <algorithm>
@@ -31,13 +32,31 @@ LayoutCandidates layoutCandidates(const LevelRayCaster& level, const WalkableFlo
     ++step;
   LayoutCandidates candidates;
   candidates.spacingMeters = step * floor.spacingMeters;
-  for (std::size_t i = 0; i < floor.cells.size(); ++i) {
-    const FloorCell& cell = floor.cells[i];
-    if (!onGrid(cell)) continue;
-    const glm::dvec3 capture = captureAbove(level, cell.pointMeters, captureHeightMeters);
+  const auto tryCell = [&](std::size_t i) {
+    const glm::dvec3 capture = captureAbove(level, floor.cells[i].pointMeters, captureHeightMeters);
     // A point in a wall's face or a thin prop would capture the level from behind it.
-    if (nearestSurface(level, capture).distanceMeters < kLayoutCaptureClearanceMeters) continue;
+    if (nearestSurface(level, capture).distanceMeters < kLayoutCaptureClearanceMeters) return;
     candidates.points.push_back({capture, i});
+  };
+  for (std::size_t i = 0; i < floor.cells.size(); ++i)
+    if (onGrid(floor.cells[i])) tryCell(i);
+  // Floor the grid passes by (a closet narrower than the spacing, a corridor between its
+  // columns) gets a point of its own: every cell has a candidate within a step on its storey.
+  const FloorColumns columns(floor);
+  std::vector<char> near(floor.cells.size(), 0);
+  const auto markAround = [&](const LayoutCandidate& c) {
+    const FloorCell& at = floor.cells[c.cell];
+    FloorRect window{at.column - step, at.column + step, at.row - step, at.row + step,
+                     at.pointMeters.z};
+    columns.forEachIn(window, [&](std::size_t cell) { near[cell] = 1; });
+  };
+  for (const LayoutCandidate& c : candidates.points) markAround(c);
+  for (std::size_t i = 0; i < floor.cells.size(); ++i) {
+    if (near[i]) continue;
+    const std::size_t before = candidates.points.size();
+    tryCell(i);
+    if (candidates.points.size() > before) markAround(candidates.points.back());
+    near[i] = 1;
   }
   return candidates;
 }

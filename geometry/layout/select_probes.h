@@ -28,7 +28,7 @@ struct SelectionOptions {
   // A probe must bring at least the larger of these: a probe for a crumb of floor costs a
   // cubemap and a blend band, and its band disturbs the neighbours that already shade it.
   double minGainSquareMeters = 1.0;
-  double minGainShare = 0.005;  // of the walkable floor's area
+  double minGainShare = 0.001;  // of the walkable floor's area
   // A rectangle grows by a strip of which at least this share is floor its probe may shade.
   double acceptedShare = 0.9;
 };

@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # layout_checks.sh PROBEPROXY SUITE_DIR WORK
-# `layout` on suite levels whose answer is known (issue 12): the corridor (one box room) keeps one
-# probe; the L-room (two convex arms) gets two or three (its corner square sees into both arms,
-# so neither arm's box serves it), whose survey p95 is under the build tolerance with every
-# floor sample covered; the output is the same bytes on 1 and 2 threads, and the
-# layout's scene builds again to the proxies it exported.
+# `layout` on suite levels whose answer is known (issue 12): the corridor (one box room) and
+# the closet (narrower than the candidates' grid) keep one probe each; the L-room (two convex
+# arms) gets two or three (its corner square sees into both arms, so neither arm's box serves
+# it), whose survey p95 is under the build tolerance with every floor sample covered; the output
+# is the same bytes on 1 and 2 threads, and the layout's scene builds again to the proxies it
+# exported.
 set -eu
 probeproxy=$1 suite=$2 work=$3
 rm -rf "$work" && mkdir -p "$work"
@@ -13,6 +14,12 @@ fail() { echo "FAIL: $*"; exit 1; }
 
 "$probeproxy" layout "$suite/corridor/corridor.scene.json" --out "$work/corridor" --json >/dev/null
 [ "$(figure "$work/corridor/layout.json" "['probes']")" = 1 ] || fail "corridor: not one probe"
+
+# A closet narrower than the candidates' grid still gets its probe, and its floor is covered.
+"$probeproxy" layout "$suite/tiny_closet/tiny_closet.scene.json" --out "$work/closet" --json >/dev/null
+[ "$(figure "$work/closet/layout.json" "['probes']")" = 1 ] || fail "tiny_closet: not one probe"
+[ "$(figure "$work/closet/layout.json" "['survey']['uncovered_share']")" = 0.0 ] ||
+  fail "tiny_closet: floor outside every influence"
 
 for threads in 1 2; do
   "$probeproxy" layout "$suite/l_room/l_room.scene.json" --out "$work/l_room_$threads" \
