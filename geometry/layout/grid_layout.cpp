@@ -1,7 +1,7 @@
 #include "geometry/layout/grid_layout.h"
 
-#include "geometry/probe_proxies/build_scene_proxies.h"
 #include "geometry/layout/layout_candidates.h"
+#include "geometry/probe_proxies/build_scene_proxies.h"
 #include "geometry/survey/storeys.h"
 
 #include <glm/geometric.hpp>
@@ -20,8 +20,7 @@ using Square = std::tuple<long, long, int>;  // row, column, storey
 
 // Ordered by square and storey, so the probes come out in the same order every run.
 std::map<Square, GridCellProbe> gridSquares(const WalkableFloor& floor,
-                                            const std::vector<int>& storeys,
-                                            double spacingMeters) {
+                                            const std::vector<int>& storeys, double spacingMeters) {
   // Ordered by square and storey, so the probes come out in the same order every run.
   std::map<Square, GridCellProbe> squares;
   for (std::size_t i = 0; i < floor.cells.size(); ++i) {
@@ -48,16 +47,17 @@ std::vector<GridCellProbe> placeCaptures(const LevelRayCaster& level, const Walk
       byDistance.push_back({glm::length(glm::dvec3(p.x, p.y, 0.0) - centre), c});
     }
     std::sort(byDistance.begin(), byDistance.end());
-    square.captureMeters =
-        captureAbove(level, floor.cells[byDistance.front().second].pointMeters, captureHeightMeters);
+    // Else the clearest of its cells; a square where every capture point touches a surface (a
+    // sliver of floor under a beam) gets no probe: a scene may not hold one there.
+    double clearest = -1.0;
     for (const auto& [distance, c] : byDistance) {
       const glm::dvec3 capture =
           captureAbove(level, floor.cells[c].pointMeters, captureHeightMeters);
-      if (nearestSurface(level, capture).distanceMeters >= kLayoutCaptureClearanceMeters) {
-        square.captureMeters = capture;
-        break;
-      }
+      const double clearance = nearestSurface(level, capture).distanceMeters;
+      if (clearance > clearest) clearest = clearance, square.captureMeters = capture;
+      if (clearance >= kLayoutCaptureClearanceMeters) break;
     }
+    if (clearest < kMinCaptureClearanceMeters) continue;
     probes.push_back(std::move(square));
   }
   return probes;
@@ -71,10 +71,9 @@ std::vector<GridCellProbe> gridLayout(const LevelRayCaster& level, const Walkabl
                        spacingMeters, captureHeightMeters);
 }
 
-std::vector<GridCellProbe> gridLayoutWithin(const LevelRayCaster& level,
-                                            const WalkableFloor& floor, double spacingMeters,
-                                            double captureHeightMeters, std::size_t maxProbes,
-                                            double& spacingTaken) {
+std::vector<GridCellProbe> gridLayoutWithin(const LevelRayCaster& level, const WalkableFloor& floor,
+                                            double spacingMeters, double captureHeightMeters,
+                                            std::size_t maxProbes, double& spacingTaken) {
   spacingTaken = spacingMeters;
   if (maxProbes == 0) return gridLayout(level, floor, spacingTaken, captureHeightMeters);
   // From the floor's own cell size up: the finest grid within the budget.
