@@ -25,6 +25,7 @@ packages=(
   pybind11-dev python3-dev                           # the Blender add-on's module
   libgtest-dev libbenchmark-dev valgrind             # tests, benchmarks, instruction counts
   blender python3-matplotlib                         # test levels, reference renders, charts
+  clang-14 libclang-rt-14-dev                        # the fuzz targets (libFuzzer, sanitizers)
   godot3-server                                      # the Godot round trip (Godot 3, headless)
   xvfb                                               # the add-on screenshot (scripts/addon_screenshot.py)
 )

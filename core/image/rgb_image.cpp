@@ -2,6 +2,7 @@
 
 #include "core/errors/input_error.h"
 #include "core/image/write_exr.h"
+#include "core/scene/scene_limits.h"
 
 #include <OpenImageIO/imageio.h>
 #include <OpenImageIO/strutil.h>
@@ -32,8 +33,18 @@ RgbImage readRgbImage(const std::filesystem::path& file, const std::string& what
     throw InputError(file, what + " has " + std::to_string(spec.nchannels) +
                                " channels, expected RGB (3 or more) or grey (1)");
   }
+  // The header's size, checked before the buffer it implies is taken: a few bytes of .hdr can
+  // claim a negative height (found by fuzz_cubemap_image) or a billion pixels.
+  if (spec.width < 1 || spec.height < 1) {
+    throw InputError(file, what + " claims " + std::to_string(spec.width) + " x " +
+                               std::to_string(spec.height) + " pixels");
+  }
   const int channels = spec.nchannels == 1 ? 1 : 3;
   const std::size_t count = static_cast<std::size_t>(spec.width) * spec.height;
+  if (const std::uint64_t decoded = std::uint64_t(count) * 3 * sizeof(float);
+      decoded > inputLimits().maxFileBytes) {
+    throw InputError(file, fileLimitProblem(what + " decoded", decoded));
+  }
   std::vector<float> read(count * channels);
   if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, read.data())) {
     throw InputError(file, "cannot read image: " + in->geterror());

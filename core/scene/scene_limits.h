@@ -1,9 +1,11 @@
 #pragma once
-// The numbers a scene may hold (README "Scene file", "Limits"). They are checked where the
-// scene and its level are read, so that nothing past the readers meets a number Embree, the
-// weight grids or an allocation cannot take.
+// The numbers a scene may hold (docs/cli_and_formats.md "Limits and readers"). They are
+// checked where the scene and its level are read, so that nothing past the readers meets a
+// number Embree, the weight grids or an allocation cannot take.
 
 #include <cstddef>
+#include <cstdint>
+#include <string>
 
 namespace probeproxy {
 
@@ -14,8 +16,27 @@ inline constexpr double kMaxSceneMeters = 1e5;
 inline constexpr double kMinMetersPerUnit = 1e-6;
 inline constexpr double kMaxMetersPerUnit = 1e6;
 
-// Triangles over the whole level. The largest Quake 3 maps hold about 10^5; at 5 * 10^7 the
-// level and its Embree scene already take several GiB.
-inline constexpr std::size_t kMaxLevelTriangles = 50'000'000;
+// The sizes a level may reach: checked before the memory they imply is taken, so that a
+// level too big for the machine, a lying header or an archive that inflates to gigabytes
+// stops with one line naming the limit instead of an out-of-memory kill. The CLI's
+// --max-triangles and --max-file-mb raise them. The defaults come from measured peaks
+// (docs/cli_and_formats.md): `build` holds about 150 bytes per level triangle at its peak
+// (0.81 GB at 5 million, 2.9 GB at 20 million), so 50 million stay near 7 GiB, where the
+// largest Quake 3 maps hold about 10^5; a 1 GiB binary PLY holds about 55 million.
+struct InputLimits {
+  std::size_t maxTriangles = 50'000'000;    // over the whole level, sky included
+  std::uint64_t maxFileBytes = 1ull << 30;  // one level file on disk, or one .pk3 entry inflated
+};
+
+// The limits every reader checks. Process-wide: front ends set them once, before reading.
+InputLimits inputLimits();
+void setInputLimits(const InputLimits& limits);
+
+// "the level holds 25000000 triangles, over the limit of 20000000 (raise it with
+// --max-triangles)": the error line of each limit.
+std::string triangleLimitProblem(std::uint64_t triangles);
+// `what` is e.g. "mesh file" or "\"maps/x.bsp\" inflated": "<what> is 3000 MiB, over the limit
+// of 1024 MiB (raise it with --max-file-mb)".
+std::string fileLimitProblem(const std::string& what, std::uint64_t bytes);
 
 }  // namespace probeproxy

@@ -7,6 +7,7 @@
 
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <assimp/BaseImporter.h>
 #include <assimp/DefaultLogger.hpp>
 #include <assimp/Importer.hpp>
 #include <assimp/LogStream.hpp>
@@ -37,7 +38,9 @@ void requireReadableMeshFile(const std::filesystem::path& file) {
   std::error_code ec;
   if (!std::filesystem::exists(file, ec)) throw InputError(file, "mesh file not found");
   if (!std::filesystem::is_regular_file(file, ec)) throw InputError(file, "not a regular file");
-  if (std::filesystem::file_size(file, ec) == 0) throw InputError(file, "mesh file is empty");
+  const std::uintmax_t bytes = std::filesystem::file_size(file, ec);
+  if (bytes == 0) throw InputError(file, "mesh file is empty");
+  if (bytes > inputLimits().maxFileBytes) throw InputError(file, fileLimitProblem("mesh file", bytes));
 }
 
 std::string describeVertex(const aiVector3D& v) {
@@ -136,16 +139,29 @@ class AssimpErrorLog : public Assimp::LogStream {
 
 std::mutex assimpMutex;
 
+// Assimp picks its importer by extension, but when that importer's signature check refuses
+// the file it tries every other importer on the content: a broken .gltf was then read as
+// OpenGEX, whose parser reads past its buffer (found by fuzz_level_gltf; Assimp 5.2.5). A
+// level file is read only as the format its extension names, or refused.
+void requireExtensionImporterAccepts(Assimp::Importer& importer, const std::filesystem::path& file) {
+  const std::string ext = lowerExtension(file).substr(1);
+  for (std::size_t i = 0; i < importer.GetImporterCount(); ++i) {
+    std::istringstream extensions(importer.GetImporterInfo(i)->mFileExtensions);
+    for (std::string e; extensions >> e;) {
+      if (e == ext && importer.GetImporter(i)->CanRead(file.string(), importer.GetIOHandler(), true))
+        return;
+    }
+  }
+  throw InputError(file, "malformed mesh: not a ." + ext + " file (its content does not start as one)");
+}
+
 }  // namespace
 
 // Every reader converts to float metres; a coordinate past the scene limit (or one that
 // overflowed float on the way) would reach Embree, so it stops here, whatever the format.
 void requireLevelWithinLimits(const std::filesystem::path& source, const LevelMesh& mesh) {
-  if (mesh.triangles.size() > kMaxLevelTriangles) {
-    throw InputError(source, "the level holds " + std::to_string(mesh.triangles.size()) +
-                                 " triangles, more than the limit of " +
-                                 std::to_string(kMaxLevelTriangles));
-  }
+  const std::size_t triangles = mesh.triangles.size() + mesh.skyTriangles.size();
+  if (triangles > inputLimits().maxTriangles) throw InputError(source, triangleLimitProblem(triangles));
   for (std::size_t i = 0; i < mesh.positionsMeters.size(); ++i) {
     const glm::vec3 p = mesh.positionsMeters[i];
     if (std::abs(p.x) <= kMaxSceneMeters && std::abs(p.y) <= kMaxSceneMeters &&
@@ -171,6 +187,7 @@ LevelMesh loadLevelMeshFile(const std::filesystem::path& file, UpAxis fileUp,
   const std::lock_guard<std::mutex> lock(assimpMutex);
   AssimpErrorLog errors;
   Assimp::Importer importer;
+  requireExtensionImporterAccepts(importer, file);
   // Polygons are triangulated; nothing is welded, fixed or removed, so what we measure is the
   // level as authored. Points and lines are skipped below: they carry no surface.
   const aiScene* scene = importer.ReadFile(file.string(), aiProcess_Triangulate);
@@ -215,6 +232,9 @@ LevelMesh loadLevel(const Scene& scene) {
   LevelMesh level;
   for (const LevelMeshRef& ref : scene.level) {
     appendLevelMesh(level, loadLevelMeshRef(ref, scene.metersPerUnit));
+    // Checked per mesh too, so that many meshes each within the limit cannot add up past it
+    // (or past the 32-bit indices) before the last one is read.
+    requireLevelWithinLimits(scene.file, level);
   }
   requireLevelWithinLimits(scene.file, level);
   return level;

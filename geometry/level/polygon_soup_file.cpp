@@ -1,6 +1,8 @@
 #include "geometry/level/polygon_soup_file.h"
 
 #include "core/errors/input_error.h"
+#include "core/scene/scene_limits.h"
+#include "geometry/level/ply_claims.h"
 
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Simple_cartesian.h>
@@ -64,6 +66,34 @@ std::string nonFiniteToken(const std::filesystem::path& file) {
   return {};
 }
 
+// CGAL's OFF reader sizes its ranges from the header's counts, and each face from its own
+// count, before it reads the data that would fill them: a 60-byte file claiming a face of
+// 2^31 corners took 17 GB. These ranges refuse, while CGAL reads, a size that the file or the
+// triangle limit cannot back: no more vertices or faces or corners than half the file's bytes
+// (each takes a digit and a separator at the least), no more faces than the triangle limit,
+// no more vertices than three a triangle.
+struct SizeClaim {
+  std::size_t size;
+  const char* what;
+};
+struct SoupCaps {
+  std::size_t points = 0, polygons = 0, corners = 0;
+};
+thread_local SoupCaps soupCaps;
+
+template <class T, std::size_t SoupCaps::*cap>
+struct CappedRange : std::vector<T> {
+  void resize(std::size_t size) {
+    if (size > soupCaps.*cap) {
+      throw SizeClaim{size, cap == &SoupCaps::points     ? "vertices"
+                            : cap == &SoupCaps::polygons ? "faces"
+                                                         : "corners in a face"};
+    }
+    std::vector<T>::resize(size);
+  }
+};
+using Polygon = CappedRange<std::size_t, &SoupCaps::corners>;
+
 }  // namespace
 
 bool isPolygonSoupFile(const std::filesystem::path& file) {
@@ -73,10 +103,30 @@ bool isPolygonSoupFile(const std::filesystem::path& file) {
 
 LevelMesh readPolygonSoupFile(const std::filesystem::path& file, UpAxis fileUp,
                               double metersPerUnit) {
-  std::vector<Point> points;
-  std::vector<std::vector<std::size_t>> faces;
-  if (!CGAL::IO::read_polygon_soup(file.string(), points, faces,
-                                   CGAL::parameters::verbose(false))) {
+  if (lowerExtension(file) == ".ply") {
+    const std::string claim = plyClaimProblem(file);
+    if (!claim.empty()) throw InputError(file, "malformed mesh: " + claim);
+  }
+  std::error_code ec;
+  const std::size_t halfTheBytes = std::filesystem::file_size(file, ec) / 2;
+  const std::size_t maxTriangles = inputLimits().maxTriangles;
+  soupCaps = {std::min(halfTheBytes, 3 * maxTriangles), std::min(halfTheBytes, maxTriangles),
+              std::min(halfTheBytes, maxTriangles + 2)};
+  CappedRange<Point, &SoupCaps::points> points;
+  CappedRange<Polygon, &SoupCaps::polygons> faces;
+  bool read = false;
+  try {
+    read = CGAL::IO::read_polygon_soup(file.string(), points, faces, CGAL::parameters::verbose(false));
+  } catch (const SizeClaim& claim) {
+    const std::string claimed = "the file claims " + std::to_string(claim.size) + " " + claim.what;
+    if (claim.size > halfTheBytes) {
+      throw InputError(file, "malformed mesh: " + claimed + ", more than its " +
+                                 std::to_string(std::filesystem::file_size(file, ec)) + " bytes can hold");
+    }
+    throw InputError(file, claimed + ", over the limit of " + std::to_string(maxTriangles) +
+                               " triangles (raise it with --max-triangles)");
+  }
+  if (!read) {
     const std::string face = lowerExtension(file) == ".off" ? offFaceProblem(file) : "";
     if (!face.empty()) throw InputError(file, "malformed mesh: " + face);
     const std::string nonFinite = nonFiniteToken(file);

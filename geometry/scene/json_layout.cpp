@@ -69,7 +69,7 @@ std::string flat(const JsonLayoutValue& value) {
   for (std::size_t i = 0; i < itemCount(value); ++i) {
     if (i > 0) text += ", ";
     text += value.kind == Kind::Object
-                ? keyPrefix(value.members[i].first) + flat(value.members[i].second)
+                ? keyPrefix(value.members[i].key) + flat(value.members[i].value)
                 : flat(value.elements[i]);
   }
   return text + closerOf(value);
@@ -98,8 +98,8 @@ class Layout {
       const std::size_t suffixWidth = last ? 0 : 1;
       text += spaces(itemIndent);
       if (isObject) {
-        const std::string prefix = keyPrefix(value.members[i].first);
-        text += prefix + render(value.members[i].second, itemIndent + prefix.size(), itemIndent,
+        const std::string prefix = keyPrefix(value.members[i].key);
+        text += prefix + render(value.members[i].value, itemIndent + prefix.size(), itemIndent,
                                 suffixWidth);
       } else {
         text += render(value.elements[i], itemIndent, itemIndent, suffixWidth);
@@ -125,8 +125,8 @@ class Layout {
     for (std::size_t i = 0; i < itemCount(value); ++i) {
       const bool last = i + 1 == itemCount(value);
       const std::size_t trailingWidth = last ? closer.size() + suffixWidth : 1;
-      const std::string prefix = isObject ? keyPrefix(value.members[i].first) : std::string();
-      const JsonLayoutValue& item = isObject ? value.members[i].second : value.elements[i];
+      const std::string prefix = isObject ? keyPrefix(value.members[i].key) : std::string();
+      const JsonLayoutValue& item = isObject ? value.members[i].value : value.elements[i];
       std::string itemText = prefix + flat(item);
 
       if (!firstOnLine && current + 1 + itemText.size() + trailingWidth > limit_) {
@@ -209,7 +209,7 @@ JsonLayoutValue jsonObject(std::vector<std::pair<std::string, JsonLayoutValue>> 
                            bool oneItemPerLine) {
   JsonLayoutValue value;
   value.kind = Kind::Object;
-  value.members = std::move(members);
+  for (auto& [key, member] : members) value.members.push_back({std::move(key), std::move(member)});
   value.oneItemPerLine = oneItemPerLine;
   return value;
 }

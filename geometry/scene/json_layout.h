@@ -19,13 +19,22 @@
 
 namespace probeproxy {
 
+struct JsonLayoutMember;
+
 struct JsonLayoutValue {
   enum class Kind { Scalar, Array, Object };
   Kind kind = Kind::Scalar;
   std::string scalarText;  // Kind::Scalar: the JSON token exactly as it is to be written
   std::vector<JsonLayoutValue> elements;                         // Kind::Array
-  std::vector<std::pair<std::string, JsonLayoutValue>> members;  // Kind::Object, in order
+  // Kind::Object, in order. A struct of its own rather than std::pair: a vector may hold a
+  // type not yet complete, a pair may not (clang's libstdc++ checks refuse it).
+  std::vector<JsonLayoutMember> members;
   bool oneItemPerLine = false;
+};
+
+struct JsonLayoutMember {
+  std::string key;
+  JsonLayoutValue value;
 };
 
 inline constexpr std::size_t kJsonColumnLimit = 100;  // the code's own .clang-format limit

@@ -135,8 +135,10 @@ INSTANTIATE_TEST_SUITE_P(
                 "end_header\n0 0 0\n1 0 0\n0 inf 0\n3 0 1 2\n",
                 "has a non-finite coordinate"},
         BadMesh{"out_of_range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n", "malformed mesh"},
+        // Read only as the format its extension names: no other importer tries its content.
         BadMesh{"garbage.obj", "this is not a mesh\n\x01\x02\x03 at all\n",
-                "mesh has no triangles"},
+                "malformed mesh: not a .obj file (its content does not start as one)"},
+        BadMesh{"opengex_text.gltf", "Metric {float {1.0}}\n", "malformed mesh: not a .gltf file"},
         BadMesh{"index_past_end.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n", "malformed mesh"},
         BadMesh{"lines_only.obj", "v 0 0 0\nv 1 0 0\nl 1 2\n", "mesh has no triangles"},
         BadMesh{"empty.glb", "", "mesh file is empty"},

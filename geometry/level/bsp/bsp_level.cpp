@@ -1,6 +1,7 @@
 #include "geometry/level/bsp/bsp_level.h"
 
 #include "core/errors/input_error.h"
+#include "core/scene/scene_limits.h"
 #include "geometry/level/bsp/bezier_patch.h"
 #include "geometry/level/bsp/bsp_lumps.h"
 #include "geometry/level/bsp/bsp_surface_flags.h"
@@ -210,6 +211,9 @@ void readFaces(const BspLumps& lumps, const BspLoadOptions& options, BspLevel& l
     facesByShader[std::size_t(f.shader)].push_back(i);
   }
 
+  // Faces may share their vertices and indices, so a small file can name far more triangles
+  // than it holds: count them as they are made and stop at the limit.
+  const std::size_t maxTriangles = inputLimits().maxTriangles;
   LevelMesh& mesh = level.mesh;
   for (std::size_t s = 0; s < shaders.size(); ++s) {
     const Shader& shader = shaders[s];
@@ -222,6 +226,10 @@ void readFaces(const BspLumps& lumps, const BspLoadOptions& options, BspLevel& l
     const auto first = std::uint32_t(into.size());
     for (const std::size_t i : facesByShader[s]) {
       reader.appendTriangles(faces[i], i, mesh.positionsMeters, into);
+      const std::size_t made = mesh.triangles.size() + mesh.skyTriangles.size();
+      if (made > maxTriangles || mesh.positionsMeters.size() > 3 * maxTriangles) {
+        lumps.fail(BspLump::Surfaces, "face " + std::to_string(i) + ": " + triangleLimitProblem(made));
+      }
       if (sky) {
         ++level.faces.sky;
       } else {
@@ -247,6 +255,7 @@ std::vector<std::byte> readWholeBinaryFile(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(file, "cannot open");
   const auto size = std::filesystem::file_size(file, ec);
+  if (size > inputLimits().maxFileBytes) throw InputError(file, fileLimitProblem("BSP file", size));
   std::vector<std::byte> bytes(size);
   in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size));
   if (!in) throw InputError(file, "cannot read");

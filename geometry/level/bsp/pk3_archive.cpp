@@ -1,6 +1,7 @@
 #include "geometry/level/bsp/pk3_archive.h"
 
 #include "core/errors/input_error.h"
+#include "core/scene/scene_limits.h"
 
 #include <zip.h>
 
@@ -49,6 +50,12 @@ std::vector<std::byte> readFileFromPk3(const std::filesystem::path& archive,
   if (zip_stat_index(zip.get(), zip_uint64_t(index), 0, &stat) != 0 ||
       !(stat.valid & ZIP_STAT_SIZE)) {
     throw InputError(archive, "\"" + name + "\": " + zip_strerror(zip.get()));
+  }
+  // The size the archive claims, checked before the buffer is taken: a few kilobytes of zip can
+  // claim (and a deflate stream can inflate to) gigabytes. libzip stops at the claimed size and
+  // checks the CRC, so a stream that inflates past its claim does not get further.
+  if (stat.size > inputLimits().maxFileBytes) {
+    throw InputError(archive, fileLimitProblem("\"" + name + "\" inflated", stat.size));
   }
   const std::unique_ptr<zip_file_t, EntryCloser> file(
       zip_fopen_index(zip.get(), zip_uint64_t(index), 0));

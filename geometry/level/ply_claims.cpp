@@ -1,0 +1,141 @@
+#include "geometry/level/ply_claims.h"
+
+#include <cctype>
+#include <cstdint>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <vector>
+
+namespace probeproxy {
+
+namespace {
+
+enum class Encoding { Ascii, LittleEndian, BigEndian };
+
+struct Property {
+  int size = 0;       // bytes of a scalar, or of each list item
+  int countSize = 0;  // bytes of a list's count; 0 for a scalar
+};
+
+struct Element {
+  std::string name;
+  std::uint64_t count = 0;
+  std::vector<Property> properties;
+};
+
+int typeSize(const std::string& type) {
+  if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+  if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+  if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" ||
+      type == "float32")
+    return 4;
+  if (type == "double" || type == "float64") return 8;
+  return 0;
+}
+
+// A binary count, as the reader will take it: unsigned, in the file's byte order.
+std::uint64_t binaryCount(const char* at, int size, Encoding encoding) {
+  std::uint64_t value = 0;
+  for (int i = 0; i < size; ++i) {
+    const int byte = encoding == Encoding::LittleEndian ? size - 1 - i : i;
+    value = (value << 8) | static_cast<unsigned char>(at[byte]);
+  }
+  return value;
+}
+
+}  // namespace
+
+std::string plyClaimProblem(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  const std::string bytes{std::istreambuf_iterator<char>(in), {}};
+  std::istringstream header(bytes);
+  std::string line;
+  Encoding encoding = Encoding::Ascii;
+  std::vector<Element> elements;
+  std::size_t body = std::string::npos;
+  for (int lineNumber = 1; std::getline(header, line); ++lineNumber) {
+    std::istringstream words(line);
+    std::string keyword, type;
+    words >> keyword;
+    if (keyword == "end_header") {
+      body = static_cast<std::size_t>(header.tellg());
+      break;
+    }
+    if (keyword == "format") {
+      words >> type;
+      encoding = type == "binary_little_endian" ? Encoding::LittleEndian
+                 : type == "binary_big_endian"  ? Encoding::BigEndian
+                                                : Encoding::Ascii;
+    } else if (keyword == "element") {
+      Element element;
+      words >> element.name >> element.count;
+      elements.push_back(element);
+    } else if (keyword == "property") {
+      if (elements.empty()) {
+        return "PLY header line " + std::to_string(lineNumber) +
+               " declares a property before any element";
+      }
+      Property property;
+      words >> type;
+      if (type == "list") {
+        std::string countType, itemType;
+        words >> countType >> itemType;
+        property.countSize = typeSize(countType);
+        property.size = typeSize(itemType);
+      } else {
+        property.size = typeSize(type);
+      }
+      elements.back().properties.push_back(property);
+    }
+  }
+  if (body == std::string::npos) return {};  // no complete header: CGAL says so
+
+  // The data: skip each value; at each list, the count must fit in what is left.
+  std::size_t at = body;
+  const std::size_t end = bytes.size();
+  const auto skipToken = [&] {
+    while (at < end && std::isspace(static_cast<unsigned char>(bytes[at]))) ++at;
+    const std::size_t start = at;
+    while (at < end && !std::isspace(static_cast<unsigned char>(bytes[at]))) ++at;
+    return bytes.substr(start, at - start);
+  };
+  for (const Element& element : elements) {
+    for (std::uint64_t i = 0; i < element.count; ++i) {
+      for (const Property& property : element.properties) {
+        if (at >= end) return {};  // cut short: CGAL says so
+        std::uint64_t items = 0, itemBytes = 0;
+        if (encoding == Encoding::Ascii) {
+          if (property.countSize == 0) {
+            skipToken();
+            continue;
+          }
+          items = std::strtoull(skipToken().c_str(), nullptr, 10);
+          itemBytes = 2;  // a digit and a separator, at the least
+        } else {
+          if (property.size == 0 || at + property.countSize > end) return {};
+          if (property.countSize == 0) {
+            at += property.size;
+            continue;
+          }
+          items = binaryCount(bytes.data() + at, property.countSize, encoding);
+          at += property.countSize;
+          itemBytes = property.size;
+        }
+        if (items > (end - at) / itemBytes) {
+          return "PLY element " + element.name + " " + std::to_string(i) + ": a list of " +
+                 std::to_string(items) + " items, past the end of the file";
+        }
+        if (encoding == Encoding::Ascii) {
+          for (std::uint64_t k = 0; k < items; ++k) skipToken();
+        } else {
+          at += items * itemBytes;
+        }
+      }
+    }
+  }
+  return {};
+}
+
+}  // namespace probeproxy
