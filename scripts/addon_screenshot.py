@@ -1,4 +1,4 @@
-# The README's screenshot of the add-on's panel after Import Scene, Generate Proxies and
+# docs/addon.md's screenshot of the add-on's panel after Import Scene, Generate Proxies and
 # Validate Volumes on a suite level. Blender needs a display: run it under Xvfb, with event
 # simulation (the built-in Transform panel is collapsed by a simulated click: Blender 3.4 has no
 # Python call for it), then reduce the PNG to 256 colours:

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The corpus tables of the README, measured: per real map (scripts/corpus/), what it holds
+"""The corpus tables of docs/cli_and_formats.md, measured: per real map (scripts/corpus/), what it holds
 (triangles, load time, walkable floor, spawn points) and what a player sees across its walkable
 floor (`probeproxy survey`) with the spawn probes looked up three ways: through the build's
 `aabb` candidate (what box projection gives an engine user), through the kept proxies, and with

@@ -5,7 +5,7 @@
 // and Bevy. Each frame is a signed permutation of the world's axes and a unit, so every
 // conversion is exact for the axes (a copy and a sign flip); only the unit rounds.
 //
-// Conventions (the scene file's, README "Scene file"):
+// Conventions (the scene file's, docs/cli_and_formats.md "Scene file"):
 //   - points and half-extents scale with the unit, directions and rotations do not;
 //   - a shape's own axes turn with the frame, so its half-extents are permuted and never
 //     negated (Y-up half-extents (x, y, z) are world (x, z, y)), and an axis-aligned box keeps

@@ -1,5 +1,5 @@
 #pragma once
-// The runtime export (README "Runtime export"): `proxies.json` + `proxies.glb`,
+// The runtime export (docs/cli_and_formats.md "Runtime export"): `proxies.json` + `proxies.glb`,
 // files a game engine loads without this library. RuntimeExport is what proxies.json holds, in
 // the world frame (Z up, metres), so that readRuntimeExport gives back what was written.
 //

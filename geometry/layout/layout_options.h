@@ -1,5 +1,5 @@
 #pragma once
-// What `layout` may do and what it must reach (README "Layout"): the tolerance each floor
+// What `layout` may do and what it must reach (docs/layout.md): the tolerance each floor
 // sample is served within, how candidates are spread and built, and how the chosen probes'
 // influence volumes blend. Plain data; check() throws InputError for a value out of range.
 

@@ -1,5 +1,5 @@
 #pragma once
-// `layout`: probes for a whole level (README "Layout"). The walkable floor a player reaches from
+// `layout`: probes for a whole level (docs/layout.md). The walkable floor a player reaches from
 // the seed points is sampled as `survey` samples it (coarser); capture-point candidates are
 // spread over it (layout_candidates.h), each one's proxy built and its error measured on the
 // floor within reach (candidate_service.h, all cores); the fewest that serve the floor within

@@ -1,5 +1,5 @@
 #pragma once
-// Which candidates become probes, and the floor each one's inner range holds (README "Layout").
+// Which candidates become probes, and the floor each one's inner range holds (docs/layout.md).
 // Lagarde's blend gives a box's probe 100% inside its inner range, so the selection picks
 // candidates together with their ranges: rectangles of floor (floor_rectangles.h) grown from
 // each capture point over the floor its proxy serves within the tolerance, no two within the

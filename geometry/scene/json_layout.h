@@ -5,7 +5,7 @@
 // member's value on one line, wrapped at the column limit only when it must be. This is that
 // layout, with the numbers already spelled by the caller (see jsonCoordinate).
 //
-// Layout rules (they make the README's example a fixed point):
+// Layout rules (they make docs/cli_and_formats.md's example a fixed point):
 //   - a container built with `oneItemPerLine` puts each item on its own line, indented by 2;
 //   - any other container is written inline: `[1.0, 2.0]` for scalars, `[ {...}, {...} ]` and
 //     `{ "a": 1, "b": 2 }` (padded) otherwise; if that would pass the column limit it breaks

@@ -8,7 +8,7 @@
 // bytes.
 
 #include "core/scene/probe.h"
-#include "geometry/survey/map_text.h"
+#include "core/image/rgb8_canvas.h"
 #include "geometry/survey/survey_result.h"
 
 #include <array>

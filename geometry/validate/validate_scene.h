@@ -1,10 +1,10 @@
 #pragma once
-// Validation of the volumes an artist authored (README "Validation"): every
+// Validation of the volumes an artist authored (docs/validation.md): every
 // rule below looks at the scene and the real level and reports what breaks it, which probe,
 // by how much, and how to fix it. A clean scene gives no findings. The CLI (`probeproxy
 // validate`) and the Blender add-on both call validateScene.
 //
-// Rules (id, severity, value / limit; the README's "Validation" section has the full table):
+// Rules (id, severity, value / limit; docs/validation.md has the full table):
 //   proxy_* (the OpenMesh checks of geometry/validate/proxy_mesh_checks.h, on an authored
 //     `convex` mesh: proxy_not_closed, proxy_concave_edge, proxy_not_convex, ...)   error
 //   capture_outside_proxy       error    metres the capture point lies outside its authored

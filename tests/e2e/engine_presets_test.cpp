@@ -130,7 +130,7 @@ std::vector<glm::dvec3> worldCorners(const BoxShape& box) {
   return corners(box.centerMeters, box.worldFromBox, box.halfExtentsMeters);
 }
 
-// The influence's fade, written out from the README's rule (not transitionDistanceMeters):
+// The influence's fade, written out from docs/engines.md's rule (not transitionDistanceMeters):
 // the smallest outer - inner over the axes that fade at all, else 0.
 double influenceFadeMeters(const InfluenceVolume& influence) {
   if (const auto* box = std::get_if<BoxInfluence>(&influence)) {

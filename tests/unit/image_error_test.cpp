@@ -50,7 +50,7 @@ TEST(ImageError, RejectsMismatchedSizesAndAnEmptyMask) {
       std::invalid_argument);
 }
 
-TEST(ErrorImages, MissMaskAndHeatmapReadBackWithTheirColours) {
+TEST(ErrorImages, MissMaskAndComparisonReadBackWithTheirColours) {
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / "probeproxy_error_images";
   std::filesystem::create_directories(dir);
@@ -61,12 +61,25 @@ TEST(ErrorImages, MissMaskAndHeatmapReadBackWithTheirColours) {
   EXPECT_EQ(m.at(0, 0), glm::vec3(1, 0, 0));  // missed: red
   EXPECT_EQ(m.at(1, 0), glm::vec3(1, 1, 1));  // seen: white
   EXPECT_EQ(m.at(0, 1), glm::vec3(0, 0, 0));  // outside the mask: black
+  // The comparison: reference | reconstruction | |error|, each 2 x 2 view enlarged to 256 px.
   const std::vector<float> absError = {0.0f, 0.0f, 0.0f, 10.0f};
-  writeErrorHeatmapPng(dir / "heat.png", 2, 2, absError, mask, miss, 1.0f);
-  const RgbImage h = readRgbImage(dir / "heat.png");
-  EXPECT_EQ(h.at(0, 0), glm::vec3(0, 1, 1));  // a miss: cyan
-  EXPECT_EQ(h.at(1, 0), glm::vec3(0, 0, 0));  // no error: black
-  EXPECT_EQ(h.at(1, 1), glm::vec3(1, 1, 1));  // at or above the scale: white
+  const std::vector<float> reference(12, 2.0f), reconstruction(12, 1.0f);
+  writeErrorComparisonPng(dir / "compare.png",
+                          {2, 2, reference, reconstruction, absError, mask, miss, 2.0f, 1.0f});
+  const RgbImage c = readRgbImage(dir / "compare.png");
+  EXPECT_GE(c.width, 3 * 256);
+  EXPECT_GE(c.height, 256);
+  const auto pixel = [&](int panel, int col, int row) {  // the centre of an enlarged pixel
+    return c.at(12 + panel * (256 + 12) + col * 128 + 64, 32 + row * 128 + 64);
+  };
+  EXPECT_EQ(pixel(0, 0, 0), glm::vec3(1, 1, 1));  // the reference at the peak: white
+  // Half the peak, sRGB-encoded (the bytes are read back as they are stored).
+  EXPECT_NEAR(pixel(1, 1, 0).x, 1.055f * std::pow(0.5f, 1 / 2.4f) - 0.055f, 1 / 255.0f);
+  EXPECT_EQ(pixel(1, 0, 0), glm::vec3(0, 1, 1));  // a miss: cyan
+  EXPECT_EQ(pixel(2, 0, 0), glm::vec3(0, 1, 1));
+  EXPECT_EQ(pixel(2, 1, 0), glm::vec3(0, 0, 0));  // no error: black
+  EXPECT_EQ(pixel(2, 1, 1), glm::vec3(1, 1, 1));  // at or above the scale: white
+  EXPECT_EQ(pixel(2, 0, 1), glm::vec3(40 / 255.0f));  // outside the mask: dark grey
   std::filesystem::remove_all(dir);
 }
 

@@ -1,4 +1,4 @@
-# Between Blender objects and the scene file's dict (README "Scene file"), in the world frame
+# Between Blender objects and the scene file's dict (docs/cli_and_formats.md "Scene file"), in the world frame
 # (Z up, metres). Blender stores 32-bit floats; each number is written as the shortest decimal
 # that reads back to the same 32-bit value, so 1.6 typed or imported comes back as 1.6, and an
 # unedited scene gives the library the very numbers the file holds.

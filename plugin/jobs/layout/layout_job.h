@@ -1,6 +1,6 @@
 #pragma once
 // `layout`: the fewest probes for a whole level, their influence volumes and proxies, and what a
-// player then sees (README "Layout"); or a baseline layout (a grid, the spawn points) measured
+// player then sees (docs/layout.md); or a baseline layout (a grid, the spawn points) measured
 // the same way, so layouts compare with `survey`'s figures.
 //
 // Path of one run: plugin/cli/verbs/layout_verb.cpp parses flags into LayoutJobOptions ->

@@ -1,7 +1,7 @@
-"""The scene file of README.md and the mirror-view files, written the same way every run.
+"""The scene file of docs/cli_and_formats.md and the mirror-view files, written the same way every run.
 
 Floats are rounded to 6 decimals (and -0.0 folded into 0.0) so trigonometry noise never
-changes a byte; key order is fixed by construction, not sorted, to read like the README.
+changes a byte; key order is fixed by construction, not sorted, to read like docs/cli_and_formats.md.
 This module imports no bpy: the broken inputs use it too.
 """
 
@@ -25,7 +25,7 @@ def clean(value):
 
 def _dump(value, indent):
     # json.dumps(indent=2) would put every vector component on its own line; vectors stay on
-    # one line here, as in README.md, and everything else is indented by 2.
+    # one line here, as in docs/cli_and_formats.md, and everything else is indented by 2.
     pad, inner = "  " * indent, "  " * (indent + 1)
     if isinstance(value, dict):
         if not value:
