@@ -3,11 +3,13 @@
 (triangles, load time, walkable floor, spawn points) and what a player sees across its walkable
 floor (`probeproxy survey`) with the spawn probes looked up three ways: through the build's
 `aabb` candidate (what box projection gives an engine user), through the kept proxies, and with
-no correction. Prints two Markdown tables; with --maps DIR also writes the error maps of the
-maps named by --pictures into DIR (aabb and kept only).
+no correction. Prints two Markdown tables (--table maps or survey: one of them, as the docs'
+generated blocks take them; maps surveys only through the kept proxies, for the floor area);
+with --maps DIR also writes the error maps of the maps named by --pictures into DIR (aabb and
+kept only).
 
   /usr/bin/python3 scripts/corpus_table.py build/plugin/cli/probeproxy build/corpus/scenes \
-      [--maps scripts/charts/corpus --pictures downer toxic skyway]
+      [--table maps|survey] [--maps scripts/charts/corpus --pictures downer toxic skyway]
 """
 import argparse
 import glob
@@ -33,7 +35,9 @@ def main():
     parser.add_argument("--maps")
     parser.add_argument("--pictures", nargs="*", default=[])
     parser.add_argument("--tolerance-deg", default="5")
+    parser.add_argument("--table", choices=["maps", "survey", "both"], default="both")
     args = parser.parse_args()
+    rows_wanted = [r for r in ROWS if args.table != "maps" or r[0] == "scene"]
 
     scenes = sorted(glob.glob(os.path.join(args.scenes, "*", "*.scene.json")))
     holds, seen = [], []
@@ -44,7 +48,7 @@ def main():
         pk3 = os.path.normpath(os.path.join(os.path.dirname(scene_file), level["mesh"]))
         info = run_json([args.probeproxy, "level-info", pk3, "--map", level["map"]])
         rows = {}
-        for proxy, _ in ROWS:
+        for proxy, _ in rows_wanted:
             with tempfile.TemporaryDirectory() as out:
                 rows[proxy] = run_json([args.probeproxy, "survey", scene_file, "--json",
                                         "--proxy", proxy, "--tolerance-deg", args.tolerance_deg,
@@ -58,13 +62,17 @@ def main():
         holds.append((name, info, rows["scene"]))
         seen.append((name, rows))
 
-    print("| map | triangles | sky triangles | load ms | walkable m^2 | spawn points |")
-    print("|---|---|---|---|---|---|")
-    for name, info, survey in holds:
-        print("| %s | %d | %d | %.1f | %.0f | %d |" % (
-            name, info["triangles"], info["sky_triangles"], info["load_ms"],
-            survey["walkable_m2"], len(info["spawn_points"])))
-    print()
+    if args.table != "survey":
+        print("| map | triangles | sky triangles | load ms | walkable m^2 | spawn points |")
+        print("|---|---|---|---|---|---|")
+        for name, info, survey in holds:
+            print("| %s | %d | %d | %.1f | %.0f | %d |" % (
+                name, info["triangles"], info["sky_triangles"], info["load_ms"],
+                survey["walkable_m2"], len(info["spawn_points"])))
+    if args.table == "maps":
+        return
+    if args.table == "both":
+        print()
     print("| map | probes | proxies | p95 deg | floor over %s deg | uncovered | occluded | s |"
           % args.tolerance_deg)
     print("|---|---|---|---|---|---|---|---|")

@@ -6,6 +6,9 @@
 #   scripts/setup.sh test    every test (CTest)
 #   scripts/setup.sh build   install, build and fetch the real-map corpus only
 #   scripts/setup.sh module  install and build only the Python module (the Blender add-on's)
+#   scripts/setup.sh sanitize  the unit and end-to-end tests built with AddressSanitizer and
+#                            UBSan, in build-asan/ (the suite levels come from build/; about
+#                            an hour on 2 cores from clean, so not part of `test`)
 # Idempotent: a second run installs nothing and rebuilds only what changed.
 set -euo pipefail
 
@@ -61,5 +64,17 @@ case "$job" in
   demo) "$build/plugin/cli/probeproxy" demo --out "$build/demo" ;;
   test) ctest --test-dir "$build" --output-on-failure -j"$(nproc)" ;;
   build | module) ;;
-  *) echo "usage: scripts/setup.sh [demo|test|build|module]" >&2; exit 2 ;;
+  sanitize)
+    # The suite levels once in build/ (Blender renders them), then every unit and e2e test of
+    # a sanitized tree reading them. A sanitizer report stops the program, so it fails its test.
+    ctest --test-dir "$build" -R '^suite_generate$' --output-on-failure
+    asan="$here/build-asan"
+    cmake -S "$here" -B "$asan" -DCMAKE_BUILD_TYPE=Release -DPROBEPROXY_SANITIZE=ON \
+      -DPROBEPROXY_SUITE_DIR="$build/scenes" >/dev/null
+    cmake --build "$asan" -j"$(nproc)"
+    ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS="suppressions=$here/tests/fuzz/lsan.supp" \
+      ctest --test-dir "$asan" -L 'unit|e2e' -E '^suite_generate$' -FA '^suite$' \
+      --output-on-failure -j"$(nproc)"
+    ;;
+  *) echo "usage: scripts/setup.sh [demo|test|build|module|sanitize]" >&2; exit 2 ;;
 esac
