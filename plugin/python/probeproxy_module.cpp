@@ -9,6 +9,7 @@
 #include "geometry/scene/scene_file.h"
 #include "plugin/jobs/build/build_job.h"
 #include "plugin/jobs/build/build_report.h"
+#include "plugin/jobs/layout/layout_job.h"
 #include "plugin/jobs/validate/validate_job.h"
 #include "plugin/jobs/validate/validate_report.h"
 #include "plugin/python/python_level.h"
@@ -165,10 +166,10 @@ py::tuple vec3(const glm::dvec3& v) { return py::make_tuple(v.x, v.y, v.z); }
 // The CLI's `build --json` probes, each with what Blender draws: the kept proxy's planes and
 // boundary mesh in world metres (the runtime export's, so a sphere is its icosphere) and the
 // build's findings.
-py::list probeResults(const jobs::BuildJobResult& sb) {
-  py::list probes = jsonLoads(jobs::buildReportJson(sb.builds))["probes"];
-  const RuntimeExport runtime = makeRuntimeExport(sb.scene, sb.builds);
-  for (std::size_t i = 0; i < sb.builds.size(); ++i) {
+py::list probeResults(const Scene& scene, const std::vector<ProbeProxyBuild>& builds) {
+  py::list probes = jsonLoads(jobs::buildReportJson(builds))["probes"];
+  const RuntimeExport runtime = makeRuntimeExport(scene, builds);
+  for (std::size_t i = 0; i < builds.size(); ++i) {
     py::dict probe = probes[i].cast<py::dict>();
     const RuntimeProbe& r = runtime.probes[i];
     py::list planes, vertices, triangles;
@@ -180,9 +181,29 @@ py::list probeResults(const jobs::BuildJobResult& sb) {
     probe["plane_equations"] = planes;
     probe["mesh"] = py::dict(py::arg("vertices") = vertices, py::arg("triangles") = triangles,
                              py::arg("display_only") = r.meshIsDisplayOnly);
-    probe["findings"] = py::cast(sb.builds[i].findings);
+    probe["findings"] = py::cast(builds[i].findings);
   }
   return probes;
+}
+
+// `probeproxy layout` on the dict's scene (its probes seed the floor where the level has no
+// spawn points), writing what the CLI writes into `outFolder`. Returns {"scene": the layout's
+// scene dict in the world frame, "probes": its probes' build results as build_proxies gives
+// them, "figures": layout.json, "files": the paths written}.
+py::dict suggestProbes(const py::dict& sceneData, const std::string& anchor,
+                       const std::string& outFolder, const py::object& level,
+                       const py::dict& options, const py::object& progress) {
+  jobs::LayoutJobOptions job;
+  job.input = sceneInput(sceneData, anchor, level);
+  job.outFolder = outFolder;
+  readLayoutOptions(options, job);
+  const jobs::LayoutJobResult r = runWithProgress<jobs::LayoutJobResult>(
+      [&](const Progress& onStep) { return jobs::runLayoutJob(job, onStep); }, progress);
+  py::list files;
+  for (const std::filesystem::path& file : r.written) files.append(file.string());
+  return py::dict(py::arg("scene") = sceneDict(r.scene, true),
+                  py::arg("probes") = probeResults(r.scene, r.builds),
+                  py::arg("figures") = jsonLoads(r.json), py::arg("files") = files);
 }
 
 }  // namespace
@@ -240,7 +261,9 @@ PYBIND11_MODULE(probeproxy_py, m) {
       "build_proxies",
       [](const py::dict& scene, const std::string& anchor, const py::object& level,
          const py::dict& options, const py::object& progress) {
-        return probeResults(buildScene(scene, anchor, level, options, progress, std::nullopt));
+        const jobs::BuildJobResult built =
+            buildScene(scene, anchor, level, options, progress, std::nullopt);
+        return probeResults(built.scene, built.builds);
       },
       py::arg("scene"), py::arg("anchor"), py::arg("level") = py::none(),
       py::arg("options") = py::dict(), py::arg("progress") = py::none(),
@@ -263,10 +286,23 @@ PYBIND11_MODULE(probeproxy_py, m) {
       "export_proxies",
       [](const py::dict& scene, const std::string& anchor, const std::string& outFolder,
          const py::object& level, const py::dict& options, const py::object& progress) {
-        return probeResults(buildScene(scene, anchor, level, options, progress, outFolder));
+        const jobs::BuildJobResult built =
+            buildScene(scene, anchor, level, options, progress, outFolder);
+        return probeResults(built.scene, built.builds);
       },
       py::arg("scene"), py::arg("anchor"), py::arg("out_dir"), py::arg("level") = py::none(),
       py::arg("options") = py::dict(), py::arg("progress") = py::none(),
       "build_proxies, then writes out_dir/proxies.json and proxies.glb (the bytes `probeproxy "
       "build SCENE --out DIR` writes for the same scene, level and options).");
+
+  m.def("suggest_probes", &suggestProbes, py::arg("scene"), py::arg("anchor"), py::arg("out_dir"),
+        py::arg("level") = py::none(), py::arg("options") = py::dict(),
+        py::arg("progress") = py::none(),
+        "Lays out probes for the whole level (`probeproxy layout`): the fewest that serve its "
+        "walkable floor within the tolerance, their influence boxes and proxies. The floor is "
+        "the part players reach from the level's spawn points, else from the scene's probes. "
+        "Writes into out_dir what `probeproxy layout SCENE --out DIR` writes (layout.scene.json, "
+        "proxies, layout.json, the error maps). level: as build_proxies. options: tolerance_deg, "
+        "max_probes, spacing, max_candidates, reach, capture_height, blend_band, threads. "
+        "Returns {scene (world frame), probes (as build_proxies), figures, files}.");
 }

@@ -69,4 +69,29 @@ void readValidateOptions(const py::dict& options, jobs::ValidateJobOptions& job)
   }
 }
 
+void readLayoutOptions(const py::dict& options, jobs::LayoutJobOptions& job) {
+  LayoutOptions& o = job.layout;
+  for (auto [key, value] : options) {
+    const std::string name = key.cast<std::string>();
+    if (name == "tolerance_deg")
+      o.toleranceDeg = value.cast<double>();
+    else if (name == "max_probes")
+      o.maxProbes = value.cast<std::size_t>();
+    else if (name == "spacing")
+      o.spacingMeters = value.cast<double>();
+    else if (name == "max_candidates")
+      o.maxCandidates = value.cast<std::size_t>();
+    else if (name == "reach")
+      o.reachMeters = value.cast<double>();
+    else if (name == "capture_height")
+      o.captureHeightMeters = value.cast<double>();
+    else if (name == "blend_band")
+      o.blendBandMeters = value.cast<double>();
+    else if (name == "threads")
+      job.threads = value.cast<int>();
+    else
+      throw unknown("layout", name);
+  }
+}
+
 }  // namespace probeproxy::python

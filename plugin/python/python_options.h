@@ -5,6 +5,7 @@
 // the job's own check, the same line the CLI prints.
 
 #include "plugin/jobs/build/build_job.h"
+#include "plugin/jobs/layout/layout_job.h"
 #include "plugin/jobs/validate/validate_job.h"
 
 #include <pybind11/pybind11.h>
@@ -17,5 +18,9 @@ void readBuildOptions(const pybind11::dict& options, jobs::BuildJobOptions& job)
 // The `probeproxy validate` options: tolerance_deg, max_overlap, max_uncovered_m2,
 // max_leak_share, max_inner_overlap_m3, max_weight_jump, glossy, grid, samples; and threads.
 void readValidateOptions(const pybind11::dict& options, jobs::ValidateJobOptions& job);
+
+// The `probeproxy layout` options: tolerance_deg, max_probes, spacing, max_candidates, reach,
+// capture_height, blend_band; and threads.
+void readLayoutOptions(const pybind11::dict& options, jobs::LayoutJobOptions& job);
 
 }  // namespace probeproxy::python

@@ -68,6 +68,26 @@ def _with_progress(context, total, work):
         wm.progress_end()
 
 
+def _with_fraction(context, work):
+    """As _with_progress, for work whose total is known only as it reports (the layout)."""
+    wm = context.window_manager
+    wm.progress_begin(0, 1000)
+    try:
+        return work(lambda done, total: wm.progress_update(int(1000 * done / max(total, 1))))
+    finally:
+        wm.progress_end()
+
+
+def _remove_probe(probe):
+    proxy = probe.probeproxy.proxy_object
+    if proxy is not None:
+        mesh = proxy.data
+        bpy.data.objects.remove(proxy)
+        if mesh is not None and mesh.users == 0:
+            bpy.data.meshes.remove(mesh)
+    bpy.data.objects.remove(probe)
+
+
 def _proxy_mesh_object(scene, probe, result):
     """The kept proxy as a mesh object (Blender units), with a fingerprint of it as made, so that
     a hand edit is found later (_take_edited_proxies)."""
@@ -221,6 +241,68 @@ class PROBEPROXY_OT_generate_proxies(_NeedsModule, bpy.types.Operator):
                             % (len(results), used, warnings, "" if warnings == 1 else "s"))
             else:
                 self.report({"INFO"}, "built %d proxies from %s" % (len(results), used))
+            return {"FINISHED"}
+
+        return _run(self, work)
+
+
+class PROBEPROXY_OT_suggest_probes(_NeedsModule, bpy.types.Operator):
+    """Lay out probes for the whole level, as `probeproxy layout` does: the fewest that serve
+    the walkable floor within the layout tolerance, each with an influence box and its proxy.
+    They replace the scene's probes, which seed the floor where the level has no spawn points
+    (Ctrl+Z brings them back); the error map shows in the panel"""
+    bl_idname = "probeproxy.suggest_probes"
+    bl_label = "Suggest Probes"
+    bl_options = {"REGISTER", "UNDO"}
+
+    def execute(self, context):
+        scene = context.scene
+        settings = scene.probeproxy
+        objects = _level_objects(context)
+        if not objects:
+            self.report({"ERROR"}, _no_level_message(context))
+            return {"CANCELLED"}
+
+        def work():
+            _take_edited_proxies(self, context)
+            parts, used = scene_io.level_parts(context, objects)
+            anchor = scene_io.scene_anchor(scene)
+            out = os.path.splitext(os.path.splitext(anchor)[0])[0] + "_layout"
+            options = {"tolerance_deg": scene_io.f32(settings.layout_tolerance_deg)}
+            if settings.layout_max_probes:
+                options["max_probes"] = settings.layout_max_probes
+            result = _with_fraction(context, lambda progress: native.module.suggest_probes(
+                scene_io.scene_dict(scene), anchor, out, parts, options, progress))
+            for old in scene_io.probes(scene):
+                _remove_probe(old)
+            coll = _collection(scene, "Probes")
+            k = scene_io.meters_per_bu(scene)
+            for order, (d, built) in enumerate(zip(result["scene"]["probes"], result["probes"])):
+                obj = bpy.data.objects.new(d["name"], None)
+                obj.empty_display_type = "PLAIN_AXES"
+                obj.empty_display_size = 0.25
+                coll.objects.link(obj)
+                if isinstance(d["proxy"], dict) and "mesh" in d["proxy"]:
+                    # The layout's proxy files are in `out`; the scene's paths are the anchor's.
+                    d["proxy"]["mesh"] = os.path.relpath(os.path.join(out, d["proxy"]["mesh"]),
+                                                         os.path.dirname(anchor))
+                scene_io.set_probe_from_dict(obj, d, k)
+                obj.probeproxy.order = order
+                obj.probeproxy.result_json = json.dumps(built["proxy"] | {
+                    "error": built["error"], "findings": built["findings"], "candidates": []})
+                _proxy_mesh_object(scene, obj, built)
+            figures = result["figures"]["survey"]
+            maps = [f for f in result["files"] if f.endswith(".png")]
+            settings.layout_map = maps[0] if maps else ""
+            if maps:
+                bpy.data.images.load(maps[0], check_existing=True).reload()
+            settings.layout_summary = "%d probes: p95 %.1f deg, %.1f%% of the floor over %.3g deg" % (
+                len(result["probes"]), figures["p95_deg"] or 0.0,
+                100 * figures["over_tolerance_share"], settings.layout_tolerance_deg)
+            settings.level_used = used
+            settings.findings.clear()
+            settings.validated = False
+            self.report({"INFO"}, "suggested " + settings.layout_summary + " (files in %s)" % out)
             return {"FINISHED"}
 
         return _run(self, work)
@@ -495,6 +577,7 @@ class PROBEPROXY_OT_add_probe(bpy.types.Operator):
 
 
 classes = (PROBEPROXY_OT_generate_proxies, PROBEPROXY_OT_validate_volumes,
+           PROBEPROXY_OT_suggest_probes,
            PROBEPROXY_OT_export_proxies, PROBEPROXY_OT_import_scene, PROBEPROXY_OT_save_scene,
            PROBEPROXY_OT_add_probe)
 

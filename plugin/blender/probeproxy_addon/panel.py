@@ -55,6 +55,17 @@ class PROBEPROXY_PT_main(_Sidebar, bpy.types.Panel):
         col.operator("probeproxy.generate_proxies", icon="MESH_ICOSPHERE")
         col.operator("probeproxy.validate_volumes", icon="CHECKMARK")
         col.operator("probeproxy.export_proxies", icon="EXPORT")
+        col = layout.column(align=True)
+        col.prop(settings, "layout_tolerance_deg")
+        col.prop(settings, "layout_max_probes")
+        col.operator("probeproxy.suggest_probes", icon="OUTLINER_OB_LIGHTPROBE")
+        if settings.layout_summary:
+            for line in _wrap(settings.layout_summary, width):
+                col.label(text=line)
+            image = bpy.data.images.get(bpy.path.basename(settings.layout_map))
+            if image is not None:
+                image.preview_ensure()
+                col.template_icon(icon_value=image.preview.icon_id, scale=12.0)
         col.prop(settings, "show_volumes")
         if settings.scene_file:
             for line in _wrap("Scene: " + bpy.path.basename(settings.scene_file), width):

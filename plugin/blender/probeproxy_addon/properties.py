@@ -96,6 +96,13 @@ class SceneSettings(bpy.types.PropertyGroup):
     findings: CollectionProperty(type=Finding)
     validated: BoolProperty(default=False)
     show_volumes: BoolProperty(name="Show volumes", default=True)
+    # Suggest Probes (`probeproxy layout`): its own tolerance, the level-wide one a player
+    # sees (5 degrees, as `layout` and `survey`), not the proxies' 0.25.
+    layout_tolerance_deg: FloatProperty(name="Layout tolerance (deg)", default=5.0, min=0.001)
+    layout_max_probes: IntProperty(name="Max probes", default=0, min=0,
+                                   description="At most this many probes (0: as many as the floor needs)")
+    layout_map: StringProperty(default="", description="The last layout's error map (PNG)")
+    layout_summary: StringProperty(default="")
 
 
 classes = (ProbeSettings, Finding, SceneSettings)

@@ -159,15 +159,16 @@ void LayoutJobOptions::check() const {
 LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress) {
   o.check();
   const ThreadLimit threads(o.threads);
-  const Scene input = readLevelOrScene(o.levelOrScene);
-  const LevelMesh level = loadSceneLevel(input, SceneInput{});
+  const bool inMemory = o.levelOrScene.empty();
+  const Scene input = inMemory ? readSceneInput(o.input) : readLevelOrScene(o.levelOrScene);
+  const LevelMesh level = loadSceneLevel(input, inMemory ? o.input : SceneInput{});
   const LevelRayCaster rayCaster(level);
   // Players enter at the spawn points; a level without them (an OBJ room) at its probes.
   std::vector<glm::dvec3> seeds = level.spawnPointsMeters;
   if (seeds.empty())
     for (const Probe& p : input.probes) seeds.push_back(p.captureMeters);
   if (seeds.empty())
-    throw InputError(o.levelOrScene,
+    throw InputError(inMemory ? input.file : o.levelOrScene,
                      "no seed point: the level has no spawn points and the scene no probes");
 
   LayoutJobResult r;

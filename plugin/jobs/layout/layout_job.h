@@ -29,6 +29,9 @@ struct LayoutJobOptions {
   // A scene file (its level; its probes seed the floor where the level has no spawn points), or
   // a level file (.glb, .gltf, .obj, .ply, .off, .bsp) in Z-up metres (glTF: Y-up).
   std::filesystem::path levelOrScene;
+  // Or, when levelOrScene is empty, a scene handed over in memory with its level (the add-on's
+  // Suggest Probes): the same layout, seeded the same way.
+  SceneInput input;
   std::filesystem::path outFolder;  // layout.scene.json, proxies.json/.glb, layout.json, maps
   int threads = 0;                  // 0: all cores
   LayoutOptions layout;
