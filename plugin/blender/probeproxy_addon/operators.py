@@ -118,6 +118,15 @@ def _proxy_mesh_object(scene, probe, result):
     return obj
 
 
+def _take_build_result(scene, probe, result):
+    """A probe's build result (build_proxies' or suggest_probes'): its figures for the panel and
+    its kept proxy as a mesh object."""
+    probe.probeproxy.result_json = json.dumps(result["proxy"] | {
+        "error": result["error"], "findings": result["findings"],
+        "candidates": [{k: c[k] for k in ("kind", "planes", "error")} for c in result["candidates"]]})
+    _proxy_mesh_object(scene, probe, result)
+
+
 EDITED_HEADER = "# probeproxy: the hand-edited proxy of probe "
 
 
@@ -228,12 +237,7 @@ class PROBEPROXY_OT_generate_proxies(_NeedsModule, bpy.types.Operator):
                 _build_options(settings), progress))
             by_name = {p.name: p for p in probes}
             for result in results:
-                probe = by_name[result["name"]]
-                probe.probeproxy.result_json = json.dumps(result["proxy"] | {
-                    "error": result["error"], "findings": result["findings"],
-                    "candidates": [{k: c[k] for k in ("kind", "planes", "error")}
-                                   for c in result["candidates"]]})
-                _proxy_mesh_object(scene, probe, result)
+                _take_build_result(scene, by_name[result["name"]], result)
             settings.level_used = used
             warnings = _build_findings(settings, results)
             if warnings:
@@ -288,9 +292,7 @@ class PROBEPROXY_OT_suggest_probes(_NeedsModule, bpy.types.Operator):
                                                          os.path.dirname(anchor))
                 scene_io.set_probe_from_dict(obj, d, k)
                 obj.probeproxy.order = order
-                obj.probeproxy.result_json = json.dumps(built["proxy"] | {
-                    "error": built["error"], "findings": built["findings"], "candidates": []})
-                _proxy_mesh_object(scene, obj, built)
+                _take_build_result(scene, obj, built)
             figures = result["figures"]["survey"]
             maps = [f for f in result["files"] if f.endswith(".png")]
             settings.layout_map = maps[0] if maps else ""
