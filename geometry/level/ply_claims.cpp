@@ -25,6 +25,8 @@ struct Element {
   std::vector<Property> properties;
 };
 
+// Bytes of a PLY scalar type, 0 for a type CGAL's reader does not know (it then ignores the
+// property, and so must this walk, or the two would read different bytes as a list's count).
 int typeSize(const std::string& type) {
   if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
   if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
@@ -33,6 +35,13 @@ int typeSize(const std::string& type) {
     return 4;
   if (type == "double" || type == "float64") return 8;
   return 0;
+}
+
+// A list's count type: the integer types only, as CGAL takes them.
+int countTypeSize(const std::string& type) {
+  return type == "float" || type == "float32" || type == "double" || type == "float64"
+             ? 0
+             : typeSize(type);
 }
 
 // A binary count, as the reader will take it: unsigned, in the file's byte order.
@@ -82,12 +91,12 @@ std::string plyClaimProblem(const std::filesystem::path& file) {
       if (type == "list") {
         std::string countType, itemType;
         words >> countType >> itemType;
-        property.countSize = typeSize(countType);
-        property.size = typeSize(itemType);
+        property.countSize = countTypeSize(countType);
+        property.size = property.countSize > 0 ? typeSize(itemType) : 0;
       } else {
         property.size = typeSize(type);
       }
-      elements.back().properties.push_back(property);
+      if (property.size > 0) elements.back().properties.push_back(property);
     }
   }
   if (body == std::string::npos) return {};  // no complete header: CGAL says so
@@ -114,7 +123,7 @@ std::string plyClaimProblem(const std::filesystem::path& file) {
           items = std::strtoull(skipToken().c_str(), nullptr, 10);
           itemBytes = 2;  // a digit and a separator, at the least
         } else {
-          if (property.size == 0 || at + property.countSize > end) return {};
+          if (at + property.countSize > end) return {};
           if (property.countSize == 0) {
             at += property.size;
             continue;
