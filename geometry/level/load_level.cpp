@@ -3,6 +3,7 @@
 #include "core/errors/input_error.h"
 #include "core/scene/scene_limits.h"
 #include "geometry/level/bsp/bsp_level.h"
+#include "geometry/level/gltf_claims.h"
 #include "geometry/level/polygon_soup_file.h"
 
 #include <assimp/postprocess.h>
@@ -188,6 +189,10 @@ LevelMesh loadLevelMeshFile(const std::filesystem::path& file, UpAxis fileUp,
   AssimpErrorLog errors;
   Assimp::Importer importer;
   requireExtensionImporterAccepts(importer, file);
+  if (const std::string ext = lowerExtension(file); ext == ".gltf" || ext == ".glb") {
+    const std::string claim = gltfClaimProblem(file);
+    if (!claim.empty()) throw InputError(file, "malformed mesh: " + claim);
+  }
   // Polygons are triangulated; nothing is welded, fixed or removed, so what we measure is the
   // level as authored. Points and lines are skipped below: they carry no surface.
   const aiScene* scene = importer.ReadFile(file.string(), aiProcess_Triangulate);

@@ -139,6 +139,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadMesh{"garbage.obj", "this is not a mesh\n\x01\x02\x03 at all\n",
                 "malformed mesh: not a .obj file (its content does not start as one)"},
         BadMesh{"opengex_text.gltf", "Metric {float {1.0}}\n", "malformed mesh: not a .gltf file"},
+        // Assimp 5.2.5 reads through a null pointer on such a primitive drawn as lines.
+        BadMesh{"no_positions.gltf",
+                "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [{\"primitives\": "
+                "[{\"attributes\": {}, \"mode\": 2}]}]}",
+                "malformed mesh: glTF mesh 0 primitive 0 has no POSITION attribute"},
         BadMesh{"index_past_end.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n", "malformed mesh"},
         BadMesh{"lines_only.obj", "v 0 0 0\nv 1 0 0\nl 1 2\n", "mesh has no triangles"},
         BadMesh{"empty.glb", "", "mesh file is empty"},
