@@ -90,14 +90,14 @@ run() {
     "$corpus" "$tree/seeds/$target" >"$log" 2>&1 || code=$?
   local seconds=$((SECONDS - start))
   local runs edges inputs found
-  runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo 0)
-  edges=$(grep -o 'cov: [0-9]*' "$log" | tail -n 1 | grep -o '[0-9]*' || echo 0)
+  runs=$(grep -ao 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo 0)
+  edges=$(grep -ao 'cov: [0-9]*' "$log" | tail -n 1 | grep -o '[0-9]*' || echo 0)
   inputs=$(find "$corpus" -type f | wc -l)
   found=$(find "$findings" -type f | wc -l)
   echo "$target: ${runs:-0} executions in $seconds s, ${edges:-0} edges, $inputs inputs, $found findings"
   if [ "$code" -ne 0 ]; then
     echo "fuzz: $target stopped with exit $code; see $log and $findings/" >&2
-    grep -m 3 -E '^(==[0-9]+==ERROR|SUMMARY|.*runtime error)' "$log" >&2 || true
+    grep -a -m 3 -E '^(==[0-9]+==ERROR|SUMMARY|.*runtime error)' "$log" >&2 || true
     return 1
   fi
 }
