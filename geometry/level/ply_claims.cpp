@@ -1,5 +1,6 @@
 #include "geometry/level/ply_claims.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdint>
 #include <cstdlib>
@@ -13,6 +14,9 @@ namespace probeproxy {
 namespace {
 
 enum class Encoding { Ascii, LittleEndian, BigEndian };
+
+// The line a cut file gets, the same CGAL's failure gives (polygon_soup_file.cpp).
+constexpr const char* kIncomplete = "not a complete ply file (header, counts or data)";
 
 struct Property {
   int size = 0;       // bytes of a scalar, or of each list item
@@ -72,7 +76,9 @@ std::string plyClaimProblem(const std::filesystem::path& file) {
       body = static_cast<std::size_t>(header.tellg());
       break;
     }
-    if (keyword == "format") {
+    // The format comes from the second line only, as CGAL reads it (and the standard places
+    // it); a later format line is ignored by both.
+    if (lineNumber == 2) {
       words >> type;
       encoding = type == "binary_little_endian" ? Encoding::LittleEndian
                  : type == "binary_big_endian"  ? Encoding::BigEndian
@@ -87,19 +93,32 @@ std::string plyClaimProblem(const std::filesystem::path& file) {
                " declares a property before any element";
       }
       Property property;
+      std::string name;
       words >> type;
       if (type == "list") {
         std::string countType, itemType;
-        words >> countType >> itemType;
+        words >> countType >> itemType >> name;
         property.countSize = countTypeSize(countType);
         property.size = property.countSize > 0 ? typeSize(itemType) : 0;
       } else {
+        words >> name;
         property.size = typeSize(type);
+      }
+      // CGAL reads a vertex's x, y, z as float or double whatever the header says: another
+      // type leaves it a null pointer to read through (found by fuzz_level_ply).
+      const std::string& element = elements.back().name;
+      const bool coordinate = name == "x" || name == "y" || name == "z";
+      const bool floating = type == "float" || type == "float32" || type == "double" || type == "float64";
+      if ((element == "vertex" || element == "vertices") && coordinate && property.size > 0 && !floating) {
+        return "PLY header line " + std::to_string(lineNumber) + ": vertex coordinate " + name +
+               " is " + type + ", expected float or double";
       }
       if (property.size > 0) elements.back().properties.push_back(property);
     }
   }
-  if (body == std::string::npos) return {};  // no complete header: CGAL says so
+  // CGAL's reader takes a header that never ends as a whole one and then reads counts from a
+  // stream at its end (found by fuzz_level_ply: 9.5 GB asked for); every PLY has the line.
+  if (body == std::string::npos) return "PLY header has no end_header line";
 
   // The data: skip each value; at each list, the count must fit in what is left.
   std::size_t at = body;
@@ -111,9 +130,19 @@ std::string plyClaimProblem(const std::filesystem::path& file) {
     return bytes.substr(start, at - start);
   };
   for (const Element& element : elements) {
+    // Every instance takes a byte at the least; one of no property (every one of a type CGAL
+    // ignores) takes none, but CGAL still loops over as many as the header claims (found by
+    // fuzz_level_ply: 2.4 * 10^12 of them).
+    if (element.count > end - body) {
+      return "PLY element " + element.name + " claims " + std::to_string(element.count) +
+             " instances, more than the file's " + std::to_string(end - body) + " bytes of data hold";
+    }
+    if (element.properties.empty()) continue;
     for (std::uint64_t i = 0; i < element.count; ++i) {
       for (const Property& property : element.properties) {
-        if (at >= end) return {};  // cut short: CGAL says so
+        // Data cut short: CGAL would go on reading counts from a stream at its end (found by
+        // fuzz_level_ply: a count of garbage, then a loop as long as it says).
+        if (at >= end) return kIncomplete;
         std::uint64_t items = 0, itemBytes = 0;
         if (encoding == Encoding::Ascii) {
           if (property.countSize == 0) {
@@ -123,7 +152,7 @@ std::string plyClaimProblem(const std::filesystem::path& file) {
           items = std::strtoull(skipToken().c_str(), nullptr, 10);
           itemBytes = 2;  // a digit and a separator, at the least
         } else {
-          if (at + property.countSize > end) return {};
+          if (at + std::max(property.countSize, property.size) > end) return kIncomplete;
           if (property.countSize == 0) {
             at += property.size;
             continue;

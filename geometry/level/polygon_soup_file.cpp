@@ -2,9 +2,10 @@
 
 #include "core/errors/input_error.h"
 #include "core/scene/scene_limits.h"
+#include "geometry/level/off_file.h"
 #include "geometry/level/ply_claims.h"
 
-#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/IO/PLY.h>
 #include <CGAL/Simple_cartesian.h>
 
 #include <algorithm>
@@ -27,30 +28,6 @@ std::string lowerExtension(const std::filesystem::path& file) {
   return ext;
 }
 
-// CGAL says only that an OFF did not read; the commonest reason a person can fix is a face with
-// a negative index (some exporters write -1 for "none"). Name that face, or say nothing.
-std::string offFaceProblem(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::string magic;
-  long long vertices = 0, faces = 0, edges = 0;
-  if (!(in >> magic >> vertices >> faces >> edges) || magic != "OFF" || vertices < 0 || faces < 0)
-    return {};
-  double coordinate = 0.0;
-  for (long long i = 0; i < 3 * vertices; ++i)
-    if (!(in >> coordinate)) return {};
-  for (long long f = 0; f < faces; ++f) {
-    long long count = 0, index = 0;
-    if (!(in >> count) || count < 0) return {};
-    for (long long k = 0; k < count; ++k) {
-      if (!(in >> index)) return {};
-      if (index < 0 || index >= vertices)
-        return "face " + std::to_string(f) + " refers to vertex " + std::to_string(index) + " of " +
-               std::to_string(vertices);
-    }
-  }
-  return {};
-}
-
 // A text mesh that spells a coordinate "inf" or "nan" does not read as numbers at all; say
 // what it holds rather than that it is incomplete.
 std::string nonFiniteToken(const std::filesystem::path& file) {
@@ -66,33 +43,51 @@ std::string nonFiniteToken(const std::filesystem::path& file) {
   return {};
 }
 
-// CGAL's OFF reader sizes its ranges from the header's counts, and each face from its own
-// count, before it reads the data that would fill them: a 60-byte file claiming a face of
-// 2^31 corners took 17 GB. These ranges refuse, while CGAL reads, a size that the file or the
-// triangle limit cannot back: no more vertices or faces or corners than half the file's bytes
-// (each takes a digit and a separator at the least), no more faces than the triangle limit,
-// no more vertices than three a triangle.
-struct SizeClaim {
+// CGAL's PLY reader sizes each face from the count before its list; ply_claims.h has checked
+// every count against the bytes left, and this polygon also refuses one past the triangle
+// limit (no face may fan into more triangles than the whole level may hold).
+struct CornerClaim {
   std::size_t size;
-  const char* what;
 };
-struct SoupCaps {
-  std::size_t points = 0, polygons = 0, corners = 0;
-};
-thread_local SoupCaps soupCaps;
-
-template <class T, std::size_t SoupCaps::*cap>
-struct CappedRange : std::vector<T> {
+struct CappedPolygon : std::vector<std::size_t> {
   void resize(std::size_t size) {
-    if (size > soupCaps.*cap) {
-      throw SizeClaim{size, cap == &SoupCaps::points     ? "vertices"
-                            : cap == &SoupCaps::polygons ? "faces"
-                                                         : "corners in a face"};
-    }
-    std::vector<T>::resize(size);
+    if (size > inputLimits().maxTriangles + 2) throw CornerClaim{size};
+    std::vector<std::size_t>::resize(size);
   }
 };
-using Polygon = CappedRange<std::size_t, &SoupCaps::corners>;
+
+// A PLY through CGAL, once ply_claims.h has checked what it claims.
+PolygonSoup readPlyFile(const std::filesystem::path& file) {
+  const std::string claim = plyClaimProblem(file);
+  if (!claim.empty()) throw InputError(file, "malformed mesh: " + claim);
+  std::vector<Point> points;
+  std::vector<CappedPolygon> faces;
+  bool read = false;
+  try {
+    read = CGAL::IO::read_PLY(file.string(), points, faces, CGAL::parameters::verbose(false));
+  } catch (const CornerClaim& corners) {
+    throw InputError(file, "the file claims " + std::to_string(corners.size) +
+                               " corners in a face, over the limit of " +
+                               std::to_string(inputLimits().maxTriangles) +
+                               " triangles (raise it with --max-triangles)");
+  }
+  if (!read) {
+    const std::string nonFinite = nonFiniteToken(file);
+    if (!nonFinite.empty()) {
+      throw InputError(file, "mesh '" + file.stem().string() + "' has a non-finite coordinate (" +
+                                 nonFinite + ")");
+    }
+    throw InputError(file, "malformed mesh: not a complete ply file (header, counts or data)");
+  }
+  PolygonSoup soup;
+  soup.points.reserve(points.size());
+  for (const Point& p : points) soup.points.emplace_back(p.x(), p.y(), p.z());
+  for (const CappedPolygon& face : faces) {
+    soup.corners.insert(soup.corners.end(), face.begin(), face.end());
+    soup.faceEnds.push_back(soup.corners.size());
+  }
+  return soup;
+}
 
 }  // namespace
 
@@ -103,48 +98,14 @@ bool isPolygonSoupFile(const std::filesystem::path& file) {
 
 LevelMesh readPolygonSoupFile(const std::filesystem::path& file, UpAxis fileUp,
                               double metersPerUnit) {
-  if (lowerExtension(file) == ".ply") {
-    const std::string claim = plyClaimProblem(file);
-    if (!claim.empty()) throw InputError(file, "malformed mesh: " + claim);
-  }
-  std::error_code ec;
-  const std::size_t halfTheBytes = std::filesystem::file_size(file, ec) / 2;
-  const std::size_t maxTriangles = inputLimits().maxTriangles;
-  soupCaps = {std::min(halfTheBytes, 3 * maxTriangles), std::min(halfTheBytes, maxTriangles),
-              std::min(halfTheBytes, maxTriangles + 2)};
-  CappedRange<Point, &SoupCaps::points> points;
-  CappedRange<Polygon, &SoupCaps::polygons> faces;
-  bool read = false;
-  try {
-    read = CGAL::IO::read_polygon_soup(file.string(), points, faces, CGAL::parameters::verbose(false));
-  } catch (const SizeClaim& claim) {
-    const std::string claimed = "the file claims " + std::to_string(claim.size) + " " + claim.what;
-    if (claim.size > halfTheBytes) {
-      throw InputError(file, "malformed mesh: " + claimed + ", more than its " +
-                                 std::to_string(std::filesystem::file_size(file, ec)) + " bytes can hold");
-    }
-    throw InputError(file, claimed + ", over the limit of " + std::to_string(maxTriangles) +
-                               " triangles (raise it with --max-triangles)");
-  }
-  if (!read) {
-    const std::string face = lowerExtension(file) == ".off" ? offFaceProblem(file) : "";
-    if (!face.empty()) throw InputError(file, "malformed mesh: " + face);
-    const std::string nonFinite = nonFiniteToken(file);
-    if (!nonFinite.empty()) {
-      throw InputError(file, "mesh '" + file.stem().string() + "' has a non-finite coordinate (" +
-                                 nonFinite + ")");
-    }
-    throw InputError(file, "malformed mesh: not a complete " + lowerExtension(file).substr(1) +
-                               " file (header, counts or data)");
-  }
-
+  const PolygonSoup soup = lowerExtension(file) == ".off" ? readOffFile(file) : readPlyFile(file);
   LevelMesh level;
   LevelPart part;
   part.name = file.stem().string();
   part.file = file;
-  level.positionsMeters.reserve(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const glm::dvec3 v(points[i].x(), points[i].y(), points[i].z());
+  level.positionsMeters.reserve(soup.points.size());
+  for (std::size_t i = 0; i < soup.points.size(); ++i) {
+    const glm::dvec3 v = soup.points[i];
     if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
       std::ostringstream problem;
       problem << "mesh '" << part.name << "' vertex " << i << " has a non-finite coordinate ("
@@ -154,19 +115,29 @@ LevelMesh readPolygonSoupFile(const std::filesystem::path& file, UpAxis fileUp,
     const glm::dvec3 inFile = v * metersPerUnit;
     level.positionsMeters.emplace_back(fileUp == UpAxis::Y ? zUpFromYUp(inFile) : inFile);
   }
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    for (const std::size_t index : faces[f]) {
-      // A negative index in the file reads as a huge unsigned one: both are out of range.
-      if (index >= points.size()) {
-        const auto asSigned = static_cast<long long>(index);
+  // The fans' triangles counted before any is made: the limit names the level's whole count.
+  std::size_t triangles = 0, begin = 0;
+  for (const std::size_t end : soup.faceEnds) {
+    triangles += end - begin > 2 ? end - begin - 2 : 0;
+    begin = end;
+  }
+  if (triangles > inputLimits().maxTriangles) throw InputError(file, triangleLimitProblem(triangles));
+  level.triangles.reserve(triangles);
+  begin = 0;
+  for (std::size_t f = 0; f < soup.faceEnds.size(); begin = soup.faceEnds[f++]) {
+    const std::size_t end = soup.faceEnds[f];
+    for (std::size_t k = begin; k < end; ++k) {
+      // A negative index in a PLY reads as a huge unsigned one: both are out of range.
+      if (soup.corners[k] >= soup.points.size()) {
+        const auto asSigned = static_cast<long long>(soup.corners[k]);
         throw InputError(file, "mesh '" + part.name + "' face " + std::to_string(f) +
                                    " refers to vertex " + std::to_string(asSigned) + " of " +
-                                   std::to_string(points.size()));
+                                   std::to_string(soup.points.size()));
       }
     }
     // Points and lines carry no surface; polygons become fans, as level faces are convex.
-    for (std::size_t k = 2; k < faces[f].size(); ++k) {
-      level.triangles.emplace_back(faces[f][0], faces[f][k - 1], faces[f][k]);
+    for (std::size_t k = begin + 2; k < end; ++k) {
+      level.triangles.emplace_back(soup.corners[begin], soup.corners[k - 1], soup.corners[k]);
     }
   }
   part.triangleCount = static_cast<std::uint32_t>(level.triangles.size());
