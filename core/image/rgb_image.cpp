@@ -19,6 +19,8 @@ float linearFromSrgb(float encoded) {
   return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
 }
 
+constexpr int kMaxImageSide = 65536;
+
 }  // namespace
 
 RgbImage readRgbImage(const std::filesystem::path& file, const std::string& what, SrgbImages srgb) {
@@ -35,9 +37,13 @@ RgbImage readRgbImage(const std::filesystem::path& file, const std::string& what
   }
   // The header's size, checked before the buffer it implies is taken: a few bytes of .hdr can
   // claim a negative height (found by fuzz_cubemap_image) or a billion pixels.
-  if (spec.width < 1 || spec.height < 1) {
+  // And a side past 65536 pixels: OpenImageIO 2.4 converts in chunks of 256 scanlines whatever
+  // the height, so a one-line image 5 million pixels wide asked it for 15.7 GB (found by
+  // fuzz_cubemap_image). A 16K-face equirect is 65536 wide.
+  if (spec.width < 1 || spec.height < 1 || spec.width > kMaxImageSide || spec.height > kMaxImageSide) {
     throw InputError(file, what + " claims " + std::to_string(spec.width) + " x " +
-                               std::to_string(spec.height) + " pixels");
+                               std::to_string(spec.height) + " pixels, expected 1 to " +
+                               std::to_string(kMaxImageSide) + " on a side");
   }
   const int channels = spec.nchannels == 1 ? 1 : 3;
   const std::size_t count = static_cast<std::size_t>(spec.width) * spec.height;
