@@ -102,6 +102,25 @@ TEST_F(LevelLoading, QuadsAndPolygonsAreTriangulated) {
   EXPECT_EQ(loadLevelMeshFile(file, UpAxis::Z, 1.0).triangles.size(), 3u);
 }
 
+// Our OFF reader (geometry/level/off_file.h) on the variants real exporters write: the same
+// triangle from plain OFF, COFF with colours, NOFF with normals, comments, counts on the
+// keyword's line, a face with its colour, and no keyword at all.
+TEST_F(LevelLoading, OffVariantsReadTheSameTriangle) {
+  const std::vector<glm::vec3> triangle{{0, 0, 0}, {1, 0, 0}, {0, 2.5f, 0}};
+  const char* variants[] = {
+      "OFF\n3 1 0\n0 0 0\n1 0 0\n0 2.5 0\n3 0 1 2\n",
+      "COFF\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 2.5 0 0 0 255 255\n3 0 1 2\n",
+      "NOFF # normals follow\n3 1 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 2.5 0 0 0 1\n3 0 1 2 1 0 0\n",
+      "OFF 3 1 0\n# a comment line\n\n0 0 0\n1 0 0 # trailing\n0 2.5 0\n3 0 1 2\n",
+      "3 1 0\n0 0 0\n1 0 0\n0 2.5 0\n3 0 1 2\n",
+  };
+  int n = 0;
+  for (const char* text : variants) {
+    const auto file = write("variant" + std::to_string(n++) + ".off", text);
+    EXPECT_EQ(triangleCorners(loadLevelMeshFile(file, UpAxis::Z, 1.0)), triangle) << text;
+  }
+}
+
 struct BadMesh {
   const char* name;
   const char* text;
@@ -135,6 +154,10 @@ INSTANTIATE_TEST_SUITE_P(
                 "end_header\n0 0 0\n1 0 0\n0 inf 0\n3 0 1 2\n",
                 "has a non-finite coordinate"},
         BadMesh{"out_of_range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n", "malformed mesh"},
+        BadMesh{"binary.off", "OFF BINARY\n", "binary OFF is not read"},
+        BadMesh{"four_d.off", "4OFF\n1 0 0\n0 0 0 1\n", "4OFF (4D or n-dimensional) is not read"},
+        BadMesh{"short_colour.off", "COFF\n3 1 0\n0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+                "not a complete off file"},
         // Read only as the format its extension names: no other importer tries its content.
         BadMesh{"garbage.obj", "this is not a mesh\n\x01\x02\x03 at all\n",
                 "malformed mesh: not a .obj file (its content does not start as one)"},
