@@ -45,9 +45,11 @@ std::string gltfClaimProblem(const std::filesystem::path& file) {
       const bool positioned = primitive.is_object() && primitive.contains("attributes") &&
                               primitive["attributes"].is_object() &&
                               primitive["attributes"].contains("POSITION");
-      if (!positioned) {
-        return "glTF mesh " + std::to_string(m) + " primitive " + std::to_string(p) +
-               " has no POSITION attribute";
+      const std::string where = "glTF mesh " + std::to_string(m) + " primitive " + std::to_string(p);
+      if (!positioned) return where + " has no POSITION attribute";
+      if (primitive.contains("mode") && primitive["mode"] == 2) {
+        return where + " is a line loop (mode 2), which Assimp 5.2 cannot read safely; a level's "
+                       "lines carry no surface: remove it";
       }
     }
   }

@@ -167,6 +167,10 @@ INSTANTIATE_TEST_SUITE_P(
                 "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [{\"primitives\": "
                 "[{\"attributes\": {}, \"mode\": 2}]}]}",
                 "malformed mesh: glTF mesh 0 primitive 0 has no POSITION attribute"},
+        BadMesh{"line_loop.gltf",
+                "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [{\"primitives\": "
+                "[{\"attributes\": {\"POSITION\": 0}, \"mode\": 2}]}]}",
+                "malformed mesh: glTF mesh 0 primitive 0 is a line loop (mode 2)"},
         BadMesh{"index_past_end.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n", "malformed mesh"},
         BadMesh{"lines_only.obj", "v 0 0 0\nv 1 0 0\nl 1 2\n", "mesh has no triangles"},
         BadMesh{"empty.glb", "", "mesh file is empty"},
