@@ -65,13 +65,14 @@ case "$job" in
   test) ctest --test-dir "$build" --output-on-failure -j"$(nproc)" ;;
   build | module) ;;
   sanitize)
-    # The suite levels once in build/ (Blender renders them), then every unit and e2e test of
-    # a sanitized tree reading them. A sanitizer report stops the program, so it fails its test.
+    # The suite levels once in build/ (Blender renders them) and the corpus (setup.sh build has
+    # fetched it), then every unit and e2e test of a sanitized tree reading them. A sanitizer report stops the program, so it fails its test.
     ctest --test-dir "$build" -R '^suite_generate$' --output-on-failure
     asan="$here/build-asan"
     cmake -S "$here" -B "$asan" -DCMAKE_BUILD_TYPE=Release -DPROBEPROXY_SANITIZE=ON \
       -DPROBEPROXY_SUITE_DIR="$build/scenes" >/dev/null
     cmake --build "$asan" -j"$(nproc)"
+    [ -e "$asan/corpus" ] || ln -s "$build/corpus" "$asan/corpus"  # the real maps, fetched once
     ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS="suppressions=$here/tests/fuzz/lsan.supp" \
       ctest --test-dir "$asan" -L 'unit|e2e' -E '^suite_generate$' -FA '^suite$' \
       --output-on-failure -j"$(nproc)"
