@@ -54,7 +54,7 @@ cmake --build "$build" -j"$(nproc)" "${targets[@]}"
 # build/corpus/ once, then one scene per map with a probe per spawn point. Cached: a second
 # run fetches nothing and rewrites no scene whose bytes are the same.
 # The demo and the add-on's module do not need it.
-if [ "$job" = test ] || [ "$job" = build ]; then
+if [ "$job" = test ] || [ "$job" = build ] || [ "$job" = sanitize ]; then
   data=$("$here/scripts/corpus/fetch_nexuiz.sh" "$build")
   /usr/bin/python3 "$here/scripts/corpus/write_scenes.py" "$build/plugin/cli/probeproxy" \
     "$data/data.pk3" "$build/corpus/scenes"
