@@ -1,7 +1,10 @@
 #include "geometry/level/gltf_claims.h"
 
+#include "core/scene/scene_limits.h"
+
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -33,7 +36,17 @@ std::string gltfClaimProblem(const std::filesystem::path& file) {
   for (char& c : text)
     if (static_cast<unsigned char>(c) >= 0x80) c = '?';
   const nlohmann::json gltf = nlohmann::json::parse(text, nullptr, false);
-  if (!gltf.is_object() || !gltf.contains("meshes") || !gltf["meshes"].is_array()) return {};
+  if (!gltf.is_object()) return {};
+  // Buffers may live in files beside it, which the mesh file's own size does not count.
+  if (gltf.contains("buffers") && gltf["buffers"].is_array()) {
+    double declared = 0.0;
+    for (const nlohmann::json& buffer : gltf["buffers"])
+      if (buffer.is_object() && buffer.contains("byteLength") && buffer["byteLength"].is_number())
+        declared += buffer["byteLength"].get<double>();
+    if (declared > double(inputLimits().maxFileBytes))
+      return fileLimitProblem("its buffers' declared byteLength", std::uint64_t(std::min(declared, 1e18)));
+  }
+  if (!gltf.contains("meshes") || !gltf["meshes"].is_array()) return {};
   const nlohmann::json& meshes = gltf["meshes"];
   for (std::size_t m = 0; m < meshes.size(); ++m) {
     if (!meshes[m].is_object() || !meshes[m].contains("primitives") ||

@@ -3,7 +3,8 @@
 // a line loop (mode 2) whose indices or positions are not what they claim makes its glTF2
 // importer read through a null pointer, with or without a POSITION attribute (found by
 // fuzz_level_glb). probeproxy reads triangles, and neither a line loop nor a primitive without
-// positions has any, so such a file is refused first, naming the primitive.
+// positions has any, so such a file is refused first, naming the primitive. So is one whose
+// buffers declare more bytes than --max-file-mb (a .gltf's buffers may be other files).
 
 #include <filesystem>
 #include <string>
