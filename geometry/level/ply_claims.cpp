@@ -21,6 +21,7 @@ constexpr const char* kIncomplete = "not a complete ply file (header, counts or 
 struct Property {
   int size = 0;       // bytes of a scalar, or of each list item
   int countSize = 0;  // bytes of a list's count; 0 for a scalar
+  bool countSigned = false;  // CGAL casts a negative count to size_t: 2^64 - n items
 };
 
 struct Element {
@@ -99,6 +100,8 @@ std::string plyClaimProblem(const std::filesystem::path& file) {
         std::string countType, itemType;
         words >> countType >> itemType >> name;
         property.countSize = countTypeSize(countType);
+        property.countSigned = countType == "char" || countType == "int8" || countType == "short" ||
+                               countType == "int16" || countType == "int" || countType == "int32";
         property.size = property.countSize > 0 ? typeSize(itemType) : 0;
       } else {
         words >> name;
@@ -158,6 +161,10 @@ std::string plyClaimProblem(const std::filesystem::path& file) {
             continue;
           }
           items = binaryCount(bytes.data() + at, property.countSize, encoding);
+          if (property.countSigned && (items >> (8 * property.countSize - 1)) != 0) {
+            return "PLY element " + element.name + " " + std::to_string(i) +
+                   ": a list of a negative number of items";
+          }
           at += property.countSize;
           itemBytes = property.size;
         }
