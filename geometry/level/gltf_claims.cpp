@@ -14,17 +14,28 @@ namespace probeproxy {
 
 namespace {
 
-// The JSON of a .gltf, or of a .glb's first chunk; empty when the container is malformed.
-std::string gltfJson(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::string bytes{std::istreambuf_iterator<char>(in), {}};
-  if (bytes.size() < 4 || bytes.compare(0, 4, "glTF") != 0) return bytes;
-  std::uint32_t length = 0, type = 0;
-  if (bytes.size() < 20) return {};
-  std::memcpy(&length, bytes.data() + 12, 4);
-  std::memcpy(&type, bytes.data() + 16, 4);
-  if (type != 0x4E4F534Au || length > bytes.size() - 20) return {};  // "JSON"
-  return bytes.substr(20, length);
+std::uint32_t u32(const std::string& bytes, std::size_t at) {
+  std::uint32_t value = 0;
+  std::memcpy(&value, bytes.data() + at, 4);
+  return value;  // GLB is little-endian, as every machine this builds for
+}
+
+// A .glb's chunks must fit in the file: Assimp takes each chunk's length as given and asks for
+// that much memory first (found by fuzz_level_glb: a 40-byte file whose JSON chunk claims 4 GB).
+// Empty when they fit, with `json` the JSON chunk.
+std::string glbChunkProblem(const std::string& bytes, std::string& json) {
+  if (bytes.size() < 20) return {};  // too short for a chunk: Assimp says so
+  std::size_t at = 12;
+  for (int chunk = 0; at + 8 <= bytes.size(); ++chunk) {
+    const std::uint32_t length = u32(bytes, at), type = u32(bytes, at + 4);
+    if (length > bytes.size() - at - 8) {
+      return "GLB chunk " + std::to_string(chunk) + " claims " + std::to_string(length) +
+             " bytes, past the end of the file's " + std::to_string(bytes.size());
+    }
+    if (chunk == 0 && type == 0x4E4F534Au) json = bytes.substr(at + 8, length);  // "JSON"
+    at += 8 + std::size_t(length);
+  }
+  return {};
 }
 
 }  // namespace
@@ -32,7 +43,14 @@ std::string gltfJson(const std::filesystem::path& file) {
 std::string gltfClaimProblem(const std::filesystem::path& file) {
   // Assimp's JSON parser takes strings that are not UTF-8; nlohmann's refuses them. Every
   // JSON token outside a string is ASCII, so bytes past it only ever stand in a string.
-  std::string text = gltfJson(file);
+  std::ifstream in(file, std::ios::binary);
+  const std::string bytes{std::istreambuf_iterator<char>(in), {}};
+  std::string text = bytes;
+  if (bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0) {
+    text.clear();
+    const std::string chunks = glbChunkProblem(bytes, text);
+    if (!chunks.empty()) return chunks;
+  }
   for (char& c : text)
     if (static_cast<unsigned char>(c) >= 0x80) c = '?';
   const nlohmann::json gltf = nlohmann::json::parse(text, nullptr, false);
@@ -70,3 +88,4 @@ std::string gltfClaimProblem(const std::filesystem::path& file) {
 }
 
 }  // namespace probeproxy
+

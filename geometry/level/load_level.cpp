@@ -187,12 +187,14 @@ LevelMesh loadLevelMeshFile(const std::filesystem::path& file, UpAxis fileUp,
 
   const std::lock_guard<std::mutex> lock(assimpMutex);
   AssimpErrorLog errors;
-  Assimp::Importer importer;
-  requireExtensionImporterAccepts(importer, file);
+  // Before any Assimp code reads the file: its glTF importer's signature check already takes
+  // a GLB chunk's length as given.
   if (const std::string ext = lowerExtension(file); ext == ".gltf" || ext == ".glb") {
     const std::string claim = gltfClaimProblem(file);
     if (!claim.empty()) throw InputError(file, "malformed mesh: " + claim);
   }
+  Assimp::Importer importer;
+  requireExtensionImporterAccepts(importer, file);
   // Polygons are triangulated; nothing is welded, fixed or removed, so what we measure is the
   // level as authored. Points and lines are skipped below: they carry no surface.
   const aiScene* scene = importer.ReadFile(file.string(), aiProcess_Triangulate);
