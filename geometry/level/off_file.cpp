@@ -51,8 +51,11 @@ class OffLines {
   std::size_t at_ = 0;
 };
 
+// A whole word as a number; a leading '+' is taken, as the stream readers OFF files were
+// written for take it (from_chars does not).
 template <typename T>
 bool parse(std::string_view word, T& value) {
+  if (word.size() > 1 && word[0] == '+' && word[1] != '-') word.remove_prefix(1);
   const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
   return error == std::errc() && end == word.data() + word.size();
 }

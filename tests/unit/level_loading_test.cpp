@@ -113,6 +113,7 @@ TEST_F(LevelLoading, OffVariantsReadTheSameTriangle) {
       "NOFF # normals follow\n3 1 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 2.5 0 0 0 1\n3 0 1 2 1 0 0\n",
       "OFF 3 1 0\n# a comment line\n\n0 0 0\n1 0 0 # trailing\n0 2.5 0\n3 0 1 2\n",
       "3 1 0\n0 0 0\n1 0 0\n0 2.5 0\n3 0 1 2\n",
+      "OFF\n3 1 0\n+0 0 0\n1.0e0 0 0\n0 +2.5 0\n3 0 1 2\n",
   };
   int n = 0;
   for (const char* text : variants) {
