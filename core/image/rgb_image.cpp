@@ -35,12 +35,12 @@ RgbImage readRgbImage(const std::filesystem::path& file, const std::string& what
     throw InputError(file, what + " has " + std::to_string(spec.nchannels) +
                                " channels, expected RGB (3 or more) or grey (1)");
   }
-  // The header's size, checked before the buffer it implies is taken: a few bytes of .hdr can
-  // claim a negative height (found by fuzz_cubemap_image) or a billion pixels.
-  // And a side past 65536 pixels: OpenImageIO 2.4 converts in chunks of 256 scanlines whatever
-  // the height, so a one-line image 5 million pixels wide asked it for 15.7 GB (found by
-  // fuzz_cubemap_image). A 16K-face equirect is 65536 wide.
-  if (spec.width < 1 || spec.height < 1 || spec.width > kMaxImageSide || spec.height > kMaxImageSide) {
+  // The header's size, checked before the buffers it implies are taken (both found by
+  // fuzz_cubemap_image): a few bytes of .hdr can claim a negative height, and OpenImageIO 2.4
+  // converts 256 scanlines at a time whatever the height, so one line 5 million pixels wide
+  // asked it for 15.7 GB. A 16K-face equirect is 65536 wide.
+  if (spec.width < 1 || spec.height < 1 || spec.width > kMaxImageSide ||
+      spec.height > kMaxImageSide) {
     throw InputError(file, what + " claims " + std::to_string(spec.width) + " x " +
                                std::to_string(spec.height) + " pixels, expected 1 to " +
                                std::to_string(kMaxImageSide) + " on a side");
@@ -48,7 +48,7 @@ RgbImage readRgbImage(const std::filesystem::path& file, const std::string& what
   const int channels = spec.nchannels == 1 ? 1 : 3;
   const std::size_t count = static_cast<std::size_t>(spec.width) * spec.height;
   if (const std::uint64_t decoded = std::uint64_t(count) * 3 * sizeof(float);
-      decoded > inputLimits().maxFileBytes) {
+      decoded > inputLimits().maxFileBytes()) {
     throw InputError(file, fileLimitProblem(what + " decoded", decoded));
   }
   std::vector<float> read(count * channels);

@@ -7,8 +7,8 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <string>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace probeproxy {
@@ -53,8 +53,8 @@ void drawErrorLegend(Rgb8Canvas& canvas, int left, float scaleMax, float peak) {
   for (int stop = 0; stop <= 3; ++stop) {
     const int y = kBarTop + (kBarHeight - 1) * (3 - stop) / 3;
     canvas.fill(left + 28, y, 6, 1, 0, 0, 0);
-    drawText(canvas, left + 40, y - 6, number(scaleMax * stop / 3.0) + (stop == 3 ? "+" : ""), 2,
-             0, 0, 0);
+    drawText(canvas, left + 40, y - 6, number(scaleMax * stop / 3.0) + (stop == 3 ? "+" : ""), 2, 0,
+             0, 0);
   }
   int y = kBarTop + kBarHeight + 16;
   canvas.fill(left, y, 28, 18, kMissCyan[0], kMissCyan[1], kMissCyan[2]);
@@ -106,9 +106,9 @@ void writeErrorComparisonPng(const std::filesystem::path& file, const ErrorCompa
       for (int col = 0; col < w; ++col) {
         const std::size_t i = static_cast<std::size_t>(row) * w + col;
         const bool inside = images.mask[i] != 0, missed = images.miss[i] != 0;
-        const Rgb8 c = panel == 0  ? exposed(images.referenceRgb, i)
-                       : !inside   ? kOutsideMask
-                       : missed    ? kMissCyan
+        const Rgb8 c = panel == 0   ? exposed(images.referenceRgb, i)
+                       : !inside    ? kOutsideMask
+                       : missed     ? kMissCyan
                        : panel == 1 ? exposed(images.reconstructionRgb, i)
                                     : heat(images.absError[i] / images.scaleMax);
         canvas.fill(left + col * zoom, kTitleHeight + row * zoom, zoom, zoom, c[0], c[1], c[2]);

@@ -24,11 +24,19 @@ inline constexpr double kMaxMetersPerUnit = 1e6;
 // (0.81 GB at 5 million, 2.9 GB at 20 million), so 50 million stay near 7 GiB, where the
 // largest Quake 3 maps hold about 10^5; a 1 GiB binary PLY holds about 55 million.
 struct InputLimits {
-  std::size_t maxTriangles = 50'000'000;    // over the whole level, sky included
-  std::uint64_t maxFileBytes = 1ull << 30;  // one level file on disk, or one .pk3 entry inflated
+  std::uint64_t maxTriangles = 50'000'000;  // over the whole level, sky included
+  // One level file on disk, a glTF's declared buffers, one .pk3 entry inflated, one image
+  // decoded; in MiB as the option spells it.
+  std::uint64_t maxFileMebibytes = 1024;
+
+  std::uint64_t maxFileBytes() const { return maxFileMebibytes << 20; }
+  // Throws InputError ("option max_triangles: 0 is not positive", "option max_file_mb: ... is
+  // outside [1, 1048576]") as every option of the library is refused (option_checks.h).
+  void check() const;
 };
 
-// The limits every reader checks. Process-wide: front ends set them once, before reading.
+// The limits every reader checks. Process-wide: front ends set them once, before reading;
+// setInputLimits checks them first.
 InputLimits inputLimits();
 void setInputLimits(const InputLimits& limits);
 

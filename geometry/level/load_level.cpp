@@ -6,9 +6,9 @@
 #include "geometry/level/gltf_claims.h"
 #include "geometry/level/polygon_soup_file.h"
 
+#include <assimp/BaseImporter.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
-#include <assimp/BaseImporter.h>
 #include <assimp/DefaultLogger.hpp>
 #include <assimp/Importer.hpp>
 #include <assimp/LogStream.hpp>
@@ -41,7 +41,8 @@ void requireReadableMeshFile(const std::filesystem::path& file) {
   if (!std::filesystem::is_regular_file(file, ec)) throw InputError(file, "not a regular file");
   const std::uintmax_t bytes = std::filesystem::file_size(file, ec);
   if (bytes == 0) throw InputError(file, "mesh file is empty");
-  if (bytes > inputLimits().maxFileBytes) throw InputError(file, fileLimitProblem("mesh file", bytes));
+  if (bytes > inputLimits().maxFileBytes())
+    throw InputError(file, fileLimitProblem("mesh file", bytes));
 }
 
 std::string describeVertex(const aiVector3D& v) {
@@ -144,16 +145,25 @@ std::mutex assimpMutex;
 // the file it tries every other importer on the content: a broken .gltf was then read as
 // OpenGEX, whose parser reads past its buffer (found by fuzz_level_gltf; Assimp 5.2.5). A
 // level file is read only as the format its extension names, or refused.
-void requireExtensionImporterAccepts(Assimp::Importer& importer, const std::filesystem::path& file) {
+void requireExtensionImporterAccepts(Assimp::Importer& importer,
+                                     const std::filesystem::path& file) {
   const std::string ext = lowerExtension(file).substr(1);
   for (std::size_t i = 0; i < importer.GetImporterCount(); ++i) {
     std::istringstream extensions(importer.GetImporterInfo(i)->mFileExtensions);
     for (std::string e; extensions >> e;) {
-      if (e == ext && importer.GetImporter(i)->CanRead(file.string(), importer.GetIOHandler(), true))
+      if (e == ext &&
+          importer.GetImporter(i)->CanRead(file.string(), importer.GetIOHandler(), true))
         return;
     }
   }
-  throw InputError(file, "malformed mesh: not a ." + ext + " file (its content does not start as one)");
+  throw InputError(file,
+                   "malformed mesh: not a ." + ext + " file (its content does not start as one)");
+}
+
+void requireTrianglesWithinLimit(const std::filesystem::path& source, const LevelMesh& mesh) {
+  const std::size_t triangles = mesh.triangles.size() + mesh.skyTriangles.size();
+  if (triangles > inputLimits().maxTriangles)
+    throw InputError(source, triangleLimitProblem(triangles));
 }
 
 }  // namespace
@@ -161,8 +171,7 @@ void requireExtensionImporterAccepts(Assimp::Importer& importer, const std::file
 // Every reader converts to float metres; a coordinate past the scene limit (or one that
 // overflowed float on the way) would reach Embree, so it stops here, whatever the format.
 void requireLevelWithinLimits(const std::filesystem::path& source, const LevelMesh& mesh) {
-  const std::size_t triangles = mesh.triangles.size() + mesh.skyTriangles.size();
-  if (triangles > inputLimits().maxTriangles) throw InputError(source, triangleLimitProblem(triangles));
+  requireTrianglesWithinLimit(source, mesh);
   for (std::size_t i = 0; i < mesh.positionsMeters.size(); ++i) {
     const glm::vec3 p = mesh.positionsMeters[i];
     if (std::abs(p.x) <= kMaxSceneMeters && std::abs(p.y) <= kMaxSceneMeters &&
@@ -239,11 +248,10 @@ LevelMesh loadLevel(const Scene& scene) {
   LevelMesh level;
   for (const LevelMeshRef& ref : scene.level) {
     appendLevelMesh(level, loadLevelMeshRef(ref, scene.metersPerUnit));
-    // Checked per mesh too, so that many meshes each within the limit cannot add up past it
-    // (or past the 32-bit indices) before the last one is read.
-    requireLevelWithinLimits(scene.file, level);
+    // Each mesh's vertices were checked as it was read; the count is checked as the meshes add
+    // up, so that many within the limit cannot pass it (or the 32-bit indices) together.
+    requireTrianglesWithinLimit(scene.file, level);
   }
-  requireLevelWithinLimits(scene.file, level);
   return level;
 }
 

@@ -77,7 +77,8 @@ PolygonSoup readOffFile(const std::filesystem::path& file) {
   std::cmatch m;
   if (std::regex_match(words[0].data(), words[0].data() + words[0].size(), m, keyword)) {
     if (m[2].matched || m[3].matched)
-      throw fail(std::string(words[0]) + " (4D or n-dimensional) is not read: save the level as 3D OFF or PLY");
+      throw fail(std::string(words[0]) +
+                 " (4D or n-dimensional) is not read: save the level as 3D OFF or PLY");
     if (words.size() > 1 && words[1] == "BINARY")
       throw fail("binary OFF is not read: save the level as ASCII OFF or PLY");
     first = 1;  // the counts on the keyword's line, or
@@ -108,8 +109,9 @@ PolygonSoup readOffFile(const std::filesystem::path& file) {
     if (corners < 0)
       throw fail("face " + std::to_string(f) + " has " + std::to_string(corners) + " corners");
     if (std::size_t(corners) > lines.bytes() / 2) {
-      throw fail("the file claims " + std::to_string(corners) + " corners in a face, more than its " +
-                 std::to_string(lines.bytes()) + " bytes can hold");
+      throw fail("the file claims " + std::to_string(corners) +
+                 " corners in a face, more than its " + std::to_string(lines.bytes()) +
+                 " bytes can hold");
     }
     if (words.size() < std::size_t(corners) + 1) throw incomplete();
     for (long long k = 1; k <= corners; ++k) {

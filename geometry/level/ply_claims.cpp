@@ -19,8 +19,8 @@ enum class Encoding { Ascii, LittleEndian, BigEndian };
 constexpr const char* kIncomplete = "not a complete ply file (header, counts or data)";
 
 struct Property {
-  int size = 0;       // bytes of a scalar, or of each list item
-  int countSize = 0;  // bytes of a list's count; 0 for a scalar
+  int size = 0;              // bytes of a scalar, or of each list item
+  int countSize = 0;         // bytes of a list's count; 0 for a scalar
   bool countSigned = false;  // CGAL casts a negative count to size_t: 2^64 - n items
 };
 
@@ -64,17 +64,19 @@ std::uint64_t binaryCount(const char* at, int size, Encoding encoding) {
 std::string plyClaimProblem(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   const std::string bytes{std::istreambuf_iterator<char>(in), {}};
-  std::istringstream header(bytes);
-  std::string line;
   Encoding encoding = Encoding::Ascii;
   std::vector<Element> elements;
   std::size_t body = std::string::npos;
-  for (int lineNumber = 1; std::getline(header, line); ++lineNumber) {
-    std::istringstream words(line);
+  // The header line by line, as CGAL's getline reads it; only each line is copied.
+  for (std::size_t start = 0, lineNumber = 1; start < bytes.size(); ++lineNumber) {
+    std::size_t end = bytes.find('\n', start);
+    if (end == std::string::npos) end = bytes.size();
+    std::istringstream words(bytes.substr(start, end - start));
+    start = end + 1;
     std::string keyword, type;
     words >> keyword;
     if (keyword == "end_header") {
-      body = static_cast<std::size_t>(header.tellg());
+      body = std::min(start, bytes.size());
       break;
     }
     // The format comes from the second line only, as CGAL reads it (and the standard places
@@ -111,8 +113,10 @@ std::string plyClaimProblem(const std::filesystem::path& file) {
       // type leaves it a null pointer to read through (found by fuzz_level_ply).
       const std::string& element = elements.back().name;
       const bool coordinate = name == "x" || name == "y" || name == "z";
-      const bool floating = type == "float" || type == "float32" || type == "double" || type == "float64";
-      if ((element == "vertex" || element == "vertices") && coordinate && property.size > 0 && !floating) {
+      const bool floating =
+          type == "float" || type == "float32" || type == "double" || type == "float64";
+      if ((element == "vertex" || element == "vertices") && coordinate && property.size > 0 &&
+          !floating) {
         return "PLY header line " + std::to_string(lineNumber) + ": vertex coordinate " + name +
                " is " + type + ", expected float or double";
       }
@@ -138,7 +142,8 @@ std::string plyClaimProblem(const std::filesystem::path& file) {
     // fuzz_level_ply: 2.4 * 10^12 of them).
     if (element.count > end - body) {
       return "PLY element " + element.name + " claims " + std::to_string(element.count) +
-             " instances, more than the file's " + std::to_string(end - body) + " bytes of data hold";
+             " instances, more than the file's " + std::to_string(end - body) +
+             " bytes of data hold";
     }
     if (element.properties.empty()) continue;
     for (std::uint64_t i = 0; i < element.count; ++i) {

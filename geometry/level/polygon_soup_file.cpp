@@ -121,7 +121,8 @@ LevelMesh readPolygonSoupFile(const std::filesystem::path& file, UpAxis fileUp,
     triangles += end - begin > 2 ? end - begin - 2 : 0;
     begin = end;
   }
-  if (triangles > inputLimits().maxTriangles) throw InputError(file, triangleLimitProblem(triangles));
+  if (triangles > inputLimits().maxTriangles)
+    throw InputError(file, triangleLimitProblem(triangles));
   level.triangles.reserve(triangles);
   begin = 0;
   for (std::size_t f = 0; f < soup.faceEnds.size(); begin = soup.faceEnds[f++]) {

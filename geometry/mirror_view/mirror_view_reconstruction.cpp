@@ -91,9 +91,10 @@ void writeMirrorViewImages(const std::filesystem::path& folder, const std::strin
   std::filesystem::create_directories(folder);
   const int w = ref.view.width, h = ref.view.height;
   const std::vector<float> absError = absErrorPerPixel(ref.cycles.rgb, rec.rgb, ref.mask, rec.miss);
-  writeErrorComparisonPng(folder / (stem + "_heatmap.png"),
-                          {w, h, ref.cycles.rgb, rec.rgb, absError, ref.mask, rec.miss,
-                           static_cast<float>(rec.error.peak), static_cast<float>(rec.error.peak / 4.0)});
+  writeErrorComparisonPng(
+      folder / (stem + "_heatmap.png"),
+      {w, h, ref.cycles.rgb, rec.rgb, absError, ref.mask, rec.miss,
+       static_cast<float>(rec.error.peak), static_cast<float>(rec.error.peak / 4.0)});
   writeMissMaskPng(folder / (stem + "_miss.png"), w, h, ref.mask, rec.miss);
   writeExr(folder / (stem + ".exr"), w, h, {"R", "G", "B"}, rec.rgb);
 }

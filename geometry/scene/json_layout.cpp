@@ -99,8 +99,8 @@ class Layout {
       text += spaces(itemIndent);
       if (isObject) {
         const std::string prefix = keyPrefix(value.members[i].key);
-        text += prefix + render(value.members[i].value, itemIndent + prefix.size(), itemIndent,
-                                suffixWidth);
+        text += prefix +
+                render(value.members[i].value, itemIndent + prefix.size(), itemIndent, suffixWidth);
       } else {
         text += render(value.elements[i], itemIndent, itemIndent, suffixWidth);
       }

@@ -25,7 +25,7 @@ struct JsonLayoutValue {
   enum class Kind { Scalar, Array, Object };
   Kind kind = Kind::Scalar;
   std::string scalarText;  // Kind::Scalar: the JSON token exactly as it is to be written
-  std::vector<JsonLayoutValue> elements;                         // Kind::Array
+  std::vector<JsonLayoutValue> elements;  // Kind::Array
   // Kind::Object, in order. A struct of its own rather than std::pair: a vector may hold a
   // type not yet complete, a pair may not (clang's libstdc++ checks refuse it).
   std::vector<JsonLayoutMember> members;

@@ -1,13 +1,13 @@
 #pragma once
-// The scene file (`*.scene.json`, schema in docs/cli_and_formats.md "Scene file"): reading with full
-// validation, and writing in the one canonical layout.
+// The scene file (`*.scene.json`, schema in docs/cli_and_formats.md "Scene file"): reading with
+// full validation, and writing in the one canonical layout.
 //
 // Frames: a Scene is always in the world frame (Z up, metres); the file may be Y-up and in
 // other units (`up`, `meters_per_unit`). Reading converts to the world frame once
 // (core/scene/world_frame.h), writing converts back, so a Scene never holds file units.
 //
-// Canonical form: the bytes sceneFileJson writes (docs/cli_and_formats.md's example is one). It is a fixed
-// point: reading a canonical file and writing it again gives the same bytes, whatever its
+// Canonical form: the bytes sceneFileJson writes (docs/cli_and_formats.md's example is one). It is
+// a fixed point: reading a canonical file and writing it again gives the same bytes, whatever its
 // `up` and `meters_per_unit`. Written numbers are rounded to 1e-9 of a file unit (15
 // significant digits from 1e6 up), so conversion noise such as 30 * 0.01 / 0.01 never shows.
 
@@ -31,8 +31,8 @@ Scene readSceneFile(const std::filesystem::path& file);
 // anchors their relative paths.
 Scene parseSceneFile(std::string_view bytes, const std::filesystem::path& file);
 
-// The canonical bytes of `scene`'s file: fixed member order (docs/cli_and_formats.md's), 2-space indent,
-// values wrapped at 100 columns, trailing newline. Paths are written as they were read
+// The canonical bytes of `scene`'s file: fixed member order (docs/cli_and_formats.md's), 2-space
+// indent, values wrapped at 100 columns, trailing newline. Paths are written as they were read
 // (`pathAsWritten`, or `path` when that is empty). Does not validate: writeSceneFile does.
 std::string sceneFileJson(const Scene& scene);
 

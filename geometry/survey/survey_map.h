@@ -7,8 +7,8 @@
 // (core/blend/weight_picture.h's palette). One map per storey (storeys.h). Same input, same
 // bytes.
 
-#include "core/scene/probe.h"
 #include "core/image/rgb8_canvas.h"
+#include "core/scene/probe.h"
 #include "geometry/survey/survey_result.h"
 
 #include <array>

@@ -16,19 +16,16 @@ int main(int argc, char** argv) {
       "probeproxy"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "probeproxy 0.1.0");
-  // The readers' size limits (core/scene/scene_limits.h), for every verb; given before or
-  // after the verb.
+  // The readers' size limits (core/scene/scene_limits.h, which checks them), for every verb;
+  // given before or after the verb.
   app.fallthrough();
   InputLimits limits;
-  std::uint64_t maxFileMiB = limits.maxFileBytes >> 20;
   app.add_option("--max-triangles", limits.maxTriangles,
                  "Refuse a level of more triangles than this, before it fills memory")
-      ->default_val(limits.maxTriangles)
-      ->check(CLI::PositiveNumber);
-  app.add_option("--max-file-mb", maxFileMiB,
+      ->default_val(limits.maxTriangles);
+  app.add_option("--max-file-mb", limits.maxFileMebibytes,
                  "Refuse a level file (or a .pk3 entry, inflated) larger than this many MiB")
-      ->default_val(maxFileMiB)
-      ->check(CLI::Range(std::uint64_t(1), std::uint64_t(1) << 40));
+      ->default_val(limits.maxFileMebibytes);
 
   std::vector<cli::Verb> verbs = {cli::addDemoVerb(app), cli::addBuildVerb(app),
                                   cli::addExportVerb(app), cli::addCorrectVerb(app),
@@ -64,9 +61,8 @@ int main(int argc, char** argv) {
     return kExitBadInput;
   }
 
-  limits.maxFileBytes = maxFileMiB << 20;
-  setInputLimits(limits);
   try {
+    setInputLimits(limits);
     for (const cli::Verb& verb : verbs) {
       if (verb.command->parsed()) return verb.run();
     }

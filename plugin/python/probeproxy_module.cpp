@@ -1,7 +1,7 @@
 // probeproxy_py: the library's jobs for Python (the Blender add-on), in plain data. Scenes are
-// dicts shaped as the scene file (docs/cli_and_formats.md "Scene file"), reports are the CLI's `--json` reports
-// as dicts, meshes are lists of tuples. Bad input raises probeproxy_py.InputError (a
-// ValueError) with the library's message, which names the file and the problem. Long work runs
+// dicts shaped as the scene file (docs/cli_and_formats.md "Scene file"), reports are the CLI's
+// `--json` reports as dicts, meshes are lists of tuples. Bad input raises probeproxy_py.InputError
+// (a ValueError) with the library's message, which names the file and the problem. Long work runs
 // with the GIL released; progress is reported on the calling thread.
 
 #include "core/errors/input_error.h"

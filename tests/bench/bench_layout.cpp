@@ -31,7 +31,8 @@ void runLayout(benchmark::State& state, const std::string& scene, LayoutBaseline
   }
   state.counters["probes"] = static_cast<double>(result.scene.probes.size());
   state.counters["candidates"] = static_cast<double>(result.layout.candidates);
-  if (result.layout.candidates > 0) state.counters["candidate_ms"] = result.layout.candidateMedianMs;
+  if (result.layout.candidates > 0)
+    state.counters["candidate_ms"] = result.layout.candidateMedianMs;
   state.counters["p95_deg"] = result.survey.figures.p95Deg;
 }
 
@@ -56,13 +57,15 @@ int main(int argc, char** argv) {
   int restCount = static_cast<int>(rest.size());
   benchmark::Initialize(&restCount, rest.data());
   const std::string name = std::filesystem::path(scene).stem().stem().string();
-  benchmark::RegisterBenchmark(("layout/" + name).c_str(),
-                               [scene](benchmark::State& s) { runLayout(s, scene, LayoutBaseline::None); })
+  benchmark::RegisterBenchmark(
+      ("layout/" + name).c_str(),
+      [scene](benchmark::State& s) { runLayout(s, scene, LayoutBaseline::None); })
       ->Unit(benchmark::kSecond)
       ->UseRealTime()
       ->Iterations(1);
-  benchmark::RegisterBenchmark(("grid_4m_baseline/" + name).c_str(),
-                               [scene](benchmark::State& s) { runLayout(s, scene, LayoutBaseline::Grid); })
+  benchmark::RegisterBenchmark(
+      ("grid_4m_baseline/" + name).c_str(),
+      [scene](benchmark::State& s) { runLayout(s, scene, LayoutBaseline::Grid); })
       ->Unit(benchmark::kSecond)
       ->UseRealTime()
       ->Iterations(1);

@@ -17,7 +17,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (int face = 0; face < 6; ++face) {
     const std::size_t cut = rest.find(kFaceSeparator);
     const std::string_view bytes = rest.substr(0, cut);
-    rest = cut == std::string_view::npos ? std::string_view() : rest.substr(cut + kFaceSeparator.size());
+    rest = cut == std::string_view::npos ? std::string_view()
+                                         : rest.substr(cut + kFaceSeparator.size());
     fuzz::writeScratch("face_" + std::string(cubeFaceName(CubeFace(face))) + ".png", bytes);
   }
   const std::string pattern = fuzz::scratchFile("face_{face}.png").string();

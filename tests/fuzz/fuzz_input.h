@@ -5,13 +5,13 @@
 
 #include "core/errors/input_error.h"
 
+#include <unistd.h>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <string_view>
-#include <unistd.h>
 
 namespace probeproxy::fuzz {
 
@@ -23,7 +23,8 @@ inline std::string_view asText(const std::uint8_t* data, std::size_t size) {
 // input from a file in a folder of this process's own, rewritten on every run.
 inline std::filesystem::path scratchFile(const std::string& name) {
   static const std::filesystem::path folder = [] {
-    auto dir = std::filesystem::temp_directory_path() / ("probeproxy_fuzz_" + std::to_string(getpid()));
+    auto dir =
+        std::filesystem::temp_directory_path() / ("probeproxy_fuzz_" + std::to_string(getpid()));
     std::filesystem::create_directories(dir);
     return dir;
   }();
@@ -32,7 +33,8 @@ inline std::filesystem::path scratchFile(const std::string& name) {
 
 inline std::filesystem::path writeScratch(const std::string& name, std::string_view bytes) {
   const std::filesystem::path file = scratchFile(name);
-  std::ofstream(file, std::ios::binary | std::ios::trunc).write(bytes.data(), std::streamsize(bytes.size()));
+  std::ofstream(file, std::ios::binary | std::ios::trunc)
+      .write(bytes.data(), std::streamsize(bytes.size()));
   return file;
 }
 

@@ -11,8 +11,8 @@
 
 #include <OpenImageIO/imageio.h>
 #include <OpenImageIO/strutil.h>
-#include <nlohmann/json.hpp>
 #include <zip.h>
+#include <nlohmann/json.hpp>
 
 #include <cstdint>
 #include <cstring>
@@ -45,7 +45,8 @@ LevelMesh roomWithPillar() {
   const auto box = [&](glm::vec3 lo, glm::vec3 hi) {
     const auto base = std::uint32_t(level.positionsMeters.size());
     for (int i = 0; i < 8; ++i) {
-      level.positionsMeters.push_back({i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z});
+      level.positionsMeters.push_back(
+          {i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z});
     }
     const std::uint32_t quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
                                        {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
@@ -82,17 +83,26 @@ testing::SyntheticBsp seedBsp() {
   bsp.entities +=
       "{\n\"classname\" \"info_player_deathmatch\"\n\"origin\" \"64 64 24\"\n}\n"
       "{\n\"classname\" \"light\"\n\"origin\" \"128 96 100\"\n\"light\" \"300\"\n}\n";
-  bsp.shaders.push_back({"textures/test/sky", 0x4, 1});          // SURF_SKY
+  bsp.shaders.push_back({"textures/test/sky", 0x4, 1});            // SURF_SKY
   bsp.shaders.push_back({"textures/common/clip", 0x80, 0x10000});  // nodraw, playerclip
   bsp.addPolygon(1, {{0, 0, 128}, {256, 0, 128}, {256, 192, 128}});
   bsp.addPolygon(2, {{10, 10, 0}, {20, 10, 0}, {20, 20, 0}});
   // An arch: one 3 x 3 Bezier patch.
-  bsp.addPatch(0, 3, 3, {{100, 0, 0}, {100, 0, 64}, {100, 0, 96}, {128, 0, 0}, {128, 0, 64},
-                         {128, 0, 128}, {156, 0, 0}, {156, 0, 64}, {156, 0, 96}});
+  bsp.addPatch(0, 3, 3,
+               {{100, 0, 0},
+                {100, 0, 64},
+                {100, 0, 96},
+                {128, 0, 0},
+                {128, 0, 64},
+                {128, 0, 128},
+                {156, 0, 0},
+                {156, 0, 64},
+                {156, 0, 96}});
   return bsp;
 }
 
-std::string pk3Holding(const std::string& entryName, const std::string& bytes, const fs::path& file) {
+std::string pk3Holding(const std::string& entryName, const std::string& bytes,
+                       const fs::path& file) {
   fs::create_directories(file.parent_path());
   int error = 0;
   zip_t* zip = zip_open(file.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &error);
@@ -110,7 +120,8 @@ Cubemap seedCube(int size) {
   std::array<std::vector<float>, kCubeFaceCount> rgb;
   for (int f = 0; f < kCubeFaceCount; ++f) {
     for (int i = 0; i < size * size; ++i) {
-      rgb[f].insert(rgb[f].end(), {0.2f * float(f), float(i % size) / float(size), float(i / size) / float(size)});
+      rgb[f].insert(rgb[f].end(), {0.2f * float(f), float(i % size) / float(size),
+                                   float(i / size) / float(size)});
     }
   }
   return Cubemap::fromFaces(size, std::move(rgb));

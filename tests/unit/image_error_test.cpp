@@ -77,8 +77,8 @@ TEST(ErrorImages, MissMaskAndComparisonReadBackWithTheirColours) {
   EXPECT_NEAR(pixel(1, 1, 0).x, 1.055f * std::pow(0.5f, 1 / 2.4f) - 0.055f, 1 / 255.0f);
   EXPECT_EQ(pixel(1, 0, 0), glm::vec3(0, 1, 1));  // a miss: cyan
   EXPECT_EQ(pixel(2, 0, 0), glm::vec3(0, 1, 1));
-  EXPECT_EQ(pixel(2, 1, 0), glm::vec3(0, 0, 0));  // no error: black
-  EXPECT_EQ(pixel(2, 1, 1), glm::vec3(1, 1, 1));  // at or above the scale: white
+  EXPECT_EQ(pixel(2, 1, 0), glm::vec3(0, 0, 0));      // no error: black
+  EXPECT_EQ(pixel(2, 1, 1), glm::vec3(1, 1, 1));      // at or above the scale: white
   EXPECT_EQ(pixel(2, 0, 1), glm::vec3(40 / 255.0f));  // outside the mask: dark grey
   std::filesystem::remove_all(dir);
 }

@@ -172,11 +172,12 @@ INSTANTIATE_TEST_SUITE_P(
                 "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [{\"primitives\": "
                 "[{\"attributes\": {\"POSITION\": 0}, \"mode\": 2}]}]}",
                 "malformed mesh: glTF mesh 0 primitive 0 is a line loop (mode 2)"},
-        BadMesh{"huge_buffers.gltf",
-                "{\"asset\": {\"version\": \"2.0\"}, \"buffers\": [{\"uri\": \"big.bin\", "
-                "\"byteLength\": 5000000000}]}",
-                "its buffers' declared byteLength is 4769 MiB, over the limit of 1024 MiB (raise it "
-                "with --max-file-mb)"},
+        BadMesh{
+            "huge_buffers.gltf",
+            "{\"asset\": {\"version\": \"2.0\"}, \"buffers\": [{\"uri\": \"big.bin\", "
+            "\"byteLength\": 5000000000}]}",
+            "its buffers' declared byteLength is 4769 MiB, over the limit of 1024 MiB (raise it "
+            "with --max-file-mb)"},
         BadMesh{"index_past_end.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n", "malformed mesh"},
         BadMesh{"lines_only.obj", "v 0 0 0\nv 1 0 0\nl 1 2\n", "mesh has no triangles"},
         BadMesh{"empty.glb", "", "mesh file is empty"},

@@ -228,7 +228,8 @@ void readFaces(const BspLumps& lumps, const BspLoadOptions& options, BspLevel& l
       reader.appendTriangles(faces[i], i, mesh.positionsMeters, into);
       const std::size_t made = mesh.triangles.size() + mesh.skyTriangles.size();
       if (made > maxTriangles || mesh.positionsMeters.size() > 3 * maxTriangles) {
-        lumps.fail(BspLump::Surfaces, "face " + std::to_string(i) + ": " + triangleLimitProblem(made));
+        lumps.fail(BspLump::Surfaces,
+                   "face " + std::to_string(i) + ": " + triangleLimitProblem(made));
       }
       if (sky) {
         ++level.faces.sky;
@@ -255,7 +256,8 @@ std::vector<std::byte> readWholeBinaryFile(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(file, "cannot open");
   const auto size = std::filesystem::file_size(file, ec);
-  if (size > inputLimits().maxFileBytes) throw InputError(file, fileLimitProblem("BSP file", size));
+  if (size > inputLimits().maxFileBytes())
+    throw InputError(file, fileLimitProblem("BSP file", size));
   std::vector<std::byte> bytes(size);
   in.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size));
   if (!in) throw InputError(file, "cannot read");

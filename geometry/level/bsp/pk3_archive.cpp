@@ -54,7 +54,7 @@ std::vector<std::byte> readFileFromPk3(const std::filesystem::path& archive,
   // The size the archive claims, checked before the buffer is taken: a few kilobytes of zip can
   // claim (and a deflate stream can inflate to) gigabytes. libzip stops at the claimed size and
   // checks the CRC, so a stream that inflates past its claim does not get further.
-  if (stat.size > inputLimits().maxFileBytes) {
+  if (stat.size > inputLimits().maxFileBytes()) {
     throw InputError(archive, fileLimitProblem("\"" + name + "\" inflated", stat.size));
   }
   const std::unique_ptr<zip_file_t, EntryCloser> file(

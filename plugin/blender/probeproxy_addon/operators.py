@@ -59,17 +59,9 @@ def _no_level_message(context):
     return "no level: the scene has no mesh objects besides probes and proxies"
 
 
-def _with_progress(context, total, work):
-    wm = context.window_manager
-    wm.progress_begin(0, max(total, 1))
-    try:
-        return work(lambda done, _total: wm.progress_update(done))
-    finally:
-        wm.progress_end()
-
-
-def _with_fraction(context, work):
-    """As _with_progress, for work whose total is known only as it reports (the layout)."""
+def _with_progress(context, work):
+    """Runs work(progress) with Blender's progress bar following the library's (done, total)
+    reports, whatever the total: probes for a build, steps for a layout."""
     wm = context.window_manager
     wm.progress_begin(0, 1000)
     try:
@@ -232,7 +224,7 @@ class PROBEPROXY_OT_generate_proxies(_NeedsModule, bpy.types.Operator):
         def work():
             _take_edited_proxies(self, context)
             parts, used = scene_io.level_parts(context, objects)
-            results = _with_progress(context, len(probes), lambda progress: native.module.build_proxies(
+            results = _with_progress(context, lambda progress: native.module.build_proxies(
                 scene_io.scene_dict(scene), scene_io.scene_anchor(scene), parts,
                 _build_options(settings), progress))
             by_name = {p.name: p for p in probes}
@@ -275,7 +267,7 @@ class PROBEPROXY_OT_suggest_probes(_NeedsModule, bpy.types.Operator):
             options = {"tolerance_deg": scene_io.f32(settings.layout_tolerance_deg)}
             if settings.layout_max_probes:
                 options["max_probes"] = settings.layout_max_probes
-            result = _with_fraction(context, lambda progress: native.module.suggest_probes(
+            result = _with_progress(context, lambda progress: native.module.suggest_probes(
                 scene_io.scene_dict(scene), anchor, out, parts, options, progress))
             for old in scene_io.probes(scene):
                 _remove_probe(old)
@@ -395,7 +387,7 @@ class PROBEPROXY_OT_export_proxies(_NeedsModule, bpy.types.Operator):
         def work():
             _take_edited_proxies(self, context)
             parts, used = scene_io.level_parts(context, objects)
-            results = _with_progress(context, len(scene_io.probes(scene)), lambda progress: native.module.export_proxies(
+            results = _with_progress(context, lambda progress: native.module.export_proxies(
                 scene_io.scene_dict(scene), scene_io.scene_anchor(scene), out, parts,
                 _build_options(scene.probeproxy), progress))
             scene.probeproxy.level_used = used

@@ -6,8 +6,8 @@
 // Path of one run: plugin/cli/verbs/layout_verb.cpp parses flags into LayoutJobOptions ->
 // runLayoutJob (here) reads the level (a scene file's, or a mesh or BSP file) and seeds the
 // floor at its spawn points (else the scene's capture points) -> geometry/layout: candidates,
-// their coarse proxies and errors, the greedy cover, influence boxes -> geometry/probe_proxies builds
-// each chosen probe's proxy -> geometry/survey measures the result -> the scene file, the
+// their coarse proxies and errors, the greedy cover, influence boxes -> geometry/probe_proxies
+// builds each chosen probe's proxy -> geometry/survey measures the result -> the scene file, the
 // export and the error maps are written at the end, all or nothing.
 
 #include "core/proxy/proxy_candidate.h"
