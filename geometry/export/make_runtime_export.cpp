@@ -180,7 +180,8 @@ RuntimeExport makeRuntimeExport(const Scene& scene, const std::vector<ProbeProxy
     if (probe == scene.probes.end()) failShape(build.probe, "not a probe of the scene");
     if (!seen.insert(build.probe).second) failShape(build.probe, "built twice");
     if (build.kept >= build.candidates.size()) failShape(build.probe, "kept index out of range");
-    for (const ProxyCandidate& c : build.candidates) checkShape(build.probe, c.shape);
+    for (const ProxyCandidate& c : build.candidates)
+      checkShape(build.probe + "' candidate '" + candidateName(c), c.shape);
 
     const ProxyCandidate& kept = build.candidates[build.kept];
     RuntimeProbe out;

@@ -20,6 +20,8 @@ namespace probeproxy {
 
 namespace {
 
+constexpr double kMinNormalSpread = 1e-3;
+
 bool isFinite(glm::dvec3 v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
@@ -59,12 +61,17 @@ std::optional<glm::dvec3> openDirection(std::span<const glm::dvec3> normals) {
       break;
   }
   // A hull facet that does not have the origin strictly behind it: every normal lies behind
-  // it, so its outward normal u has dot(u, n_i) <= dot(u, facet) <= 0.
+  // it, so its outward normal u has dot(u, n_i) <= dot(u, facet) <= 0. A facet with the origin
+  // less than kMinNormalSpread behind it leaves u nearly open: the planes stop a walk along u
+  // only after more than 1/kMinNormalSpread times their offsets (a corridor closed by a
+  // floor tilted by 1e-11, seen on a real map), which no proxy is meant to be.
   const fit::TriangleHull hull = fit::convexHull3(normals);
   for (const auto& t : hull.triangles) {
     const glm::dvec3 a = hull.vertices[t[0]], b = hull.vertices[t[1]], c = hull.vertices[t[2]];
     if (fit::orientationSign(a, b, c, glm::dvec3(0.0)) >= 0)
       return glm::normalize(glm::cross(b - a, c - a));
+    const glm::dvec3 outward = glm::normalize(glm::cross(b - a, c - a));
+    if (glm::dot(outward, a) < kMinNormalSpread) return outward;
   }
   return std::nullopt;
 }
@@ -327,6 +334,12 @@ ConvexProxy polytopeFromPlanes(std::vector<ProxyPlane> planes, glm::dvec3 interi
     return std::tie(pa.x, pa.y, pa.z) < std::tie(pb.x, pb.y, pb.z);
   });
   std::vector<std::uint32_t> outputIndex(cornerCount, UINT32_MAX);
+  if (facets.size() < 4) {
+    // Rounding merged what the dual hull kept apart; a proxy without a volume is no proxy.
+    throw FitError("polytope from planes: the " + std::to_string(planes.size()) +
+                   " planes leave only " + std::to_string(facets.size()) +
+                   " facets within rounding");
+  }
   ConvexProxy proxy;
   for (std::uint32_t root : used) {
     outputIndex[root] = static_cast<std::uint32_t>(proxy.verticesMeters.size());

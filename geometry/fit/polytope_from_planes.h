@@ -27,9 +27,11 @@ ConvexProxy polytopeFromPlanes(std::vector<ProxyPlane> planes, glm::dvec3 interi
                                std::vector<std::size_t>* droppedPlaneIndices = nullptr);
 
 // Whether the half-spaces leave no direction open, so that their intersection, where it is
-// not empty, is bounded: no v != 0 has dot(n_i, v) <= 0 for every plane. Exact on the given
-// normals (the origin strictly inside the convex hull of the normals); offsets play no part.
-// Fewer than 4 planes, or normals that are not finite, are never bounded.
+// not empty, is bounded: no unit v has dot(n_i, v) < 1e-3 for every plane (the origin at
+// least 1e-3 inside the convex hull of the normals). A set that fails by less than that is
+// bounded in exact arithmetic but reaches over 1000 times its offsets out along v, so it is
+// taken as open. Offsets play no part. Fewer than 4 planes, or normals that are not finite,
+// are never bounded.
 bool isBounded(const std::vector<ProxyPlane>& planes);
 
 }  // namespace probeproxy

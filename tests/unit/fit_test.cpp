@@ -589,6 +589,31 @@ TEST(PolytopeFromPlanes, UnboundedPlanesAreAFitError) {
   EXPECT_EQ(polytopeFromPlanes(tetrahedron, {0, 0, 0}).verticesMeters.size(), 4u);
 }
 
+// Kept by the hull simplification for a probe of ruiner (Nexuiz) before this was caught: a
+// corridor open towards -x, closed only because its floor's normal leans 5e-12 that way. In
+// exact arithmetic it is bounded, 1.6e12 m long; the polytope's corners then merged into none.
+TEST(PolytopeFromPlanes, PlanesThatCloseADirectionOnlyByRoundingAreOpen) {
+  const std::vector<ProxyPlane> planes = {
+      {{0.70791838042602517, 0.70629165703813268, -0.0019135969592065367}, 31.84421331567804},
+      {{0.97014250014533188, 0, 0.24253562503633297}, 43.656413431904738},
+      {{-4.8954578088577438e-12, 1.1014779741663907e-11, -1}, -1.5742563626747061e-08},
+      {{0, 0, 1}, 7.9999995989688646},
+      {{0, 0.99999999999999989, 0}, 1.9999999567487046},
+      {{0, -0.99999999999999989, 0}, 5.9999999091582312},
+      {{0.51449575609565057, -0.85749292531166987, 0}, 27.096778184597451}};
+  const glm::dvec3 capture(44.249999046325684, -1.75, 1.4995019435882568);
+  EXPECT_FALSE(isBounded(planes));
+  expectFitError([&] { polytopeFromPlanes(planes, capture); },
+                 "planes bound no volume: nothing stops it in direction (-1, ");
+  // Closed by a real end wall, the same corridor is a polytope of seven facets.
+  std::vector<ProxyPlane> closed = planes;
+  closed.push_back({{-1, 0, 0}, -30.0});
+  EXPECT_TRUE(isBounded(closed));
+  const ConvexProxy proxy = polytopeFromPlanes(closed, capture);
+  EXPECT_EQ(proxy.planes.size(), 8u);
+  for (const glm::dvec3& v : proxy.verticesMeters) EXPECT_GE(v.x, 30.0 - 1e-9);
+}
+
 TEST(PolytopeFromPlanes, InteriorPointOutsideOrOnAPlaneIsAFitError) {
   const std::vector<ProxyPlane> planes = boxPlanes(kRoomLow, kRoomHigh);
   expectFitError(
