@@ -32,7 +32,15 @@ std::vector<double> planeAreasSquareMeters(const ConvexProxy& proxy);
 // set of `directions` spread evenly over the sphere (infinite if some direction never leaves).
 // A set of planes can be bounded in theory yet reach kilometres out along a direction no
 // sample tested; this is the check that keeps such proxies out.
+inline constexpr int kReachDirections = 2048;
 double farthestExitMeters(const std::vector<ProxyPlane>& planes, glm::dvec3 fromMeters,
-                          int directions = 2048);
+                          int directions = kReachDirections);
+
+// Direction i of farthestExitMeters' n (a Fibonacci sphere: even coverage, no randomness).
+glm::dvec3 reachDirection(int i, int directions);
+
+// How far from `fromMeters` along unit `direction` the ray leaves the plane's half-space
+// (infinite if it never does).
+double planeExitMeters(const ProxyPlane& plane, glm::dvec3 fromMeters, glm::dvec3 direction);
 
 }  // namespace probeproxy

@@ -34,19 +34,25 @@ std::vector<double> planeAreasSquareMeters(const ConvexProxy& proxy) {
   return areas;
 }
 
+glm::dvec3 reachDirection(int i, int directions) {
+  const double z = 1.0 - 2.0 * (i + 0.5) / directions;
+  const double phi = i * 2.399963229728653;  // the golden angle
+  const double s = std::sqrt(1.0 - z * z);
+  return {s * std::cos(phi), s * std::sin(phi), z};
+}
+
+double planeExitMeters(const ProxyPlane& p, glm::dvec3 from, glm::dvec3 v) {
+  const double towards = glm::dot(p.normal, v);
+  return towards > 0 ? (p.offsetMeters - glm::dot(p.normal, from)) / towards
+                     : std::numeric_limits<double>::infinity();
+}
+
 double farthestExitMeters(const std::vector<ProxyPlane>& planes, glm::dvec3 from, int directions) {
   double farthest = 0.0;
   for (int i = 0; i < directions; ++i) {
-    // Fibonacci sphere: even coverage, no randomness.
-    const double z = 1.0 - 2.0 * (i + 0.5) / directions;
-    const double phi = i * 2.399963229728653;  // the golden angle
-    const double s = std::sqrt(1.0 - z * z);
-    const glm::dvec3 v(s * std::cos(phi), s * std::sin(phi), z);
+    const glm::dvec3 v = reachDirection(i, directions);
     double exit = std::numeric_limits<double>::infinity();
-    for (const ProxyPlane& p : planes) {
-      const double towards = glm::dot(p.normal, v);
-      if (towards > 0) exit = std::min(exit, (p.offsetMeters - glm::dot(p.normal, from)) / towards);
-    }
+    for (const ProxyPlane& p : planes) exit = std::min(exit, planeExitMeters(p, from, v));
     farthest = std::max(farthest, exit);
   }
   return farthest;

@@ -101,7 +101,10 @@ std::optional<WalkableFloor> servedFloor(const LevelRayCaster& level, const Prob
   floorOptions.regionMinMeters = glm::dvec2(lo);
   floorOptions.regionMaxMeters = glm::dvec2(hi);
   const glm::dvec3 seed[] = {probe.captureMeters};
-  WalkableFloor floor = walkableFloor(level, seed, floorOptions);
+  WalkableFloor floor = o.floorGraph
+                            ? reachableFloor(*o.floorGraph, seed, floorOptions.regionMinMeters,
+                                             floorOptions.regionMaxMeters)
+                            : walkableFloor(level, seed, floorOptions);
   if (floor.cells.empty()) return std::nullopt;
   return floor;
 }
@@ -156,7 +159,13 @@ std::vector<glm::dvec3> reflectionCameras(const LevelRayCaster& level, const Pro
 std::vector<ReflectionSample> buildReflectionSamples(const LevelRayCaster& level,
                                                      const Probe& probe, SampleSet set,
                                                      const ReflectionSampleOptions& o) {
-  const std::optional<WalkableFloor> floor = servedFloor(level, probe, o);
+  return buildReflectionSamples(level, probe, set, o, servedFloor(level, probe, o));
+}
+
+std::vector<ReflectionSample> buildReflectionSamples(const LevelRayCaster& level,
+                                                     const Probe& probe, SampleSet set,
+                                                     const ReflectionSampleOptions& o,
+                                                     const std::optional<WalkableFloor>& floor) {
   const std::vector<glm::dvec3> cameras = reflectionCameras(level, probe, o, floor);
   const bool floorOnly = set == SampleSet::MirrorFloor;
   std::mt19937 rng(o.seed * 2654435761u + (floorOnly ? 0u : 1u));

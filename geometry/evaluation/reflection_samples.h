@@ -4,11 +4,12 @@
 
 #include "core/scene/probe.h"
 #include "geometry/evaluation/reflection_sample.h"
+#include "geometry/floor/floor_graph.h"
 #include "geometry/floor/walkable_floor.h"
 #include "geometry/raycast/level_ray_caster.h"
 
+#include <memory>
 #include <optional>
-
 #include <vector>
 
 namespace probeproxy {
@@ -29,6 +30,10 @@ struct ReflectionSampleOptions {
   // build fits on these; what a player sees (and every reported figure) is all the floor the
   // influence covers, as the runtime shades it.
   bool connectedFloorOnly = false;
+  // The level's floor graph (floor_graph.h, built with default WalkableFloorOptions), when the
+  // caller builds many probes on one level: the served floor is then a flood fill in it
+  // instead of a new walkable floor. Same floor, on the level's grid instead of the probe's.
+  std::shared_ptr<const FloorGraph> floorGraph;
 
   // Throws InputError unless targetSamples ("samples") is in [64, 1000000] and the rest is
   // usable (maxAttemptsPerSample >= 1, eye height and camera spacing positive).
@@ -38,6 +43,13 @@ struct ReflectionSampleOptions {
 std::vector<ReflectionSample> buildReflectionSamples(const LevelRayCaster& level,
                                                      const Probe& probe, SampleSet set,
                                                      const ReflectionSampleOptions& options = {});
+
+// buildReflectionSamples with the served floor already found (servedFloor with the same
+// options), so the sets one probe draws share it.
+std::vector<ReflectionSample> buildReflectionSamples(const LevelRayCaster& level,
+                                                     const Probe& probe, SampleSet set,
+                                                     const ReflectionSampleOptions& options,
+                                                     const std::optional<WalkableFloor>& served);
 
 // The cameras of the grid: at eye height above the floor, inside the influence volume. Falls
 // back to the capture point when no grid point qualifies (a closet, a probe over a void).

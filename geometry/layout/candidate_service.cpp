@@ -39,15 +39,24 @@ std::vector<float> errorsOnSeen(const ProxyShape& proxy, glm::dvec3 captureMeter
   return errors;
 }
 
-CandidateService serveFloor(const LevelRayCaster& level, glm::dvec3 captureMeters, double fitMeters,
+CaptureView seeFromCapture(const LevelRayCaster& level, glm::dvec3 captureMeters,
+                           const LayoutOptions& o) {
+  CaptureView v;
+  v.view = seeLevel(level, captureMeters, o.candidateProxy.depthFaceSize);
+  v.hull = fitViewHull(v.view);
+  return v;
+}
+
+CandidateService serveFloor(const LevelRayCaster& level, const CaptureView& v, double fitMeters,
                             std::span<const FloorSample> samples,
                             std::span<const std::uint32_t> seen, const LayoutOptions& o) {
   const auto start = std::chrono::steady_clock::now();
+  const glm::dvec3 captureMeters = v.view.captureMeters;
   CandidateService s;
   s.captureMeters = captureMeters;
   s.fitMeters = fitMeters;
   const ProbeProxyBuild build = buildProbeProxy(level, candidateFitProbe(captureMeters, fitMeters),
-                                                std::nullopt, o.candidateProxy);
+                                                v.view, v.hull, std::nullopt, o.candidateProxy);
   s.proxy = build.candidates[build.kept].shape;
   const std::vector<float> errors = errorsOnSeen(s.proxy, captureMeters, samples, seen);
   for (std::size_t k = 0; k < seen.size(); ++k)

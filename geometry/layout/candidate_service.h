@@ -9,6 +9,8 @@
 #include "core/proxy/proxy_shape.h"
 #include "core/scene/probe.h"
 #include "geometry/layout/layout_options.h"
+#include "geometry/probe_proxies/fit_candidates.h"
+#include "geometry/probe_proxies/probe_view.h"
 #include "geometry/raycast/level_ray_caster.h"
 #include "geometry/survey/floor_samples.h"
 
@@ -34,8 +36,17 @@ struct CandidateService {
   double buildMs = 0.0;               // proxy and evaluation
 };
 
+// What a capture point sees, made once for all its fit regions: the depth cube at the
+// candidates' face size and the hull of it.
+struct CaptureView {
+  ProbeView view;
+  ViewHull hull;
+};
+CaptureView seeFromCapture(const LevelRayCaster& level, glm::dvec3 captureMeters,
+                           const LayoutOptions& options);
+
 // `seen`: the samples the capture point sees (CaptureSight::seen).
-CandidateService serveFloor(const LevelRayCaster& level, glm::dvec3 captureMeters, double fitMeters,
+CandidateService serveFloor(const LevelRayCaster& level, const CaptureView& view, double fitMeters,
                             std::span<const FloorSample> samples,
                             std::span<const std::uint32_t> seen, const LayoutOptions& options);
 

@@ -49,8 +49,9 @@ Candidates serveAll(const LevelRayCaster& level, const std::vector<LayoutCandida
     double farthest = 0.0;
     for (std::uint32_t s : c.sights[i].seen)
       farthest = std::max(farthest, glm::distance(samples[s].sample.xMeters, capture));
+    const CaptureView view = seeFromCapture(level, capture, o);
     for (double fit : fitRadiiFor(farthest, o.reachMeters)) {
-      perCapture[i].push_back(serveFloor(level, capture, fit, samples, c.sights[i].seen, o));
+      perCapture[i].push_back(serveFloor(level, view, fit, samples, c.sights[i].seen, o));
       perCapture[i].back().capture = i;
     }
     if (!onDone) return;
@@ -92,7 +93,11 @@ void layoutByCandidates(const LevelRayCaster& level, const WalkableFloor& floor,
       layoutCandidates(level, floor, o.spacingMeters, o.captureHeightMeters, o.maxCandidates);
   const std::vector<LayoutCandidate>& candidates = grid.points;
   r.spacingMeters = grid.spacingMeters;
-  const Candidates built = serveAll(level, candidates, samples, o, onDone);
+  // Thousands of candidates ask for the floor they serve: one floor graph answers them all.
+  LayoutOptions withGraph = o;
+  withGraph.candidateProxy.samples.floorGraph =
+      std::make_shared<const FloorGraph>(buildFloorGraph(level, WalkableFloorOptions{}));
+  const Candidates built = serveAll(level, candidates, samples, withGraph, onDone);
   const std::vector<CandidateService>& services = built.services;
   r.candidates = services.size();
   std::vector<double> ms;

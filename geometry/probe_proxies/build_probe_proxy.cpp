@@ -66,21 +66,31 @@ void finishKeptProxy(ProbeProxyBuild& build, glm::dvec3 capture) {
 ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
                                 const std::optional<ProxyShape>& authored,
                                 const ProxyBuildOptions& o) {
+  const Stopwatch depth;
+  const ProbeView view = seeLevel(level, probe.captureMeters, o.depthFaceSize);
+  const double depthMs = depth.ms();
+  ProbeProxyBuild build = buildProbeProxy(level, probe, view, fitViewHull(view), authored, o);
+  build.depthMs = depthMs;
+  build.buildMs += depthMs;
+  return build;
+}
+
+ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
+                                const ProbeView& view, const ViewHull& hull,
+                                const std::optional<ProxyShape>& authored,
+                                const ProxyBuildOptions& o) {
   const IeeeFloatMode ieee;
   const Stopwatch total;
   ProbeProxyBuild build;
   build.probe = probe.name;
   const glm::dvec3 capture = probe.captureMeters;
-
-  Stopwatch stage;
-  const ProbeView view = seeLevel(level, capture, o.depthFaceSize);
-  build.depthMs = stage.lap();
   if (view.skyShare > 0.5) build.findings.push_back(noLevelFinding(view.skyShare));
 
+  Stopwatch stage;
   const ProbeSamples samples = drawProbeSamples(level, probe, o);
   build.samplingMs = stage.lap();
 
-  FittedCandidates fitted = fitCandidates(view, samples.fit, authored, o.uprightObb);
+  FittedCandidates fitted = fitCandidates(view, hull, samples.fit, authored, o.uprightObb);
   build.hullMs = fitted.hullMs;
   build.fitMs = fitted.fitMs;
   for (std::string& f : fitted.findings) build.findings.push_back(std::move(f));
@@ -97,7 +107,7 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
   measureOnAllSurfaces(build, capture, samples.all);
   build.evaluateMs = stage.lap();
   finishKeptProxy(build, capture);
-  build.buildMs = total.ms();
+  build.buildMs = total.ms() + build.hullMs;
   return build;
 }
 

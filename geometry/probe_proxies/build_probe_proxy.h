@@ -13,9 +13,11 @@
 
 #include "core/proxy/proxy_candidate.h"
 #include "core/scene/probe.h"
+#include "geometry/evaluation/reflection_samples.h"
+#include "geometry/probe_proxies/fit_candidates.h"
+#include "geometry/probe_proxies/probe_view.h"
 #include "geometry/probe_proxies/proxy_build_options.h"
 #include "geometry/probe_proxies/select_proxy.h"
-#include "geometry/evaluation/reflection_samples.h"
 #include "geometry/raycast/level_ray_caster.h"
 
 #include <optional>
@@ -27,6 +29,14 @@ namespace probeproxy {
 // obb, hull, then convex_k from the hull's plane count down. The kept one is chosen by
 // selectProxy: the authored one unless options.regenerate.
 ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
+                                const std::optional<ProxyShape>& authored,
+                                const ProxyBuildOptions& options);
+
+// The same build with stage 1 and the hull already made for the probe's capture point
+// (seeLevel at options.depthFaceSize, fitViewHull): layout builds one capture point's proxy for
+// several influence volumes. Its depthMs is 0; hullMs is the shared hull's.
+ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
+                                const ProbeView& view, const ViewHull& hull,
                                 const std::optional<ProxyShape>& authored,
                                 const ProxyBuildOptions& options);
 

@@ -12,7 +12,32 @@
 
 namespace probeproxy {
 
+ViewHull fitViewHull(const ProbeView& view) {
+  // Boxes and spheres around the points are boxes and spheres around the hull's corners: a few
+  // hundred points instead of 10^5.
+  ViewHull h;
+  try {
+    const Stopwatch hullTime;
+    h.hull = convexHullProxy(view.pointsMeters, view.toleranceMeters);
+    h.hullMs = hullTime.ms();
+    if (signedDistanceOutside(h.hull->planes, view.captureMeters) >= 0) {
+      h.hull.reset();
+      throw FitError("the capture point is outside everything it sees: it is outside the level");
+    }
+  } catch (const FitError& e) {
+    // A probe that sees one plane only (or nothing) gets no hull; the other candidates stand.
+    h.finding = std::string("no convex proxy: ") + e.what();
+  }
+  return h;
+}
+
 FittedCandidates fitCandidates(const ProbeView& view, std::span<const ReflectionSample> fitSamples,
+                               const std::optional<ProxyShape>& authored, bool uprightObb) {
+  return fitCandidates(view, fitViewHull(view), fitSamples, authored, uprightObb);
+}
+
+FittedCandidates fitCandidates(const ProbeView& view, const ViewHull& hull,
+                               std::span<const ReflectionSample> fitSamples,
                                const std::optional<ProxyShape>& authored, bool uprightObb) {
   FittedCandidates f;
   const glm::dvec3 capture = view.captureMeters;
@@ -20,21 +45,9 @@ FittedCandidates fitCandidates(const ProbeView& view, std::span<const Reflection
     f.candidates.push_back({origin, std::move(shape), {}, {}, buildMs});
   };
   if (authored) add(CandidateOrigin::Authored, *authored, 0.0);
-
-  // The hull of what the probe sees comes first: boxes and spheres around the points are
-  // boxes and spheres around the hull's corners, a few hundred points instead of 10^5.
-  try {
-    const Stopwatch hullTime;
-    f.hull = convexHullProxy(view.pointsMeters, view.toleranceMeters);
-    f.hullMs = hullTime.ms();
-    if (signedDistanceOutside(f.hull->planes, capture) >= 0) {
-      f.hull.reset();
-      throw FitError("the capture point is outside everything it sees: it is outside the level");
-    }
-  } catch (const FitError& e) {
-    // A probe that sees one plane only (or nothing) gets no hull; the other candidates stand.
-    f.findings.push_back(std::string("no convex proxy: ") + e.what());
-  }
+  f.hull = hull.hull;
+  f.hullMs = hull.hullMs;
+  if (hull.finding) f.findings.push_back(*hull.finding);
   const std::span<const glm::dvec3> corners =
       f.hull ? std::span<const glm::dvec3>(f.hull->verticesMeters)
              : std::span<const glm::dvec3>(view.pointsMeters);

@@ -10,9 +10,10 @@ ProbeSamples drawProbeSamples(const LevelRayCaster& level, const Probe& probe,
   ReflectionSampleOptions reportOptions = o.samples;
   reportOptions.seed = o.samples.seed + 1000;
   reportOptions.connectedFloorOnly = false;
-  s.fit = buildReflectionSamples(level, probe, SampleSet::MirrorFloor, fitOptions);
+  const std::optional<WalkableFloor> served = servedFloor(level, probe, fitOptions);
+  s.fit = buildReflectionSamples(level, probe, SampleSet::MirrorFloor, fitOptions, served);
   for (const ReflectionSample& r :
-       buildReflectionSamples(level, probe, SampleSet::AllSurfaces, fitOptions))
+       buildReflectionSamples(level, probe, SampleSet::AllSurfaces, fitOptions, served))
     s.fit.push_back(r);
   s.floor = buildReflectionSamples(level, probe, SampleSet::MirrorFloor, reportOptions);
   s.all = buildReflectionSamples(level, probe, SampleSet::AllSurfaces, reportOptions);

@@ -1,8 +1,9 @@
 #include "geometry/probe_proxies/simplify_hull.h"
 
-#include "geometry/probe_proxies/stopwatch.h"
 #include "geometry/fit/polytope_from_planes.h"
+#include "geometry/probe_proxies/stopwatch.h"
 #include "geometry/tune/greedy_plane_removal.h"
+#include "geometry/tune/plane_reach.h"
 
 #include <glm/geometric.hpp>
 
@@ -46,11 +47,15 @@ std::vector<ProxyCandidate> simplifyHull(const ConvexProxy& hull, const ProbeVie
   const glm::dvec3 capture = view.captureMeters;
   // A proxy may reach past what the probe sees (an open end of a corridor), but not far:
   // twice the farthest point seen.
-  const auto acceptable = [&](const std::vector<ProxyPlane>& p) {
-    return isBounded(p) && farthestExitMeters(p, capture) <= 2.0 * view.farthestMeters;
-  };
+  const std::vector<ProxyPlane> start = startingPlanes(hull, view);
+  PlaneReach reach(start, capture);
+  const PlaneRemovalRule nearTheRoom{[&](const std::vector<ProxyPlane>& p, std::size_t j) {
+                                       return isBounded(p) && reach.farthestWithoutMeters(j) <=
+                                                                  2.0 * view.farthestMeters;
+                                     },
+                                     [&](std::size_t j) { reach.remove(j); }};
   const std::vector<PlaneRemovalStep> steps =
-      greedyPlaneRemoval(startingPlanes(hull, view), capture, fitSamples, 4, acceptable);
+      greedyPlaneRemoval(start, capture, fitSamples, 4, nearTheRoom);
   simplifyMs = time.ms();
   const double perStepMs = steps.size() > 1 ? simplifyMs / double(steps.size() - 1) : 0.0;
   std::vector<ProxyCandidate> candidates;

@@ -112,17 +112,25 @@ void drawCells(Rgb8Canvas& canvas, const MapFrame& f, const SurveyResult& r,
 // Each volume's outer range sliced a metre above the storey's floor, outlined in its colour.
 void drawInfluences(Rgb8Canvas& canvas, const MapFrame& f, std::span<const Probe> probes,
                     double sliceZ) {
-  std::vector<char> inside(static_cast<std::size_t>(f.width) * f.height);
+  std::vector<char> inside(static_cast<std::size_t>(f.width) * f.height, 0);
   for (std::size_t p = 0; p < probes.size(); ++p) {
-    for (int row = 0; row < f.height; ++row)
-      for (int col = 0; col < f.width; ++col) {
+    // Only the pixels of the volume's bounds, a pixel wider: outside them nothing is inside,
+    // so no outline (a level's hundred probes would otherwise each scan the whole map).
+    glm::dvec3 lo, hi;
+    influenceBounds(probes[p].influence, lo, hi);
+    const int col0 = std::clamp(f.column(lo.x) - 1, 0, f.width - 1);
+    const int col1 = std::clamp(f.column(hi.x) + 1, 0, f.width - 1);
+    const int row0 = std::clamp(f.row(hi.y) - 1, 0, f.height - 1);
+    const int row1 = std::clamp(f.row(lo.y) + 1, 0, f.height - 1);
+    for (int row = row0; row <= row1; ++row)
+      for (int col = col0; col <= col1; ++col) {
         const glm::dvec2 xy = f.world(col, row);
         inside[static_cast<std::size_t>(row) * f.width + col] =
             insideInfluence(probes[p].influence, {xy.x, xy.y, sliceZ});
       }
     const glm::u8vec3 colour = probeColour(static_cast<int>(p));
-    for (int row = 0; row < f.height; ++row)
-      for (int col = 0; col < f.width; ++col) {
+    for (int row = row0; row <= row1; ++row)
+      for (int col = col0; col <= col1; ++col) {
         const std::size_t i = static_cast<std::size_t>(row) * f.width + col;
         const bool edge = (col + 1 < f.width && inside[i] != inside[i + 1]) ||
                           (row + 1 < f.height && inside[i] != inside[i + f.width]);
@@ -130,6 +138,9 @@ void drawInfluences(Rgb8Canvas& canvas, const MapFrame& f, std::span<const Probe
           canvas.fill(col, row, 2, 2, colour.r, colour.g, colour.b);
         }
       }
+    for (int row = row0; row <= row1; ++row)
+      std::fill_n(inside.begin() + static_cast<std::ptrdiff_t>(row) * f.width + col0,
+                  col1 - col0 + 1, 0);
   }
 }
 

@@ -53,15 +53,18 @@ class RemovalState {
   }
   std::size_t sampleCount() const { return samples_.size(); }
 
-  // The change in total cost if plane j went.
-  double costOfRemoving(std::size_t j) const {
-    double delta = 0.0;
+  // The change in total cost if plane j went, for every plane at once: a sample's cost depends
+  // on one plane only (the one it exits through, or the only one it lies outside of), so one
+  // pass over the samples finds them all. Each plane's sum runs in sample order, as it would
+  // plane by plane: the same bits.
+  std::vector<double> costsOfRemoving() const {
+    std::vector<double> delta(planeCount_, 0.0);
     for (std::size_t i = 0; i < samples_.size(); ++i) {
       const Sample& s = samples_[i];
-      if (s.violations == 1 && s.violator == j) {
-        delta += costAt(i, exitWithout(i, j)) - s.cost;
-      } else if (s.violations == 0 && s.exitPlane == j) {
-        delta += costAt(i, s.secondT) - s.cost;
+      if (s.violations == 1) {
+        delta[s.violator] += costAt(i, exitWithout(i, s.violator)) - s.cost;
+      } else if (s.violations == 0 && s.exitPlane < planeCount_) {
+        delta[s.exitPlane] += costAt(i, s.secondT) - s.cost;
       }
     }
     return delta;
@@ -141,10 +144,10 @@ std::vector<ProxyPlane> activePlanes(const std::vector<ProxyPlane>& planes,
 
 }  // namespace
 
-std::vector<PlaneRemovalStep> greedyPlaneRemoval(
-    const std::vector<ProxyPlane>& planes, glm::dvec3 capture,
-    std::span<const ReflectionSample> samples, int minPlanes,
-    const std::function<bool(const std::vector<ProxyPlane>&)>& isAcceptable) {
+std::vector<PlaneRemovalStep> greedyPlaneRemoval(const std::vector<ProxyPlane>& planes,
+                                                 glm::dvec3 capture,
+                                                 std::span<const ReflectionSample> samples,
+                                                 int minPlanes, const PlaneRemovalRule& rule) {
   RemovalState state(planes, capture, samples);
   const double perSample = 1.0 / std::max<std::size_t>(1, state.sampleCount());
   std::vector<PlaneRemovalStep> steps = {{planes, state.totalCost() * perSample}};
@@ -154,19 +157,21 @@ std::vector<PlaneRemovalStep> greedyPlaneRemoval(
     // Cheapest removal first; the acceptability test (an exact boundedness test, and the
     // caller's own) runs only until one passes.
     std::vector<std::pair<double, std::size_t>> order;
+    const std::vector<double> costs = state.costsOfRemoving();
     for (std::size_t j = 0; j < planes.size(); ++j) {
-      if (state.isActive(j)) order.emplace_back(state.costOfRemoving(j), j);
+      if (state.isActive(j)) order.emplace_back(costs[j], j);
     }
     std::sort(order.begin(), order.end());  // ties go to the lower index: the same every run
     std::size_t best = planes.size();
     for (const auto& [delta, j] : order) {
-      if (isAcceptable(activePlanes(planes, state, j))) {
+      if (rule.accepts(activePlanes(planes, state, j), j)) {
         best = j;
         break;
       }
     }
     if (best == planes.size()) break;  // every remaining plane is needed
     state.remove(best);
+    if (rule.removed) rule.removed(best);
     steps.push_back({activePlanes(planes, state, planes.size()), state.totalCost() * perSample});
   }
   return steps;

@@ -5,6 +5,7 @@
 #include "geometry/evaluation/reflection_samples.h"
 #include "geometry/tune/greedy_plane_removal.h"
 #include "geometry/tune/one_dimensional_fits.h"
+#include "geometry/tune/plane_reach.h"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -13,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <random>
 
 namespace probeproxy {
 namespace {
@@ -138,6 +140,45 @@ TEST_F(BoxRoomEvaluation, CheapKAndSphereFitsBeatNoCorrection) {
   EXPECT_LE(s.missRate, 0.01);  // misses cost as much as the worst error: the fit avoids them
 }
 
+// The simplification's reach check, kept up to date as planes go, must say what a fresh
+// farthestExitMeters says, bit for bit, at every step: 40 planes tangent to a rough sphere,
+// removed in a fixed random order, every remaining plane tried at every step.
+TEST(PlaneReach, MatchesFarthestExitAsPlanesGo) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0), radius(2.0, 6.0);
+  std::vector<ProxyPlane> planes;
+  while (planes.size() < 40) {
+    const glm::dvec3 n(unit(rng), unit(rng), unit(rng));
+    if (glm::length(n) < 0.1 || glm::length(n) > 1.0) continue;
+    planes.push_back({glm::normalize(n), radius(rng)});
+  }
+  const glm::dvec3 from(0.3, -0.2, 0.1);
+  PlaneReach reach(planes, from, 512);
+  std::vector<std::size_t> order(planes.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::shuffle(order.begin(), order.end(), rng);
+  std::vector<char> kept(planes.size(), 1);
+  const auto keptWithout = [&](std::size_t j) {
+    std::vector<ProxyPlane> p;
+    for (std::size_t i = 0; i < planes.size(); ++i)
+      if (kept[i] && i != j) p.push_back(planes[i]);
+    return p;
+  };
+  std::size_t finiteAnswers = 0, infiniteAnswers = 0;
+  for (std::size_t step = 0; step + 1 < order.size(); ++step) {
+    for (std::size_t j = 0; j < planes.size(); ++j) {
+      if (!kept[j]) continue;
+      const double want = farthestExitMeters(keptWithout(j), from, 512);
+      ASSERT_EQ(reach.farthestWithoutMeters(j), want) << "step " << step << ", plane " << j;
+      ++(std::isinf(want) ? infiniteAnswers : finiteAnswers);
+    }
+    reach.remove(order[step]);
+    kept[order[step]] = 0;
+  }
+  EXPECT_GT(finiteAnswers, 100u);  // both kinds of answer were checked
+  EXPECT_GT(infiniteAnswers, 20u);
+}
+
 TEST_F(BoxRoomEvaluation, GreedyRemovalDropsPlanesNobodyNeedsFirst) {
   const auto samples = buildReflectionSamples(caster, probe, SampleSet::MirrorFloor);
   // The room's six planes plus four far-away planes that cut nothing.
@@ -163,7 +204,9 @@ TEST_F(BoxRoomEvaluation, GreedyRemovalDropsPlanesNobodyNeedsFirst) {
     }
     return true;
   };
-  const auto steps = greedyPlaneRemoval(planes, probe.captureMeters, samples, 4, bounded);
+  const PlaneRemovalRule rule{
+      [&](const std::vector<ProxyPlane>& p, std::size_t) { return bounded(p); }, {}};
+  const auto steps = greedyPlaneRemoval(planes, probe.captureMeters, samples, 4, rule);
   // The far planes cost nothing and go first; the floor, which no upward reflection reaches,
   // must stay: without it the proxy would be open below.
   ASSERT_GE(steps.size(), 5u);

@@ -6,12 +6,13 @@
 #include "geometry/builtin/box_room.h"
 #include "geometry/evaluation/reflection_samples.h"
 #include "geometry/export/runtime_probe_shape.h"
+#include "geometry/floor/floor_graph.h"
+#include "geometry/floor/walkable_floor.h"
 #include "geometry/survey/area_percentile.h"
 #include "geometry/survey/blended_error.h"
 #include "geometry/survey/run_survey.h"
 #include "geometry/survey/storeys.h"
 #include "geometry/survey/survey_map.h"
-#include "geometry/floor/walkable_floor.h"
 #include "plugin/jobs/survey/survey_report.h"
 
 #include <gtest/gtest.h>
@@ -95,6 +96,43 @@ TEST(WalkableFloor, AWallWithADoorConnectsOnlyThroughTheDoor) {
                                      [](const FloorCell& c) { return c.pointMeters.x > 6.0; });
     EXPECT_EQ(farRoom, door);
   }
+}
+
+// layout fills one level-wide graph for each candidate instead of casting a walkable floor per
+// region: where the region starts at the level's corner the two grids coincide, and the fill
+// must give the region's own walkable floor cell for cell. A region that cuts the room in two
+// along the wall of the door keeps the fill from walking around it.
+TEST(FloorGraph, ARegionFillIsTheRegionsWalkableFloor) {
+  LevelMesh level = boxRoom({0, 0, 0}, {10, 4, 3});
+  appendLevelMesh(level, block({4.9f, 0, 0}, {5.1f, 1.5f, 3}));
+  appendLevelMesh(level, block({4.9f, 2.5f, 0}, {5.1f, 4, 3}));
+  appendLevelMesh(level, block({7, 1, 0}, {8, 3, 1.0f}));
+  const LevelRayCaster caster(level);
+  const FloorGraph graph = buildFloorGraph(caster, WalkableFloorOptions{});
+  const glm::dvec3 seed{1.0, 1.0, 1.6};
+  for (const glm::dvec2 regionMax :
+       {glm::dvec2(3.0, 4.0), glm::dvec2(8.6, 1.4), glm::dvec2(1e9, 1e9), glm::dvec2(5.0, 2.2)}) {
+    WalkableFloorOptions region;
+    region.regionMinMeters = glm::dvec2(-5.0, -5.0);
+    region.regionMaxMeters = regionMax;
+    const WalkableFloor want = walkableFloor(caster, std::span(&seed, 1), region);
+    const WalkableFloor got =
+        reachableFloor(graph, std::span(&seed, 1), region.regionMinMeters, regionMax);
+    ASSERT_EQ(got.cells.size(), want.cells.size())
+        << "region to " << regionMax.x << ", " << regionMax.y;
+    EXPECT_GT(got.cells.size(), 0u);
+    for (std::size_t i = 0; i < got.cells.size(); ++i) {
+      EXPECT_EQ(got.cells[i].pointMeters, want.cells[i].pointMeters);
+      EXPECT_EQ(got.cells[i].areaSquareMeters, want.cells[i].areaSquareMeters);
+    }
+    EXPECT_EQ(got.candidateCells, want.candidateCells);
+    EXPECT_EQ(got.seedsOnFloor, 1u);
+  }
+  // The region that ends at y = 1.4 holds the wall's lower part but not the door (y 1.5 to
+  // 2.5): the far room lies beyond the wall for a walk that may not leave the region.
+  const glm::dvec2 lo(-5.0), hi(8.6, 1.4);
+  for (const FloorCell& c : reachableFloor(graph, std::span(&seed, 1), lo, hi).cells)
+    EXPECT_LT(c.pointMeters.x, 5.0);
 }
 
 TEST(WalkableFloor, BadOptionsAreOneLineInputErrors) {
