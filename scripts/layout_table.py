@@ -74,9 +74,12 @@ def main():
                    100 * gover, ratio, reach), flush=True)
             if args.maps and level in args.pictures:
                 os.makedirs(args.maps, exist_ok=True)
+                # layout_survey.png, grid_survey.png; per storey where the level has several.
                 for kind in ("layout", "grid"):
-                    shutil.copyfile(os.path.join(out + "_" + kind, "layout_survey.png"),
-                                    os.path.join(args.maps, "%s_%s.png" % (level, kind)))
+                    for path in sorted(glob.glob(os.path.join(out + "_" + kind, "*_survey*.png"))):
+                        storey = os.path.basename(path).split("_survey")[1]
+                        shutil.copyfile(path, os.path.join(args.maps,
+                                                           "%s_%s%s" % (level, kind, storey)))
 
 
 if __name__ == "__main__":
