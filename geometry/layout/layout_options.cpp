@@ -1,5 +1,6 @@
 #include "geometry/layout/layout_options.h"
 
+#include "core/errors/input_error.h"
 #include "core/errors/option_checks.h"
 
 namespace probeproxy {
@@ -23,6 +24,9 @@ void LayoutOptions::check() const {
   requireNonNegative("blend_band", blendBandMeters);
   requireInRange("samples_per_cell", samplesPerCell, 1, 64);
   requireInRange<std::size_t>("max_probes", maxProbes, 0, 100'000);
+  if (keepAuthored && baseline != LayoutBaseline::None)
+    throw InputError("option keep_authored",
+                     "adds probes to the scene's own; it does not go with a baseline");
   floor.check();
   candidateProxy.check();
   finalProxy.check();

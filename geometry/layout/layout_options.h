@@ -21,6 +21,9 @@ struct LayoutOptions {
   LayoutBaseline baseline = LayoutBaseline::None;
   double toleranceDeg = 5.0;   // a floor sample is served where one probe's error is this or less
   std::size_t maxProbes = 0;   // 0: as many as the floor needs; else at most this many
+  // Keep the scene's probes as authored and add probes only for the floor they do not serve
+  // within the tolerance (the layout itself only, not a baseline).
+  bool keepAuthored = false;
   double spacingMeters = 2.0;  // the candidates' grid (and the grid baseline's)
   // At most this many capture points: on a level whose floor holds more at `spacingMeters`,
   // the candidates' grid is coarsened until it fits (layout time grows with the count).

@@ -63,10 +63,13 @@ Candidates serveAll(const LevelRayCaster& level, const std::vector<LayoutCandida
   return c;
 }
 
-// Area share of the floor some of `which` candidates serve within the tolerance.
+// Area share of the floor some of `which` candidates serve within the tolerance, or the kept
+// probes do (per floor cell; empty without them).
 double servedShare(std::span<const CandidateService> services, std::span<const std::size_t> which,
-                   std::span<const FloorSample> samples) {
+                   std::span<const FloorSample> samples, std::span<const char> keptCells) {
   std::vector<char> served(samples.size(), 0);
+  if (!keptCells.empty())
+    for (std::size_t i = 0; i < samples.size(); ++i) served[i] = keptCells[samples[i].cell];
   for (std::size_t c : which)
     for (std::uint32_t s : services[c].served) served[s] = 1;
   double area = 0.0, servedArea = 0.0;
@@ -77,10 +80,43 @@ double servedShare(std::span<const CandidateService> services, std::span<const s
   return area > 0.0 ? servedArea / area : 0.0;
 }
 
+// What the kept probes already do for each floor cell, as the runtime blends them (survey's
+// measure): a cell is served when one of their volumes covers it and none of its samples is
+// over the tolerance (a sample no kept probe can see is not held against them, as in survey).
+KeptFloor keptFloor(const LevelRayCaster& level, const WalkableFloor& floor,
+                    std::span<const FloorSample> samples, std::span<const SurveyProbe> kept,
+                    double toleranceDeg, double& servedShare) {
+  KeptFloor k;
+  std::vector<InfluenceVolume> volumes;
+  for (const SurveyProbe& p : kept) volumes.push_back(p.influence);
+  k.covered.assign(floor.cells.size(), 0);
+  tbb::parallel_for(std::size_t{0}, floor.cells.size(), [&](std::size_t c) {
+    const glm::dvec3 at = floor.cells[c].pointMeters + glm::dvec3(0.0, 0.0, kBlendLiftMeters);
+    k.covered[c] = std::any_of(volumes.begin(), volumes.end(),
+                               [&](const InfluenceVolume& v) { return insideInfluence(v, at); });
+  });
+  std::vector<char> fails(samples.size(), 0);
+  tbb::parallel_for(std::size_t{0}, samples.size(), [&](std::size_t i) {
+    const SurveySampleError e =
+        blendedSampleError(level, kept, volumes, samples[i].sample, BlendOptions{});
+    fails[i] = e.uncovered || (!std::isnan(e.errorDeg) && e.errorDeg > toleranceDeg);
+  });
+  k.served = k.covered;
+  for (std::size_t i = 0; i < samples.size(); ++i)
+    if (fails[i]) k.served[samples[i].cell] = 0;
+  double area = 0.0, served = 0.0;
+  for (std::size_t c = 0; c < floor.cells.size(); ++c) {
+    area += floor.cells[c].areaSquareMeters;
+    if (k.served[c]) served += floor.cells[c].areaSquareMeters;
+  }
+  servedShare = area > 0.0 ? served / area : 0.0;
+  return k;
+}
+
 void layoutByCandidates(const LevelRayCaster& level, const WalkableFloor& floor,
                         const LayoutOptions& o,
                         const std::function<void(std::size_t, std::size_t)>& onDone,
-                        LayoutResult& r) {
+                        std::span<const SurveyProbe> kept, LayoutResult& r) {
   FloorSampleOptions so;
   so.samplesPerCell = o.samplesPerCell;
   so.upwardCosine = o.floor.upwardCosine;
@@ -109,12 +145,15 @@ void layoutByCandidates(const LevelRayCaster& level, const WalkableFloor& floor,
   SelectionOptions select;
   select.maxProbes = o.maxProbes;
   select.gapCells = static_cast<int>(std::lround(o.blendBandMeters / floor.spacingMeters));
+  const KeptFloor keptCells =
+      kept.empty() ? KeptFloor{}
+                   : keptFloor(level, floor, samples, kept, o.toleranceDeg, r.keptServedShare);
   const ProbeSelection selection =
-      selectProbes(services, built.sights, captureCells, samples, floor, select);
+      selectProbes(services, built.sights, captureCells, samples, floor, select, keptCells);
   std::vector<std::size_t> all(services.size());
   for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
-  r.servableShare = servedShare(services, all, samples);
-  r.servedShare = servedShare(services, selection.chosen, samples);
+  r.servableShare = servedShare(services, all, samples, keptCells.served);
+  r.servedShare = servedShare(services, selection.chosen, samples, keptCells.served);
   for (std::size_t p = 0; p < selection.chosen.size(); ++p) {
     const CandidateService& chosen = services[selection.chosen[p]];
     r.probes.push_back(
@@ -128,7 +167,8 @@ void layoutByCandidates(const LevelRayCaster& level, const WalkableFloor& floor,
 
 LayoutResult runLayout(const LevelRayCaster& level, std::span<const glm::dvec3> seedsMeters,
                        const LayoutOptions& o,
-                       const std::function<void(std::size_t, std::size_t)>& onCandidateDone) {
+                       const std::function<void(std::size_t, std::size_t)>& onCandidateDone,
+                       std::span<const SurveyProbe> kept) {
   const auto start = std::chrono::steady_clock::now();
   o.check();
   LayoutResult r;
@@ -150,7 +190,7 @@ LayoutResult runLayout(const LevelRayCaster& level, std::span<const glm::dvec3> 
         r.probes.push_back({g.captureMeters, influenceAroundFloor(floor, g.cells, g.captureMeters,
                                                                   o.blendBandMeters)});
     } else {
-      layoutByCandidates(level, floor, o, onCandidateDone, r);
+      layoutByCandidates(level, floor, o, onCandidateDone, kept, r);
     }
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -11,6 +11,7 @@
 #include "core/scene/influence_volume.h"
 #include "geometry/layout/layout_options.h"
 #include "geometry/raycast/level_ray_caster.h"
+#include "geometry/survey/blended_error.h"
 
 #include <glm/vec3.hpp>
 
@@ -40,13 +41,19 @@ struct LayoutResult {
   // candidate could: what the selection reached of what it could reach.
   double servedShare = 0.0, servableShare = 0.0;
   double spacingMeters = 0.0;  // the candidates' grid, or the grid baseline's spacing taken
+  // With kept probes: the floor (area share) they serve within the tolerance before anything is
+  // added.
+  double keptServedShare = 0.0;
   double seconds = 0.0;
 };
 
 // `onCandidateDone(done, total)` reports candidate builds (serialized), the slow part.
+// `kept`: probes that stay as they are (an artist's, with their proxies): the layout adds only
+// probes for the floor they do not serve within the tolerance; result.probes are the added ones.
 // Throws InputError when no seed stands over walkable floor.
 LayoutResult runLayout(const LevelRayCaster& level, std::span<const glm::dvec3> seedsMeters,
                        const LayoutOptions& options,
-                       const std::function<void(std::size_t, std::size_t)>& onCandidateDone = {});
+                       const std::function<void(std::size_t, std::size_t)>& onCandidateDone = {},
+                       std::span<const SurveyProbe> kept = {});
 
 }  // namespace probeproxy

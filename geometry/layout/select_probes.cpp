@@ -168,8 +168,10 @@ void dropAbsorbed(const FloorColumns& columns, const CellSets& sets, double acce
 // Floor that no range's band reaches (crumbs too small to be worth a probe, floor between
 // ranges wider than the band): the range on its storey that needs the least stretch takes it,
 // where the stretched range overlaps no other. Every floor cell is then in some influence.
-void coverLeftovers(const WalkableFloor& floor, int gapCells, std::vector<FloorRect>& ranges) {
+void coverLeftovers(const WalkableFloor& floor, int gapCells, std::span<const char> keptCovered,
+                    std::vector<FloorRect>& ranges) {
   const auto banded = [&](std::size_t cell) {
+    if (!keptCovered.empty() && keptCovered[cell]) return true;
     return std::any_of(ranges.begin(), ranges.end(), [&](const FloorRect& r) {
       return widened(r, gapCells).holds(floor.cells[cell]);
     });
@@ -202,10 +204,12 @@ ProbeSelection selectProbes(std::span<const CandidateService> services,
                             std::span<const CaptureSight> sights,
                             std::span<const std::size_t> captureCells,
                             std::span<const FloorSample> samples, const WalkableFloor& floor,
-                            const SelectionOptions& o) {
+                            const SelectionOptions& o, const KeptFloor& kept) {
   const FloorColumns columns(floor);
   const CellSets sets = cellSets(services, sights, samples, floor.cells.size());
-  Cover cover{columns, services, captureCells, o, std::vector<char>(floor.cells.size(), 0), {}};
+  std::vector<char> claimed =
+      kept.served.empty() ? std::vector<char>(floor.cells.size(), 0) : kept.served;
+  Cover cover{columns, services, captureCells, o, std::move(claimed), {}};
   const auto area = [&](std::size_t cell) { return floor.cells[cell].areaSquareMeters; };
   const double minGain = std::max(o.minGainSquareMeters, o.minGainShare * floor.areaSquareMeters());
   // Served floor first; floor nobody serves goes to those who see it, worth a quarter as much.
@@ -223,7 +227,7 @@ ProbeSelection selectProbes(std::span<const CandidateService> services,
       [&](std::size_t c, std::size_t cell) { return sets.seen[c][cell] ? area(cell) : 0.0; },
       minGain);
   dropAbsorbed(columns, sets, o.acceptedShare, cover.selection);
-  coverLeftovers(floor, o.gapCells, cover.selection.ranges);
+  coverLeftovers(floor, o.gapCells, kept.covered, cover.selection.ranges);
   return cover.selection;
 }
 

@@ -38,12 +38,19 @@ struct ProbeSelection {
   std::vector<FloorRect> ranges;    // chosen[i]'s inner range
 };
 
+// Probes the cover keeps as they are (an artist's, `layout --keep-authored`): per floor cell,
+// whether one of their volumes covers it, and whether they already serve it (covered, every
+// sample within the tolerance). Served cells are no new probe's; covered ones need no stretch.
+struct KeptFloor {
+  std::vector<char> covered, served;
+};
+
 // `sights[services[c].capture]` is what candidate c sees; `captureCells[services[c].capture]`
-// the floor cell under its capture point.
+// the floor cell under its capture point. `kept`: empty, or per floor cell as above.
 ProbeSelection selectProbes(std::span<const CandidateService> services,
                             std::span<const CaptureSight> sights,
                             std::span<const std::size_t> captureCells,
                             std::span<const FloorSample> samples, const WalkableFloor& floor,
-                            const SelectionOptions& options);
+                            const SelectionOptions& options, const KeptFloor& kept = {});
 
 }  // namespace probeproxy

@@ -74,6 +74,9 @@ Verb addLayoutVerb(CLI::App& app) {
                    "none: the layout; grid: a probe every --spacing m with aabb proxies; "
                    "spawn: a sphere of --reach m at every spawn point")
       ->capture_default_str();
+  verb->add_flag("--keep-authored", l.keepAuthored,
+                 "keep the scene's probes as they are and add probes only where they do not "
+                 "serve the floor within the tolerance");
   verb->add_option("--tolerance-deg", l.toleranceDeg,
                    "a floor sample is served where one probe's error is at most this")
       ->capture_default_str();

@@ -20,6 +20,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <set>
 
 namespace probeproxy::jobs {
 
@@ -55,8 +56,22 @@ const char* baselineName(LayoutBaseline baseline) {
   return "layout";
 }
 
-// The layout as a scene written into outFolder: the input's level, reached from there.
-Scene layoutScene(const Scene& input, const LayoutResult& layout, const fs::path& outFolder) {
+// A kept probe as layout.scene.json spells it: its files (an authored convex mesh, its
+// cubemaps) reached from the new folder.
+Probe keptProbe(Probe probe, const fs::path& inputFolder, const fs::path& folder) {
+  if (auto* mesh = std::get_if<AuthoredConvexMesh>(&probe.proxy))
+    mesh->meshAsWritten = mesh->mesh.lexically_relative(folder);
+  if (probe.cubemap && fs::path(*probe.cubemap).is_relative())
+    probe.cubemap =
+        (inputFolder / *probe.cubemap).lexically_normal().lexically_relative(folder).string();
+  return probe;
+}
+
+// The layout as a scene written into outFolder: the input's level, reached from there; with
+// keepAuthored the input's probes first, as they are, then the added ones, named so that no
+// name repeats.
+Scene layoutScene(const Scene& input, const LayoutResult& layout, const fs::path& outFolder,
+                  bool keepAuthored) {
   Scene scene;
   scene.fileUp = input.fileUp;
   scene.metersPerUnit = input.metersPerUnit;
@@ -64,9 +79,19 @@ Scene layoutScene(const Scene& input, const LayoutResult& layout, const fs::path
   scene.file = folder / "layout.scene.json";
   scene.level = input.level;
   for (LevelMeshRef& ref : scene.level) ref.pathAsWritten = ref.path.lexically_relative(folder);
+  std::set<std::string> names;
+  if (keepAuthored) {
+    const fs::path inputFolder = fs::absolute(input.file).parent_path().lexically_normal();
+    for (const Probe& p : input.probes) {
+      scene.probes.push_back(keptProbe(p, inputFolder, folder));
+      names.insert(p.name);
+    }
+  }
+  std::size_t number = 0;
   for (std::size_t i = 0; i < layout.probes.size(); ++i) {
     char name[32];
-    std::snprintf(name, sizeof name, "probe_%03zu", i + 1);
+    do std::snprintf(name, sizeof name, "probe_%03zu", ++number);
+    while (names.count(name) > 0);
     Probe probe;
     probe.name = name;
     probe.captureMeters = layout.probes[i].captureMeters;
@@ -135,6 +160,11 @@ std::string layoutReportJson(const LayoutJobOptions& o, const LayoutJobResult& r
   j["baseline"] =
       o.layout.baseline == LayoutBaseline::None ? "none" : baselineName(o.layout.baseline);
   j["probes"] = r.scene.probes.size();
+  if (o.layout.keepAuthored) {
+    j["kept_probes"] = r.scene.probes.size() - r.layout.probes.size();
+    j["added_probes"] = r.layout.probes.size();
+    j["kept_served_share"] = number(r.layout.keptServedShare);
+  }
   j["tolerance_deg"] = o.layout.toleranceDeg;
   j["spacing_m"] = number(r.layout.spacingMeters);
   j["floor_cells"] = r.layout.floorCells;
@@ -161,6 +191,9 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
   const ThreadLimit threads(o.threads);
   const bool inMemory = o.levelOrScene.empty();
   const Scene input = inMemory ? readSceneInput(o.input) : readLevelOrScene(o.levelOrScene);
+  if (o.layout.keepAuthored && input.probes.empty())
+    throw InputError(inMemory ? input.file : o.levelOrScene,
+                     "--keep-authored: the scene has no probes to keep");
   const LevelMesh level = loadSceneLevel(input, inMemory ? o.input : SceneInput{});
   const LevelRayCaster rayCaster(level);
   // Players enter at the spawn points; a level without them (an OBJ room) at its probes.
@@ -171,18 +204,31 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
     throw InputError(inMemory ? input.file : o.levelOrScene,
                      "no seed point: the level has no spawn points and the scene no probes");
 
+  // The artist's probes, with the proxies `build` gives them (authored ones as authored).
+  std::vector<ProbeProxyBuild> keptBuilds;
+  std::vector<SurveyProbe> kept;
+  if (o.layout.keepAuthored) {
+    keptBuilds = buildSceneProxies(input, rayCaster, o.layout.finalProxy);
+    for (std::size_t i = 0; i < input.probes.size(); ++i)
+      kept.push_back({input.probes[i].captureMeters, input.probes[i].influence,
+                      keptBuilds[i].candidates[keptBuilds[i].kept].shape});
+  }
+
   LayoutJobResult r;
-  r.layout = runLayout(rayCaster, seeds, o.layout, progress);
-  r.scene = layoutScene(input, r.layout, o.outFolder.empty() ? fs::path(".") : o.outFolder);
+  r.layout = runLayout(rayCaster, seeds, o.layout, progress, kept);
+  r.scene = layoutScene(input, r.layout, o.outFolder.empty() ? fs::path(".") : o.outFolder,
+                        o.layout.keepAuthored);
   std::vector<std::pair<fs::path, LevelMesh>> proxyMeshes;  // written with the scene
   if (o.layout.baseline == LayoutBaseline::None) {
     checkCapturePoints(r.scene, rayCaster);
+    r.builds = std::move(keptBuilds);
+    const std::size_t first = r.builds.size();  // the added probes' builds follow the kept ones
     r.builds.resize(r.scene.probes.size());
-    tbb::parallel_for(std::size_t{0}, r.builds.size(), [&](std::size_t i) {
+    tbb::parallel_for(first, r.builds.size(), [&](std::size_t i) {
       r.builds[i] = buildForRegion(rayCaster, r.scene.probes[i], o.layout);
     });
     const fs::path folder = r.scene.file.parent_path();
-    for (std::size_t i = 0; i < r.builds.size(); ++i) {
+    for (std::size_t i = first; i < r.builds.size(); ++i) {
       Probe& probe = r.scene.probes[i];
       probe.proxy = authoredSpec(r.builds[i].candidates[r.builds[i].kept].shape,
                                  folder / (probe.name + ".ply"), probe.name, proxyMeshes);
