@@ -10,7 +10,8 @@
 namespace probeproxy {
 
 void checkProxyError(const LevelRayCaster& level, const Probe& probe, const ProxyShape& authored,
-                     const ValidateOptions& options, std::vector<ValidationFinding>& out) {
+                     const std::vector<FloorPoint>& floor, const ValidateOptions& options,
+                     std::vector<ValidationFinding>& out) {
   if (std::holds_alternative<InfiniteShape>(authored)) return;  // chose no correction
   const std::vector<ReflectionSample> samples =
       buildReflectionSamples(level, probe, SampleSet::MirrorFloor, options.samples);
@@ -42,6 +43,12 @@ void checkProxyError(const LevelRayCaster& level, const Probe& probe, const Prox
                        "the reflections land on"
                      : "no convex proxy does better here: split the probe's area between more "
                        "probes, or accept the error"});
+  // Where no proxy of its own will do, a second probe may.
+  const bool generatedBetter = kept.error.p95Deg < error.p95Deg;
+  const double best = generatedBetter ? kept.error.p95Deg : error.p95Deg;
+  if (best > options.toleranceDeg)
+    checkSplitProbe(level, probe, generatedBetter ? kept.shape : authored, best, samples, floor,
+                    options, out);
 }
 
 }  // namespace probeproxy

@@ -47,7 +47,7 @@ std::vector<ValidationFinding> validateScene(const Scene& scene, const LevelRayC
     checkCaptureInsideInfluence(probe, findings);
     if (hasError(findings, first)) continue;
     checkCaptureInsideLevel(level, probe, findings);
-    if (authored) checkProxyError(level, probe, *authored, options, findings);
+    if (authored) checkProxyError(level, probe, *authored, floor, options, findings);
     checkInfluenceLeak(level, probe, floor, options, findings);
     if (authored) checkReflectedCameras(level, probe, *authored, options, findings);
   }

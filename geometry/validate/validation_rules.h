@@ -8,6 +8,7 @@
 #include <glm/vec3.hpp>
 
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace probeproxy {
@@ -28,8 +29,17 @@ void checkCaptureInsideProxy(const Probe& probe, const ProxyShape& authored,
 void checkCaptureInsideInfluence(const Probe& probe, std::vector<ValidationFinding>& out);
 void checkCaptureInsideLevel(const LevelRayCaster& level, const Probe& probe,
                              std::vector<ValidationFinding>& out);
+// With split_probe where neither the authored nor the generated proxy is within the tolerance.
 void checkProxyError(const LevelRayCaster& level, const Probe& probe, const ProxyShape& authored,
-                     const ValidateOptions& options, std::vector<ValidationFinding>& out);
+                     const std::vector<FloorPoint>& floor, const ValidateOptions& options,
+                     std::vector<ValidationFinding>& out);
+// split_probe: whether a second capture point over the probe's floor, the volume split halfway
+// between the two, brings `samples` (its mirror_floor samples) within the tolerance; `own` is
+// the probe's best proxy, of p95 ownP95Deg. Names the best such point.
+void checkSplitProbe(const LevelRayCaster& level, const Probe& probe, const ProxyShape& own,
+                     double ownP95Deg, std::span<const ReflectionSample> samples,
+                     const std::vector<FloorPoint>& floor, const ValidateOptions& options,
+                     std::vector<ValidationFinding>& out);
 void checkInfluenceLeak(const LevelRayCaster& level, const Probe& probe,
                         const std::vector<FloorPoint>& floor, const ValidateOptions& options,
                         std::vector<ValidationFinding>& out);
