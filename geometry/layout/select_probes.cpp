@@ -207,10 +207,13 @@ ProbeSelection selectProbes(std::span<const CandidateService> services,
                             const SelectionOptions& o, const KeptFloor& kept) {
   const FloorColumns columns(floor);
   const CellSets sets = cellSets(services, sights, samples, floor.cells.size());
-  std::vector<char> claimed =
-      kept.served.empty() ? std::vector<char>(floor.cells.size(), 0) : kept.served;
-  Cover cover{columns, services, captureCells, o, std::move(claimed), {}};
-  const auto area = [&](std::size_t cell) { return floor.cells[cell].areaSquareMeters; };
+  Cover cover{columns, services, captureCells, o, std::vector<char>(floor.cells.size(), 0), {}};
+  // Floor the kept probes already serve is worth nothing to a new probe, but a new range may
+  // take it in on its way to the floor they fail (where it serves it too, as ranges grow only
+  // over floor their candidate serves): closed, it would leave no room round the pillars.
+  const auto area = [&](std::size_t cell) {
+    return !kept.served.empty() && kept.served[cell] ? 0.0 : floor.cells[cell].areaSquareMeters;
+  };
   const double minGain = std::max(o.minGainSquareMeters, o.minGainShare * floor.areaSquareMeters());
   // Served floor first; floor nobody serves goes to those who see it, worth a quarter as much.
   cover.greedy(

@@ -151,6 +151,30 @@ void keepAabbs(Scene& scene, std::vector<ProbeProxyBuild>& builds) {
   }
 }
 
+// The added probes are chosen on coarse candidates; built for their ranges and blended with
+// the artist's, one may do worse than the kept probes alone did there. Last added first, a
+// probe goes when the survey without it has no more floor over the tolerance and none more
+// uncovered: an artist's scene gets nothing that does not help it.
+void dropAddedProbesThatDoNotHelp(const LevelRayCaster& level, const SurveyOptions& survey,
+                                  std::vector<SurveyProbe>& probes, LayoutJobResult& r) {
+  const std::size_t kept = r.scene.probes.size() - r.layout.probes.size();
+  for (std::size_t i = r.scene.probes.size(); i-- > kept;) {
+    std::vector<SurveyProbe> without = probes;
+    without.erase(without.begin() + static_cast<std::ptrdiff_t>(i));
+    SurveyResult lesser = surveyProbes(without, level, survey);
+    const SurveyFigures &now = r.survey.figures, &then = lesser.figures;
+    if (then.overToleranceShare > now.overToleranceShare ||
+        then.uncoveredShare > now.uncoveredShare)
+      continue;
+    const auto at = static_cast<std::ptrdiff_t>(i);
+    probes = std::move(without);
+    r.scene.probes.erase(r.scene.probes.begin() + at);
+    r.builds.erase(r.builds.begin() + at);
+    r.layout.probes.erase(r.layout.probes.begin() + (at - static_cast<std::ptrdiff_t>(kept)));
+    r.survey = std::move(lesser);
+  }
+}
+
 nlohmann::ordered_json number(double v) {
   return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
 }
@@ -246,6 +270,7 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
   survey.seedPointsMeters = seeds;
   survey.toleranceDeg = o.layout.toleranceDeg;
   r.survey = surveyProbes(probes, rayCaster, survey);
+  if (o.layout.keepAuthored) dropAddedProbesThatDoNotHelp(rayCaster, survey, probes, r);
   r.survey.scene = baselineName(o.layout.baseline);
   r.json = layoutReportJson(o, r);
 
