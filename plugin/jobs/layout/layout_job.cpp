@@ -18,6 +18,7 @@
 #include <tbb/parallel_for.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -270,7 +271,16 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
   survey.seedPointsMeters = seeds;
   survey.toleranceDeg = o.layout.toleranceDeg;
   r.survey = surveyProbes(probes, rayCaster, survey);
-  if (o.layout.keepAuthored) dropAddedProbesThatDoNotHelp(rayCaster, survey, probes, r);
+  if (o.layout.keepAuthored) {
+    dropAddedProbesThatDoNotHelp(rayCaster, survey, probes, r);
+    // The dropped probes' proxy meshes are not written.
+    std::erase_if(proxyMeshes, [&](const auto& mesh) {
+      return std::none_of(r.scene.probes.begin(), r.scene.probes.end(), [&](const Probe& p) {
+        const auto* convex = std::get_if<AuthoredConvexMesh>(&p.proxy);
+        return convex != nullptr && convex->mesh == mesh.first;
+      });
+    });
+  }
   r.survey.scene = baselineName(o.layout.baseline);
   r.json = layoutReportJson(o, r);
 
