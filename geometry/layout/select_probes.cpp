@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <optional>
 #include <queue>
 
 namespace probeproxy {
@@ -165,6 +166,50 @@ void dropAbsorbed(const FloorColumns& columns, const CellSets& sets, double acce
   }
 }
 
+// "Model no more than the level needs": when one candidate alone serves, within the tolerance,
+// nearly as much of the floor as the whole cover does (within `slack` of the floor's area) and
+// at least `acceptedShare` of it, and the floor is one storey its range can hold, one probe is
+// the layout. A box room with a few
+// props (the hangar) has floor near the props that no proxy serves whole; the cover's small
+// probes there were chosen on coarse candidates and do not deliver once built and blended.
+std::optional<ProbeSelection> oneProbeServesAsMuch(const FloorColumns& columns,
+                                                   const CellSets& sets,
+                                                   const ProbeSelection& cover, double slack,
+                                                   double acceptedShare) {
+  const WalkableFloor& floor = columns.floor();
+  if (cover.chosen.size() < 2 || floor.cells.empty()) return std::nullopt;
+  FloorRect all{floor.cells[0].column, floor.cells[0].column, floor.cells[0].row,
+                floor.cells[0].row, floor.cells[0].pointMeters.z};
+  double lowest = floor.cells[0].pointMeters.z;
+  for (const FloorCell& c : floor.cells) {
+    all.column0 = std::min(all.column0, c.column), all.column1 = std::max(all.column1, c.column);
+    all.row0 = std::min(all.row0, c.row), all.row1 = std::max(all.row1, c.row);
+    lowest = std::min(lowest, c.pointMeters.z);
+  }
+  all.floorMeters = lowest;
+  double area = 0.0, coverServed = 0.0;
+  for (std::size_t cell = 0; cell < floor.cells.size(); ++cell) {
+    if (!all.holds(floor.cells[cell])) return std::nullopt;  // more than one storey
+    const double a = floor.cells[cell].areaSquareMeters;
+    area += a;
+    if (std::any_of(cover.chosen.begin(), cover.chosen.end(),
+                    [&](std::size_t c) { return sets.served[c][cell] != 0; }))
+      coverServed += a;
+  }
+  std::size_t best = sets.served.size();
+  double bestServed = 0.0;
+  for (std::size_t c = 0; c < sets.served.size(); ++c) {
+    double served = 0.0;
+    for (std::size_t cell = 0; cell < floor.cells.size(); ++cell)
+      if (sets.served[c][cell]) served += floor.cells[cell].areaSquareMeters;
+    if (served > bestServed) best = c, bestServed = served;
+  }
+  if (best == sets.served.size() || bestServed < coverServed - slack * area ||
+      bestServed < acceptedShare * area)
+    return std::nullopt;
+  return ProbeSelection{{best}, {all}};
+}
+
 // Floor that no range's band reaches (crumbs too small to be worth a probe, floor between
 // ranges wider than the band): the range on its storey that needs the least stretch takes it,
 // where the stretched range overlaps no other. Every floor cell is then in some influence.
@@ -230,6 +275,11 @@ ProbeSelection selectProbes(std::span<const CandidateService> services,
       [&](std::size_t c, std::size_t cell) { return sets.seen[c][cell] ? area(cell) : 0.0; },
       minGain);
   dropAbsorbed(columns, sets, o.acceptedShare, cover.selection);
+  if (kept.served.empty()) {
+    if (const auto one =
+            oneProbeServesAsMuch(columns, sets, cover.selection, o.oneProbeSlack, o.acceptedShare))
+      cover.selection = *one;
+  }
   coverLeftovers(floor, o.gapCells, kept.covered, cover.selection.ranges);
   return cover.selection;
 }

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # layout_checks.sh PROBEPROXY SUITE_DIR WORK
-# `layout` on suite levels whose answer is known (issue 12): the corridor (one box room) and
-# the closet (narrower than the candidates' grid) keep one probe each; the L-room (two convex
+# `layout` on suite levels whose answer is known (issue 12): the corridor (one box room), the
+# hangar (a box room with two blocks) and the closet (narrower than the candidates' grid) keep
+# one probe each; the L-room (two convex
 # arms) gets two or three (its corner square sees into both arms, so neither arm's box serves
 # it), whose survey p95 is under the build tolerance with every floor sample covered; the output
 # is the same bytes on 1 and 2 threads, and the layout's scene builds again to the proxies it
@@ -14,6 +15,13 @@ fail() { echo "FAIL: $*"; exit 1; }
 
 "$probeproxy" layout "$suite/corridor/corridor.scene.json" --out "$work/corridor" --json >/dev/null
 [ "$(figure "$work/corridor/layout.json" "['probes']")" = 1 ] || fail "corridor: not one probe"
+
+# The hangar, a box room with two blocks in it: one candidate serves 94% of its floor, nearly all
+# the whole cover serves, so one probe is the layout (it had 13), and it validates clean.
+"$probeproxy" layout "$suite/hangar/hangar.scene.json" --out "$work/hangar" --json >/dev/null
+[ "$(figure "$work/hangar/layout.json" "['probes']")" = 1 ] || fail "hangar: not one probe"
+"$probeproxy" validate "$work/hangar/layout.scene.json" --tolerance-deg 5 >/dev/null ||
+  fail "hangar: its layout does not validate clean"
 
 # A closet narrower than the candidates' grid still gets its probe, and its floor is covered.
 "$probeproxy" layout "$suite/tiny_closet/tiny_closet.scene.json" --out "$work/closet" --json >/dev/null
