@@ -73,7 +73,8 @@ bool connected(const LevelRayCaster& level, glm::dvec2 from, double zFrom, glm::
 // The columns whose squares touch [lo, hi] along one axis, clamped to the grid.
 std::pair<int, int> columnRange(double lo, double hi, double origin, double spacing, int count) {
   const double first = std::clamp(std::floor((lo - origin) / spacing), 0.0, double(count - 1));
-  const double last = std::clamp(std::ceil((hi - origin) / spacing) - 1.0, first, double(count - 1));
+  const double last =
+      std::clamp(std::ceil((hi - origin) / spacing) - 1.0, first, double(count - 1));
   return {static_cast<int>(first), static_cast<int>(last)};
 }
 
@@ -169,8 +170,8 @@ FloorGraph buildFloorGraph(const LevelRayCaster& level, const WalkableFloorOptio
 
 WalkableFloor reachableFloor(const FloorGraph& g, std::span<const glm::dvec3> seedsMeters,
                              glm::dvec2 regionMin, glm::dvec2 regionMax) {
-  const auto [c0, c1] = columnRange(regionMin.x, regionMax.x, g.originMeters.x, g.spacingMeters,
-                                    g.columns);
+  const auto [c0, c1] =
+      columnRange(regionMin.x, regionMax.x, g.originMeters.x, g.spacingMeters, g.columns);
   const auto [r0, r1] =
       columnRange(regionMin.y, regionMax.y, g.originMeters.y, g.spacingMeters, g.rows);
   const Window window{c0, c1, r0, r1};

@@ -19,8 +19,8 @@ enum class LayoutBaseline {
 
 struct LayoutOptions {
   LayoutBaseline baseline = LayoutBaseline::None;
-  double toleranceDeg = 5.0;   // a floor sample is served where one probe's error is this or less
-  std::size_t maxProbes = 0;   // 0: as many as the floor needs; else at most this many
+  double toleranceDeg = 5.0;  // a floor sample is served where one probe's error is this or less
+  std::size_t maxProbes = 0;  // 0: as many as the floor needs; else at most this many
   // Keep the scene's probes as authored and add probes only for the floor they do not serve
   // within the tolerance (the layout itself only, not a baseline).
   bool keepAuthored = false;

@@ -18,11 +18,16 @@ PlaneReach::PlaneReach(const std::vector<ProxyPlane>& planes, glm::dvec3 from, i
     const glm::dvec3 v = reachDirection(static_cast<int>(d), directions);
     for (std::size_t p = 0; p < planeCount_; ++p)
       exit_[d * planeCount_ + p] = planeExitMeters(planes[p], from, v);
-    nearest_[d] = exitWithout(d, planeCount_);
-    through_[d] = static_cast<std::uint32_t>(
-        std::find(exit_.begin() + d * planeCount_, exit_.begin() + (d + 1) * planeCount_,
-                  nearest_[d]) -
-        (exit_.begin() + d * planeCount_));
+    findNearest(d);
+  }
+}
+
+void PlaneReach::findNearest(std::size_t d) {
+  nearest_[d] = std::numeric_limits<double>::infinity();
+  through_[d] = static_cast<std::uint32_t>(planeCount_);  // none: the direction never leaves
+  for (std::size_t p = 0; p < planeCount_; ++p) {
+    if (kept_[p] && exit_[d * planeCount_ + p] < nearest_[d])
+      nearest_[d] = exit_[d * planeCount_ + p], through_[d] = static_cast<std::uint32_t>(p);
   }
 }
 
@@ -42,15 +47,8 @@ double PlaneReach::farthestWithoutMeters(std::size_t j) const {
 
 void PlaneReach::remove(std::size_t j) {
   kept_[j] = 0;
-  for (std::size_t d = 0; d < directionCount_; ++d) {
-    if (through_[d] != j) continue;
-    nearest_[d] = std::numeric_limits<double>::infinity();
-    through_[d] = static_cast<std::uint32_t>(planeCount_);
-    for (std::size_t p = 0; p < planeCount_; ++p) {
-      if (kept_[p] && exit_[d * planeCount_ + p] < nearest_[d])
-        nearest_[d] = exit_[d * planeCount_ + p], through_[d] = static_cast<std::uint32_t>(p);
-    }
-  }
+  for (std::size_t d = 0; d < directionCount_; ++d)
+    if (through_[d] == j) findNearest(d);
 }
 
 }  // namespace probeproxy

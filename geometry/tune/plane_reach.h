@@ -27,11 +27,13 @@ class PlaneReach {
 
  private:
   double exitWithout(std::size_t direction, std::size_t j) const;
+  void findNearest(std::size_t direction);  // nearest_ and through_ over the kept planes
 
   std::size_t planeCount_ = 0, directionCount_ = 0;
-  std::vector<double> exit_;  // [direction][plane]: where the direction leaves the plane; inf if never
+  std::vector<double>
+      exit_;  // [direction][plane]: where the direction leaves the plane; inf if never
   std::vector<char> kept_;
-  std::vector<double> nearest_;        // [direction]: the least exit over the kept planes
+  std::vector<double> nearest_;         // [direction]: the least exit over the kept planes
   std::vector<std::uint32_t> through_;  // [direction]: the kept plane it is reached at first
 };
 

@@ -1,8 +1,8 @@
 // proxy_error_over_tolerance: the authored proxy against the real level, with the proxy
 // probeproxy would generate beside it, so the artist sees whether a better one exists.
 
-#include "geometry/probe_proxies/build_probe_proxy.h"
 #include "geometry/evaluation/evaluate_shape.h"
+#include "geometry/probe_proxies/build_probe_proxy.h"
 #include "geometry/validate/validation_rules.h"
 
 #include <cstdio>

@@ -4,12 +4,15 @@
 // probe that serves it better, and the point whose split leaves the lowest p95 is named if that
 // p95 is within the tolerance.
 
+#include "core/measures/error_figures.h"
 #include "geometry/evaluation/evaluate_shape.h"
 #include "geometry/layout/candidate_service.h"
 #include "geometry/layout/layout_candidates.h"
 #include "geometry/layout/layout_options.h"
 #include "geometry/probe_proxies/build_probe_proxy.h"
 #include "geometry/probe_proxies/build_scene_proxies.h"
+#include "geometry/probe_proxies/fit_candidates.h"
+#include "geometry/probe_proxies/probe_view.h"
 #include "geometry/survey/blended_error.h"
 #include "geometry/validate/validation_rules.h"
 
@@ -31,6 +34,8 @@ constexpr double kTrySpacingMeters = 1.5;  // between the capture points tried
 constexpr std::size_t kMaxTries = 64;
 constexpr double kCaptureHeightMeters = 1.6;
 constexpr double kSplitCellMeters = 1.0;  // the squares of floor the split hands out
+// The widest fit region tried: past any room the validator's probes span, "all it sees".
+constexpr double kAllItSeesFitMeters = 4.0 * kRoomsFitMeters;
 
 // Floor points of the probe's volume, one per kTrySpacingMeters square and storey, at most
 // kMaxTries (every k-th when there are more), in floor order.
@@ -43,10 +48,10 @@ std::vector<glm::dvec3> capturesToTry(const LevelRayCaster& level, const Probe& 
     if (!insideInfluence(probe.influence, p + glm::dvec3(0.0, 0.0, kBlendLiftMeters))) continue;
     const double column = std::floor(p.x / kTrySpacingMeters),
                  row = std::floor(p.y / kTrySpacingMeters);
-    const double offCentre = std::hypot(p.x - (column + 0.5) * kTrySpacingMeters,
-                                        p.y - (row + 0.5) * kTrySpacingMeters);
-    const auto key = std::make_tuple(std::lround(row), std::lround(column),
-                                     std::lround(std::floor(p.z / 2.0)));
+    const double offCentre =
+        std::hypot(p.x - (column + 0.5) * kTrySpacingMeters, p.y - (row + 0.5) * kTrySpacingMeters);
+    const auto key =
+        std::make_tuple(std::lround(row), std::lround(column), std::lround(std::floor(p.z / 2.0)));
     const auto [at, fresh] = squares.emplace(key, std::pair{offCentre, p});
     if (!fresh && offCentre < at->second.first) at->second = {offCentre, p};
   }
@@ -68,43 +73,44 @@ std::vector<glm::dvec3> capturesToTry(const LevelRayCaster& level, const Probe& 
   return captures;
 }
 
-// The p95 of the split: the floor cut into kSplitCellMeters squares, each shaded by the probe
-// that leaves fewer of its samples over the tolerance (then the lower mean): a split an artist
-// can draw, not a choice per reflection. A sample a capture point cannot see is a miss for that
-// probe (its cubemap shows something else there).
-double splitP95(const LevelRayCaster& level, const Probe& probe, const ProxyShape& own,
-                glm::dvec3 second, const ProxyShape& secondProxy,
-                std::span<const ReflectionSample> samples, double toleranceDeg) {
-  struct Square {
-    std::vector<double> first, other;
-  };
-  std::map<std::tuple<long, long, long>, Square> squares;
-  const auto errorOf = [](double e) { return std::isnan(e) ? kMissErrorDeg : e; };
+// The floor cut into kSplitCellMeters squares (per storey): each sample's square, in 0..count.
+std::vector<std::size_t> splitSquares(std::span<const ReflectionSample> samples,
+                                      std::size_t& count) {
+  std::map<std::tuple<long, long, long>, std::size_t> index;
+  std::vector<std::size_t> squareOf;
   for (const ReflectionSample& s : samples) {
-    Square& square = squares[{std::lround(std::floor(s.xMeters.y / kSplitCellMeters)),
-                              std::lround(std::floor(s.xMeters.x / kSplitCellMeters)),
-                              std::lround(std::floor(s.xMeters.z / 2.0))}];
-    square.first.push_back(
-        s.occluded ? kMissErrorDeg : errorOf(angularErrorDeg(own, probe.captureMeters, s)));
-    square.other.push_back(trueHitHiddenFrom(level, second, s)
-                               ? kMissErrorDeg
-                               : errorOf(angularErrorDeg(secondProxy, second, s)));
+    const auto key = std::make_tuple(std::lround(std::floor(s.xMeters.y / kSplitCellMeters)),
+                                     std::lround(std::floor(s.xMeters.x / kSplitCellMeters)),
+                                     std::lround(std::floor(s.xMeters.z / 2.0)));
+    squareOf.push_back(index.emplace(key, index.size()).first->second);
   }
-  const auto score = [&](const std::vector<double>& e) {
-    const auto over = std::count_if(e.begin(), e.end(), [&](double v) { return v > toleranceDeg; });
+  count = index.size();
+  return squareOf;
+}
+
+// The p95 of the split: each square shaded by the probe that leaves fewer of its samples over
+// the tolerance (then the lower sum): a split an artist can draw, not a choice per reflection.
+double splitP95(std::span<const std::size_t> squareOf, std::size_t squareCount,
+                std::span<const double> first, std::span<const double> other, double toleranceDeg) {
+  struct Score {
+    std::ptrdiff_t over = 0;
     double sum = 0.0;
-    for (double v : e) sum += v;
-    return std::pair{over, sum};
+    bool operator<(const Score& b) const { return std::tie(over, sum) < std::tie(b.over, b.sum); }
   };
+  std::vector<Score> firstScore(squareCount), otherScore(squareCount);
+  for (std::size_t i = 0; i < squareOf.size(); ++i) {
+    Score& f = firstScore[squareOf[i]];
+    Score& o = otherScore[squareOf[i]];
+    f.over += first[i] > toleranceDeg, f.sum += first[i];
+    o.over += other[i] > toleranceDeg, o.sum += other[i];
+  }
   std::vector<double> errors;
-  for (const auto& [key, square] : squares) {
-    const std::vector<double>& taken =
-        score(square.other) < score(square.first) ? square.other : square.first;
-    errors.insert(errors.end(), taken.begin(), taken.end());
+  for (std::size_t i = 0; i < squareOf.size(); ++i) {
+    const bool toOther = otherScore[squareOf[i]] < firstScore[squareOf[i]];
+    errors.push_back(toOther ? other[i] : first[i]);
   }
   if (errors.empty()) return std::numeric_limits<double>::quiet_NaN();
-  std::sort(errors.begin(), errors.end());
-  return errors[std::min(errors.size() - 1, static_cast<std::size_t>(0.95 * errors.size()))];
+  return summarizeErrors(std::move(errors), 0).p95Deg;
 }
 
 }  // namespace
@@ -116,17 +122,36 @@ void checkSplitProbe(const LevelRayCaster& level, const Probe& probe, const Prox
   const std::vector<glm::dvec3> captures = capturesToTry(level, probe, floor);
   ProxyBuildOptions coarse = LayoutOptions::coarseCandidateProxyOptions();
   coarse.toleranceDeg = options.toleranceDeg;
+  // What does not depend on the second probe, once: each sample's square and its error with
+  // the probe's own proxy. A sample a capture point cannot see is a miss for that probe (its
+  // cubemap shows something else there).
+  std::size_t squareCount = 0;
+  const std::vector<std::size_t> squareOf = splitSquares(samples, squareCount);
+  const auto errorOf = [](double e) { return std::isnan(e) ? kMissErrorDeg : e; };
+  std::vector<double> ownErrors;
+  for (const ReflectionSample& s : samples)
+    ownErrors.push_back(s.occluded ? kMissErrorDeg
+                                   : errorOf(angularErrorDeg(own, probe.captureMeters, s)));
   std::vector<double> p95(captures.size(), std::numeric_limits<double>::quiet_NaN());
   // The second probe's proxy is fitted to a room, a few rooms, or all it sees (layout's fit
-  // regions, candidate_service.h); the one that splits best counts.
+  // regions, candidate_service.h), from one depth cube and hull; the one that splits best
+  // counts.
   tbb::parallel_for(std::size_t{0}, captures.size(), [&](std::size_t i) {
     const glm::dvec3 second = captures[i];
-    for (const double fit : fitRadiiFor(kRoomsFitMeters * 4.0, 0.0)) {
+    std::vector<char> hidden;
+    for (const ReflectionSample& s : samples) hidden.push_back(trueHitHiddenFrom(level, second, s));
+    const ProbeView view = seeLevel(level, second, coarse.depthFaceSize);
+    const ViewHull hull = fitViewHull(view);
+    for (const double fit : {kRoomFitMeters, kRoomsFitMeters, kAllItSeesFitMeters}) {
       const ProbeProxyBuild build =
-          buildProbeProxy(level, candidateFitProbe(second, fit), std::nullopt, coarse);
+          buildProbeProxy(level, candidateFitProbe(second, fit), view, hull, std::nullopt, coarse);
+      const ProxyShape& proxy = build.candidates[build.kept].shape;
+      std::vector<double> otherErrors;
+      for (std::size_t k = 0; k < samples.size(); ++k)
+        otherErrors.push_back(hidden[k] ? kMissErrorDeg
+                                        : errorOf(angularErrorDeg(proxy, second, samples[k])));
       const double split =
-          splitP95(level, probe, own, second, build.candidates[build.kept].shape, samples,
-                   options.toleranceDeg);
+          splitP95(squareOf, squareCount, ownErrors, otherErrors, options.toleranceDeg);
       if (!std::isnan(split) && !(split >= p95[i])) p95[i] = split;
     }
   });

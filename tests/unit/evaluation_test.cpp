@@ -87,7 +87,7 @@ TEST(ErrorFigures, P95WithMissesIsAMissOnceMissesPassFivePercent) {
   errors.insert(errors.end(), 6, std::nan(""));
   EXPECT_EQ(summarizeErrors(errors, 0).p95WithMissesDeg, 180.0);
   EXPECT_EQ(summarizeErrors(errors, 0).p95Deg, 1.0);  // the hits alone look perfect
-  errors.resize(96);  // 94 hits, 2 misses: rank 92 is a hit
+  errors.resize(96);                                  // 94 hits, 2 misses: rank 92 is a hit
   EXPECT_EQ(summarizeErrors(errors, 0).p95WithMissesDeg, 1.0);
 }
 
