@@ -3,6 +3,7 @@
 #include <glm/common.hpp>
 
 #include <array>
+#include <limits>
 
 namespace probeproxy {
 
@@ -38,6 +39,18 @@ void FloorColumns::forEachIn(const FloorRect& rect,
     for (int c = rect.column0; c <= rect.column1; ++c) forEachIn(rect, c, r, f);
 }
 
+std::size_t middleCell(const FloorColumns& columns, const FloorRect& rect) {
+  const double column = 0.5 * (rect.column0 + rect.column1), row = 0.5 * (rect.row0 + rect.row1);
+  std::size_t best = columns.floor().cells.size();
+  double nearest = std::numeric_limits<double>::infinity();
+  columns.forEachIn(rect, [&](std::size_t i) {
+    const FloorCell& c = columns.floor().cells[i];
+    const double d = (c.column - column) * (c.column - column) + (c.row - row) * (c.row - row);
+    if (d < nearest) nearest = d, best = i;
+  });
+  return best;
+}
+
 FloorRect widened(const FloorRect& rect, int cells) {
   FloorRect w = rect;
   w.column0 -= cells, w.column1 += cells, w.row0 -= cells, w.row1 += cells;
@@ -48,8 +61,15 @@ FloorRect growFloorRect(const FloorColumns& columns, std::size_t startCell,
                         const std::function<bool(std::size_t)>& acceptable,
                         const std::function<bool(std::size_t)>& claimed, double acceptedShare) {
   const FloorCell& start = columns.floor().cells[startCell];
-  FloorRect rect{start.column, start.column, start.row, start.row, start.pointMeters.z};
   if (claimed(startCell)) return FloorRect{};
+  return grownFloorRect(
+      columns, FloorRect{start.column, start.column, start.row, start.row, start.pointMeters.z},
+      acceptable, claimed, acceptedShare);
+}
+
+FloorRect grownFloorRect(const FloorColumns& columns, FloorRect rect,
+                         const std::function<bool(std::size_t)>& acceptable,
+                         const std::function<bool(std::size_t)>& claimed, double acceptedShare) {
   // The strip one past a side: the new rectangle minus the old one.
   const auto tryGrow = [&](int side) {
     FloorRect next = rect;
@@ -87,7 +107,7 @@ void floorRectBounds(const WalkableFloor& floor, const FloorRect& rect, glm::dve
                      glm::dvec3& lo, glm::dvec3& hi) {
   const double s = floor.spacingMeters;
   lo = {floor.originMeters.x + rect.column0 * s, floor.originMeters.y + rect.row0 * s,
-        rect.floorMeters - kInfluenceBelowFloorMeters};
+        rect.floorMeters - kInfluenceBelowFloorMeters - kInfluenceStepMeters};
   hi = {floor.originMeters.x + (rect.column1 + 1) * s, floor.originMeters.y + (rect.row1 + 1) * s,
         rect.floorMeters + kInfluenceHeadRoomMeters};
   lo = glm::min(lo, captureMeters - glm::dvec3(0.05));

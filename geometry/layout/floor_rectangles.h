@@ -19,6 +19,11 @@ namespace probeproxy {
 
 inline constexpr double kInfluenceBelowFloorMeters = 0.25;
 inline constexpr double kInfluenceHeadRoomMeters = 2.5;
+// The inner range reaches this much further down than the cells it holds: the survey's finer
+// floor has points on a stair's steps between the layout's cells, up to a step (0.45 m) under
+// the lowest cell (darkzone's stairs were left in no volume); the vertical band
+// (layout_influence.h) gives the rest.
+inline constexpr double kInfluenceStepMeters = 0.25;
 
 struct FloorRect {
   int column0 = 0, column1 = -1, row0 = 0, row1 = -1;  // inclusive cell ranges
@@ -51,11 +56,19 @@ FloorRect growFloorRect(const FloorColumns& columns, std::size_t startCell,
                         const std::function<bool(std::size_t)>& acceptable,
                         const std::function<bool(std::size_t)>& claimed, double acceptedShare);
 
+// The same growth from a rectangle already grown.
+FloorRect grownFloorRect(const FloorColumns& columns, FloorRect rect,
+                         const std::function<bool(std::size_t)>& acceptable,
+                         const std::function<bool(std::size_t)>& claimed, double acceptedShare);
+
+// The rectangle's cell nearest its middle (in plan). The rectangle must hold a cell.
+std::size_t middleCell(const FloorColumns& columns, const FloorRect& rect);
+
 // The rectangle widened by `cells` on every side (the gap a neighbour keeps from it).
 FloorRect widened(const FloorRect& rect, int cells);
 
-// Its inner range in world metres: the cells' plan area, from below the storey's floor to
-// head room over it, stretched to hold the capture point.
+// Its inner range in world metres: the cells' plan area, from a step under the storey's floor
+// to head room over it, stretched to hold the capture point.
 void floorRectBounds(const WalkableFloor& floor, const FloorRect& rect, glm::dvec3 captureMeters,
                      glm::dvec3& lo, glm::dvec3& hi);
 

@@ -2,6 +2,7 @@
 
 #include <glm/common.hpp>
 
+#include <algorithm>
 #include <limits>
 
 namespace probeproxy {
@@ -12,7 +13,9 @@ BoxInfluence boxAround(glm::dvec3 lo, glm::dvec3 hi, double bandMeters) {
   BoxInfluence box;
   box.centerMeters = 0.5 * (lo + hi);
   box.innerHalfExtentsMeters = 0.5 * (hi - lo);
-  box.halfExtentsMeters = box.innerHalfExtentsMeters + glm::dvec3(bandMeters);
+  box.halfExtentsMeters =
+      box.innerHalfExtentsMeters +
+      glm::dvec3(bandMeters, bandMeters, std::min(bandMeters, kVerticalBandMeters));
   return box;
 }
 
@@ -25,7 +28,8 @@ BoxInfluence influenceAroundFloor(const WalkableFloor& floor, std::span<const st
   const double half = 0.5 * floor.spacingMeters;
   for (std::size_t c : cells) {
     const glm::dvec3 p = floor.cells[c].pointMeters;
-    lo = glm::min(lo, p - glm::dvec3(half, half, kInfluenceBelowFloorMeters));
+    lo =
+        glm::min(lo, p - glm::dvec3(half, half, kInfluenceBelowFloorMeters + kInfluenceStepMeters));
     hi = glm::max(hi, p + glm::dvec3(half, half, kInfluenceHeadRoomMeters));
   }
   lo = glm::min(lo, captureMeters - glm::dvec3(0.05));
@@ -34,10 +38,10 @@ BoxInfluence influenceAroundFloor(const WalkableFloor& floor, std::span<const st
 }
 
 BoxInfluence influenceOfRect(const WalkableFloor& floor, const FloorRect& rect,
-                             glm::dvec3 captureMeters, double bandMeters) {
+                             glm::dvec3 captureMeters, double gapMeters) {
   glm::dvec3 lo, hi;
   floorRectBounds(floor, rect, captureMeters, lo, hi);
-  return boxAround(lo, hi, bandMeters);
+  return boxAround(lo, hi, kOuterBandOverGap * gapMeters);
 }
 
 }  // namespace probeproxy

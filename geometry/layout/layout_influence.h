@@ -2,7 +2,10 @@
 // A probe's influence volume around the floor it serves: an axis-aligned box whose inner range
 // holds that floor (its cells whole, from just under the lowest to head room over the highest)
 // and the capture point, and whose outer range reaches `bandMeters` further, into the
-// neighbours', so the blend fades across the band instead of jumping at its edge.
+// neighbours', so the blend fades across the band instead of jumping at its edge. Upwards
+// and downwards the band is short: storeys meet through a slab, not a band, and a full band
+// would reach through the slab into the room below or above (the U's ground floor had five
+// volumes over it, two of its own and three from upstairs).
 
 #include "core/scene/influence_volume.h"
 #include "geometry/floor/walkable_floor.h"
@@ -14,13 +17,29 @@
 
 namespace probeproxy {
 
+// The outer range reaches this many gaps past the inner one. Were it one gap, floor where
+// gaps meet askew (a T of three ranges, the courtyard's corner) lies at the outer edge of
+// every volume over it: all weights tend to 0 there and their normalised shares swing from
+// one probe to another within a centimetre (validate's weight_jump: 1.0). Half as much again
+// keeps all floor at most 5/6 of the way out (a floor cell lies within a gap of some range,
+// select_probes.h, its far edge 1.25 gaps away), so where a second band begins beside a lone
+// one the weights turn at most ~1.3 per metre (the U's bend: 3 per metre at 1.25 gaps); in a
+// straight gap of g metres the steepest change is 1 / (g (1 - g / (2 b))) = 1.5 per metre for
+// g = 1, b = 1.5 (2.0 at b = g). validate's limit is 2 per metre (0.02 per cm).
+inline constexpr double kOuterBandOverGap = 1.5;
+
+// Head room ends 2.5 m over a floor (kInfluenceHeadRoomMeters) and an inner range starts
+// 0.5 m under it (floor_rectangles.h): a 0.25 m band keeps a 3 m storey under a 0.5 m slab
+// clear of the next.
+inline constexpr double kVerticalBandMeters = 0.25;
+
 // `cells` index floor.cells; at least one.
 BoxInfluence influenceAroundFloor(const WalkableFloor& floor, std::span<const std::size_t> cells,
                                   glm::dvec3 captureMeters, double bandMeters);
 
 // The box whose inner range is the rectangle's (floorRectBounds) and whose outer range reaches
-// `bandMeters` past it on every side.
+// kOuterBandOverGap x `gapMeters` past it across the floor (kVerticalBandMeters up and down).
 BoxInfluence influenceOfRect(const WalkableFloor& floor, const FloorRect& rect,
-                             glm::dvec3 captureMeters, double bandMeters);
+                             glm::dvec3 captureMeters, double gapMeters);
 
 }  // namespace probeproxy

@@ -32,7 +32,9 @@ struct LayoutOptions {
   // point; 0: all the floor it sees (a hangar keeps one probe).
   double reachMeters = 0.0;
   double captureHeightMeters = 1.6;  // above the floor; at most half the free height above it
-  double blendBandMeters = 1.0;      // each influence box's outer range past its inner one
+  // Neighbours' inner ranges stand this far apart; each outer range reaches
+  // kOuterBandOverGap times as far past its inner one (layout_influence.h).
+  double blendBandMeters = 1.0;
   // How finely candidates are judged: a coarser floor and fewer samples than `survey` takes.
   WalkableFloorOptions floor{0.5};
   int samplesPerCell = 2;

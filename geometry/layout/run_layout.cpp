@@ -161,6 +161,13 @@ void layoutByCandidates(const LevelRayCaster& level, const WalkableFloor& floor,
          influenceOfRect(floor, selection.ranges[p], chosen.captureMeters, o.blendBandMeters),
          chosen.fitMeters});
   }
+  const FloorColumns columns(floor);
+  for (const FloorRect& fill : selection.fills) {
+    const FloorCell& middle = floor.cells[middleCell(columns, fill)];
+    const glm::dvec3 capture = captureAbove(level, middle.pointMeters, o.captureHeightMeters);
+    r.probes.push_back(
+        {capture, influenceOfRect(floor, fill, capture, o.blendBandMeters), kRoomFitMeters});
+  }
 }
 
 }  // namespace

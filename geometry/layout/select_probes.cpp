@@ -112,6 +112,12 @@ bool rangesOverlap(const FloorRect& a, const FloorRect& b) {
          sameStorey(a, b);
 }
 
+// Whether two inner ranges keep the blend band between them. Ranges that touch hand the floor
+// from one probe's 100% to the other's at once (Lagarde's inner range): the lighting pops.
+bool keepsGap(const FloorRect& a, const FloorRect& b, int gapCells) {
+  return !rangesOverlap(widened(a, gapCells), b);
+}
+
 // How many cells the rectangle must stretch, along both axes, for its band to reach a cell.
 int stretchNeeded(const FloorRect& rect, const FloorCell& cell, int gapCells) {
   const int dc =
@@ -136,18 +142,18 @@ FloorRect boundingUnion(const FloorRect& a, const FloorRect& b) {
 }
 
 // The refining pass: a probe whose whole range a neighbour can take over, serving (in the
-// accepted share) the floor its range would gain and overlapping no third range, is dropped,
-// the last taken (the smallest gain) first. Greedy order leaves such probes where the first
-// big range blocked a second one's growth (the L-room's corner, between its two arms).
+// accepted share) the floor its range would gain and keeping the band from every third range, is
+// dropped, the last taken (the smallest gain) first. Greedy order leaves such probes where the
+// first big range blocked a second one's growth (the L-room's corner, between its two arms).
 void dropAbsorbed(const FloorColumns& columns, const CellSets& sets, double acceptedShare,
-                  ProbeSelection& selection) {
+                  int gapCells, ProbeSelection& selection) {
   for (std::size_t p = selection.chosen.size(); p-- > 0;) {
     for (std::size_t q = 0; q < selection.chosen.size(); ++q) {
       if (q == p || !sameStorey(selection.ranges[p], selection.ranges[q])) continue;
       const FloorRect merged = boundingUnion(selection.ranges[q], selection.ranges[p]);
       bool clear = true;
       for (std::size_t j = 0; j < selection.ranges.size() && clear; ++j)
-        clear = j == p || j == q || !rangesOverlap(merged, selection.ranges[j]);
+        clear = j == p || j == q || keepsGap(merged, selection.ranges[j], gapCells);
       if (!clear) continue;
       double gained = 0.0, served = 0.0;
       const std::vector<char>& servedByQ = sets.served[selection.chosen[q]];
@@ -207,22 +213,25 @@ std::optional<ProbeSelection> oneProbeServesAsMuch(const FloorColumns& columns,
   if (best == sets.served.size() || bestServed < coverServed - slack * area ||
       bestServed < acceptedShare * area)
     return std::nullopt;
-  return ProbeSelection{{best}, {all}};
+  return ProbeSelection{{best}, {all}, {}};
+}
+
+// Whether some range's band (or a kept volume) holds the floor cell.
+bool banded(const WalkableFloor& floor, std::size_t cell, int gapCells,
+            std::span<const char> keptCovered, std::span<const FloorRect> ranges) {
+  if (!keptCovered.empty() && keptCovered[cell]) return true;
+  return std::any_of(ranges.begin(), ranges.end(), [&](const FloorRect& r) {
+    return widened(r, gapCells).holds(floor.cells[cell]);
+  });
 }
 
 // Floor that no range's band reaches (crumbs too small to be worth a probe, floor between
 // ranges wider than the band): the range on its storey that needs the least stretch takes it,
-// where the stretched range overlaps no other. Every floor cell is then in some influence.
+// where the stretched range keeps the band from every other.
 void coverLeftovers(const WalkableFloor& floor, int gapCells, std::span<const char> keptCovered,
                     std::vector<FloorRect>& ranges) {
-  const auto banded = [&](std::size_t cell) {
-    if (!keptCovered.empty() && keptCovered[cell]) return true;
-    return std::any_of(ranges.begin(), ranges.end(), [&](const FloorRect& r) {
-      return widened(r, gapCells).holds(floor.cells[cell]);
-    });
-  };
   for (std::size_t cell = 0; cell < floor.cells.size(); ++cell) {
-    if (banded(cell)) continue;
+    if (banded(floor, cell, gapCells, keptCovered, ranges)) continue;
     const FloorCell& at = floor.cells[cell];
     std::vector<std::pair<int, std::size_t>> order;  // stretch, range
     for (std::size_t i = 0; i < ranges.size(); ++i) {
@@ -235,12 +244,59 @@ void coverLeftovers(const WalkableFloor& floor, int gapCells, std::span<const ch
       const FloorRect stretched = stretchedToward(ranges[i], at, gapCells);
       bool clear = true;
       for (std::size_t j = 0; j < ranges.size() && clear; ++j)
-        clear = j == i || !rangesOverlap(stretched, ranges[j]);
+        clear = j == i || keepsGap(stretched, ranges[j], gapCells);
       if (!clear) continue;
       ranges[i] = stretched;
       break;
     }
   }
+}
+
+// Floor in one range's band and no other's, that its candidate sees, joins its inner range
+// when a strip can (keeping the gap): Lagarde's blend gives it to that probe whole either way,
+// but at the band's far side its weight tends to 0, and where a second band begins there the
+// shares swing within centimetres (a range that stops short of a wall, beside a neighbour's).
+void growIntoOwnBands(const FloorColumns& columns, const CellSets& sets, int gapCells,
+                      std::span<const char> keptCovered, ProbeSelection& selection) {
+  std::vector<FloorRect>& ranges = selection.ranges;
+  for (std::size_t i = 0; i < ranges.size(); ++i) {
+    const std::vector<char>& seen = sets.seen[selection.chosen[i]];
+    const auto othersBand = [&](std::size_t cell) {
+      if (!keptCovered.empty() && keptCovered[cell]) return true;
+      for (std::size_t j = 0; j < ranges.size(); ++j)
+        if (j != i && widened(ranges[j], gapCells).holds(columns.floor().cells[cell])) return true;
+      return false;
+    };
+    const FloorRect band = widened(ranges[i], gapCells);
+    ranges[i] = grownFloorRect(
+        columns, ranges[i],
+        [&](std::size_t cell) { return seen[cell] && band.holds(columns.floor().cells[cell]); },
+        othersBand, 1.0);
+  }
+}
+
+// What coverLeftovers could not give to a range: rectangles grown over it, each a band clear of
+// every range and fill before it. Every floor cell is then in some range's band.
+std::vector<FloorRect> fillsForTheRest(const FloorColumns& columns, int gapCells,
+                                       std::span<const char> keptCovered,
+                                       std::span<const FloorRect> ranges) {
+  const WalkableFloor& floor = columns.floor();
+  std::vector<char> left(floor.cells.size(), 0);
+  for (std::size_t cell = 0; cell < floor.cells.size(); ++cell)
+    left[cell] = !banded(floor, cell, gapCells, keptCovered, ranges);
+  std::vector<char> claimed(floor.cells.size(), 0);
+  for (const FloorRect& r : ranges)
+    columns.forEachIn(widened(r, gapCells), [&](std::size_t cell) { claimed[cell] = 1; });
+  std::vector<FloorRect> fills;
+  for (std::size_t cell = 0; cell < floor.cells.size(); ++cell) {
+    if (!left[cell] || claimed[cell]) continue;
+    const FloorRect fill = growFloorRect(
+        columns, cell, [&](std::size_t c) { return left[c] != 0; },
+        [&](std::size_t c) { return claimed[c] != 0; }, 1.0);
+    fills.push_back(fill);
+    columns.forEachIn(widened(fill, gapCells), [&](std::size_t c) { claimed[c] = 1; });
+  }
+  return fills;
 }
 
 }  // namespace
@@ -274,13 +330,16 @@ ProbeSelection selectProbes(std::span<const CandidateService> services,
       [&](std::size_t c, std::size_t cell) { return sets.seen[c][cell] != 0; },
       [&](std::size_t c, std::size_t cell) { return sets.seen[c][cell] ? area(cell) : 0.0; },
       minGain);
-  dropAbsorbed(columns, sets, o.acceptedShare, cover.selection);
+  dropAbsorbed(columns, sets, o.acceptedShare, o.gapCells, cover.selection);
   if (kept.served.empty()) {
     if (const auto one =
             oneProbeServesAsMuch(columns, sets, cover.selection, o.oneProbeSlack, o.acceptedShare))
       cover.selection = *one;
   }
   coverLeftovers(floor, o.gapCells, kept.covered, cover.selection.ranges);
+  growIntoOwnBands(columns, sets, o.gapCells, kept.covered, cover.selection);
+  cover.selection.fills =
+      fillsForTheRest(columns, o.gapCells, kept.covered, cover.selection.ranges);
   return cover.selection;
 }
 

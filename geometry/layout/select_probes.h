@@ -8,9 +8,9 @@
 // Floor no candidate serves goes to the candidates that see it, in the same rectangles. Then
 // the floor left outside every range and band goes, the same way, to the candidates that see
 // it; crumbs smaller than the gain a probe must bring stretch the nearest range until its band
-// holds them. With `maxProbes`, the cover stops at that many. A one-storey floor that one
-// candidate serves nearly as well as the whole cover gets that one probe. Deterministic
-// whatever the thread count.
+// holds them, and what no range can stretch to without breaking a gap is a fill. With `maxProbes`,
+// the cover stops at that many. A one-storey floor that one candidate serves nearly as well as the
+// whole cover gets that one probe. Deterministic whatever the thread count.
 
 #include "geometry/floor/walkable_floor.h"
 #include "geometry/layout/candidate_service.h"
@@ -41,6 +41,10 @@ struct SelectionOptions {
 struct ProbeSelection {
   std::vector<std::size_t> chosen;  // candidate indices, in the order they were taken
   std::vector<FloorRect> ranges;    // chosen[i]'s inner range
+  // Floor no range's band could reach without coming within the band of another: each gets a
+  // probe of its own, captured over it (no candidate was fitted there). Left to a band's far
+  // edge, every weight over it would tend to 0 and the blend would pop.
+  std::vector<FloorRect> fills;
 };
 
 // Probes the cover keeps as they are (an artist's, `layout --keep-authored`): per floor cell,

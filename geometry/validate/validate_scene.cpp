@@ -27,7 +27,6 @@ void ValidateOptions::check() const {
   requireInRange("max_leak_share", maxLeakShare, 0.0, 1.0);
   requireInRange("grid", gridSpacingMeters, 0.01, 10.0);
   requireInRange<std::size_t>("grid_point_budget", gridPointBudget, 1, 100'000'000);
-  requirePositive("headroom_m", headroomMeters);
   samples.check();
 }
 
@@ -35,7 +34,7 @@ std::vector<ValidationFinding> validateScene(const Scene& scene, const LevelRayC
                                              const ValidateOptions& options) {
   options.check();
   std::vector<ValidationFinding> findings;
-  const std::vector<FloorPoint> floor = walkableFloor(level, options);
+  const std::vector<FloorPoint> floor = floorPoints(scene, level, options);
   for (const Probe& probe : scene.probes) {
     // Later rules measure what earlier ones establish: a proxy that is not a closed convex
     // mesh, or that misses its capture point, has no meaningful error yet; a capture point
@@ -48,8 +47,12 @@ std::vector<ValidationFinding> validateScene(const Scene& scene, const LevelRayC
     if (hasError(findings, first)) continue;
     checkCaptureInsideLevel(level, probe, findings);
     if (authored) checkProxyError(level, probe, *authored, floor, options, findings);
+    const std::size_t beforeLeak = findings.size();
     checkInfluenceLeak(level, probe, floor, options, findings);
-    if (authored) checkReflectedCameras(level, probe, *authored, options, findings);
+    // Cameras over the floor behind the wall a volume leaks through are outside any proxy of
+    // this probe's room: that is the leak, reported once.
+    if (authored && findings.size() == beforeLeak)
+      checkReflectedCameras(level, probe, *authored, options, findings);
   }
   checkOverlaps(scene, options, findings);
   // Overlapping inner ranges make the weights jump where one range ends (both claim 100%):

@@ -27,9 +27,12 @@
 //                                        receiver lies outside the proxy / 0 (seed 000's
 //                                        glossy rule: enlarge the proxy)
 
+#include "core/blend/blend_weights.h"
 #include "core/scene/scene.h"
 #include "geometry/evaluation/reflection_samples.h"
 #include "geometry/raycast/level_ray_caster.h"
+
+#include <glm/vec3.hpp>
 
 #include <string>
 #include <vector>
@@ -49,8 +52,10 @@ struct ValidationFinding {
 struct ValidateOptions {
   // proxy_error_over_tolerance: the authored proxy's mirror_floor p95 may be at most this.
   double toleranceDeg = 0.25;
-  // too_many_overlaps: at most this many outer ranges may cover one point.
-  int maxOverlap = 3;
+  // too_many_overlaps: at most this many outer ranges may cover one point: the blend's own
+  // limit (seed 000: "We set the limit to 4 in our game. This can cause lighting pop when 5
+  // volumes overlap").
+  int maxOverlap = kDefaultMaxBlendProbes;
   // inner_ranges_overlap: overlapping inner ranges may share at most this volume.
   double maxInnerOverlapCubicMeters = 0.0;
   // floor_not_covered: uncovered walkable floor may add up to at most this area.
@@ -71,8 +76,9 @@ struct ValidateOptions {
   // the plane), so the reflected camera itself must be inside the proxy (seed 000); for
   // mirrors only the receiver under each camera must be.
   bool glossyReceivers = false;
-  // Head room a floor needs to be walkable (a ray up from it must travel this far).
-  double headroomMeters = 1.0;
+  // Where a player enters the level (its spawn points): the floor the floor, error and leak
+  // rules measure on is the floor reached from them (the probes' capture points when empty).
+  std::vector<glm::dvec3> seedPointsMeters;
   // Samples and cameras of proxy_error_over_tolerance and reflected_camera_outside_proxy.
   ReflectionSampleOptions samples;
 
@@ -84,8 +90,8 @@ struct ValidateOptions {
 };
 
 // Findings in a fixed order: per probe in scene order (mesh checks, capture, error, leak,
-// reflected camera), then the scene-wide rules (overlaps, inner ranges, weights, floor).
-// Deterministic. Throws InputError for an authored proxy mesh that cannot be read.
+// reflected camera unless the volume leaks), then the scene-wide rules (overlaps, inner ranges,
+// weights, floor). Deterministic. Throws InputError for an authored proxy mesh that cannot be read.
 std::vector<ValidationFinding> validateScene(const Scene& scene, const LevelRayCaster& level,
                                              const ValidateOptions& options = {});
 

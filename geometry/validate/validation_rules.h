@@ -13,14 +13,16 @@
 
 namespace probeproxy {
 
-// A point on walkable floor (upward-facing level surface with head room), one per grid cell.
+// A cell of the walkable floor: its point on the surface and its area.
 struct FloorPoint {
   glm::dvec3 pointMeters{0.0};  // on the surface
   double cellAreaSquareMeters = 0.0;
 };
 
-// The floor under a regular XY grid over the level's bounds, every storey (rays cast down).
-std::vector<FloorPoint> walkableFloor(const LevelRayCaster& level, const ValidateOptions& options);
+// The walkable floor (geometry/floor/walkable_floor.h) reached from options.seedPointsMeters, or
+// from the scene's capture points when there are none, on a grid of options.gridSpacingMeters.
+std::vector<FloorPoint> floorPoints(const Scene& scene, const LevelRayCaster& level,
+                                    const ValidateOptions& options);
 
 // Per probe.
 void checkAuthoredMesh(const Scene& scene, const Probe& probe, std::vector<ValidationFinding>& out);

@@ -94,7 +94,8 @@ Verb addLayoutVerb(CLI::App& app) {
                    "capture points this far above the floor (at most half the free height), m")
       ->capture_default_str();
   verb->add_option("--blend-band", l.blendBandMeters,
-                   "influence boxes' outer range past the inner one, m")
+                   "gap between neighbouring inner ranges, where they blend (outer ranges "
+                   "reach 1.5x as far), m")
       ->capture_default_str();
   verb->add_option("--threads", o->job.threads, "worker threads (0: all cores)")
       ->capture_default_str();

@@ -13,8 +13,11 @@ ValidateJobResult runValidateJob(const ValidateJobOptions& o) {
   const Scene scene = readSceneInput(o.input);
   const LevelMesh level = loadSceneLevel(scene, o.input);
   const LevelRayCaster rayCaster(level);
+  // The floor a player walks starts where the level starts them (as survey's and layout's).
+  ValidateOptions validate = o.validate;
+  if (validate.seedPointsMeters.empty()) validate.seedPointsMeters = level.spawnPointsMeters;
   ValidateJobResult result;
-  result.findings = validateScene(scene, rayCaster, o.validate);
+  result.findings = validateScene(scene, rayCaster, validate);
   result.fails = findingsFail(result.findings);
   return result;
 }

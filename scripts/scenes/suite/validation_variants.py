@@ -40,8 +40,9 @@ DENTED_PROXY = _proxy_obj("dented_proxy.obj: the room's box with its top pushed 
 OPEN_PROXY = _proxy_obj("open_proxy.obj: the room's box without its top (not closed)", [])
 
 # Walls in this room: the same room with a wall across it at x = 0.5, so its east part is
-# another space (faces both ways: a two-sided wall).
-PARTITION_OBJ = """# partitioned_room.obj: the 4 x 3 x 3 m room split by a wall at x = 0.5
+# another space, entered by a door 0.8 m wide and 2 m high at its north end (the walkable
+# floor is the floor a player reaches; faces both ways: a two-sided wall).
+PARTITION_OBJ = """# partitioned_room.obj: the 4 x 3 x 3 m room split by a wall at x = 0.5 with a door at y 0.7..1.5
 o room
 v -2.0 -1.5 0.0
 v 2.0 -1.5 0.0
@@ -52,9 +53,12 @@ v 2.0 -1.5 3.0
 v 2.0 1.5 3.0
 v -2.0 1.5 3.0
 v 0.5 -1.5 0.0
-v 0.5 1.5 0.0
-v 0.5 1.5 3.0
+v 0.5 0.7 0.0
+v 0.5 0.7 3.0
 v 0.5 -1.5 3.0
+v 0.5 0.7 2.0
+v 0.5 1.5 2.0
+v 0.5 1.5 3.0
 f 1 2 3 4
 f 5 8 7 6
 f 1 5 6 2
@@ -64,6 +68,8 @@ f 4 8 5 1
 o partition
 f 9 10 11 12
 f 9 12 11 10
+f 13 14 15 11
+f 13 11 15 14
 """
 
 # rule id (or ids) expected -> (mesh, probes, extra files); the README table below says why.
@@ -78,7 +84,7 @@ VARIANTS = {
     "validate_too_many_overlaps": ("valid_room.obj", [
         _probe(f"probe_{i}", (sx * 1.0, sy * 0.75, 1.6),
                BoxInfluence((sx * 1.0, sy * 0.75, 1.5), (2.0, 1.5, 1.5), (0.2, 0.2, 1.5)))
-        for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (1, 1), (-1, 1)])]),
+        for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (1, 1), (-1, 1), (0, 0)])]),
     "validate_inner_ranges_overlap": ("valid_room.obj", [
         _probe("west", (-1.0, 0.0, 1.6), _box((-2.0, -1.5, 0.0), (0.5, 1.5, 3.0), (1.0, 1.5, 1.5))),
         _probe("east", (1.0, 0.0, 1.6), _box((-0.5, -1.5, 0.0), (2.0, 1.5, 3.0), (1.0, 1.5, 1.5)))]),
@@ -107,10 +113,10 @@ change; `validate --json` on it reports exactly the rule in the last column (exi
 | `validate_capture_outside_influence` | influence only z 0..1 (the capture point is at z 1.6) | `capture_outside_influence` |
 | `validate_proxy_error` | proxy box 6 x 5 m instead of the room's 4 x 3 m | `proxy_error_over_tolerance` |
 | `validate_floor_not_covered` | influence only x -2..1: the floor at x 1..2 has none | `floor_not_covered` |
-| `validate_too_many_overlaps` | four probes, one per quarter, whose volumes all meet at the centre | `too_many_overlaps` |
+| `validate_too_many_overlaps` | five probes, one per quarter and one in the middle, whose volumes all meet at the centre (the blend takes four) | `too_many_overlaps` |
 | `validate_inner_ranges_overlap` | two probes whose inner ranges share x -0.25..0.25 | `inner_ranges_overlap` |
 | `validate_weight_jump` | two probes whose volumes only touch at x = 0, no fade band there | `weight_jump` |
-| `validate_influence_leak` | level `partitioned_room.obj` (a wall at x = 0.5); the probe west of it, its influence the whole room | `influence_leak` |
+| `validate_influence_leak` | level `partitioned_room.obj` (a wall at x = 0.5, a door at its north end); the probe west of it, its influence the whole room | `influence_leak` |
 | `validate_reflected_camera` | proxy box starts 0.3 m above the floor (the reflection plane) | `reflected_camera_outside_proxy` |
 """
 
