@@ -20,6 +20,10 @@ namespace probeproxy {
 
 namespace {
 
+// Corners this close, relative to the polytope's size, are one: 0.4 mm on a 40 m proxy, under
+// 0.002 degrees of any reflection seen from 10 m.
+constexpr double kCornerMergeRelative = 1e-5;
+
 constexpr double kMinNormalSpread = 1e-3;
 
 bool isFinite(glm::dvec3 v) {
@@ -257,8 +261,11 @@ ConvexProxy polytopeFromPlanes(std::vector<ProxyPlane> planes, glm::dvec3 interi
   // Where more than three planes meet, the dual facet is split into triangles that give the
   // same corner up to rounding: merge corners that neighbouring dual facets put within
   // `mergeMeters`, and place each at the best conditioned solve of three of the planes that
-  // meet there (whichever triangles the dual hull made of them).
-  const double mergeMeters = 1e-9 * sizeMeters;
+  // meet there (whichever triangles the dual hull made of them). Planes fitted to a real level
+  // also meet a few micrometres apart (two floors tilted 1e-7 apart): kept apart, they leave
+  // facets micrometres wide and corners that are one in the mesh's floats, which a mesh check
+  // (validate's proxy_degenerate_face, 1e-6 of the size) and engines' importers reject.
+  const double mergeMeters = kCornerMergeRelative * sizeMeters;
   fit::UnionFind corners(cornerCount);
   for (std::size_t t = 0; t < cornerCount; ++t) {
     for (std::uint32_t u : dual.neighbors[t]) {

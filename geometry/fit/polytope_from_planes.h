@@ -18,7 +18,7 @@ namespace probeproxy {
 // left out: the result's `planes` are the kept ones, in their input order, and
 // `droppedPlaneIndices`, if given, receives the indices of the others, ascending.
 // Triangles come plane by plane in that order, counter-clockwise seen from outside; corners
-// are sorted by (x, y, z). Corners closer than 1e-9 of the polytope's size are one corner,
+// are sorted by (x, y, z). Corners closer than 1e-5 of the polytope's size are one corner,
 // solved from the best conditioned three of the planes that meet there: the result depends on
 // the planes and the interior point only, bit for bit (not on the thread, nor on the heap).
 // Throws FitError when a normal is not unit length or a value is not finite, when the planes

@@ -14,6 +14,13 @@ bool FloorRect::holds(const FloorCell& cell) const {
          z <= floorMeters + kInfluenceHeadRoomMeters;
 }
 
+bool FloorRect::underInnerRange(const FloorCell& cell) const {
+  const double z = cell.pointMeters.z;
+  return cell.column >= column0 && cell.column <= column1 && cell.row >= row0 && cell.row <= row1 &&
+         z >= floorMeters - kInfluenceBelowFloorMeters - kInfluenceStepMeters &&
+         z <= floorMeters + kInfluenceHeadRoomMeters;
+}
+
 FloorColumns::FloorColumns(const WalkableFloor& floor)
     : floor_(&floor),
       first_(static_cast<std::size_t>(floor.columns) * floor.rows, 0),
@@ -110,8 +117,8 @@ void floorRectBounds(const WalkableFloor& floor, const FloorRect& rect, glm::dve
         rect.floorMeters - kInfluenceBelowFloorMeters - kInfluenceStepMeters};
   hi = {floor.originMeters.x + (rect.column1 + 1) * s, floor.originMeters.y + (rect.row1 + 1) * s,
         rect.floorMeters + kInfluenceHeadRoomMeters};
-  lo = glm::min(lo, captureMeters - glm::dvec3(0.05));
-  hi = glm::max(hi, captureMeters + glm::dvec3(0.05));
+  lo = glm::min(lo, captureMeters - glm::dvec3(kCaptureMarginMeters));
+  hi = glm::max(hi, captureMeters + glm::dvec3(kCaptureMarginMeters));
 }
 
 }  // namespace probeproxy

@@ -24,6 +24,8 @@ inline constexpr double kInfluenceHeadRoomMeters = 2.5;
 // the lowest cell (darkzone's stairs were left in no volume); the vertical band
 // (layout_influence.h) gives the rest.
 inline constexpr double kInfluenceStepMeters = 0.25;
+// An inner range holds its capture point at least this far inside.
+inline constexpr double kCaptureMarginMeters = 0.05;
 
 struct FloorRect {
   int column0 = 0, column1 = -1, row0 = 0, row1 = -1;  // inclusive cell ranges
@@ -31,6 +33,9 @@ struct FloorRect {
   bool empty() const { return column1 < column0 || row1 < row0; }
   // Whether a floor cell lies inside (its column and row in range, its height in the window).
   bool holds(const FloorCell& cell) const;
+  // Whether a floor cell lies under the inner range of the rectangle's influence box
+  // (floorRectBounds): as holds, and down to a step under the window.
+  bool underInnerRange(const FloorCell& cell) const;
 };
 
 // The cells of each grid column, for the strips' lookups.

@@ -1,6 +1,7 @@
 #include "geometry/layout/layout_influence.h"
 
 #include <glm/common.hpp>
+#include <glm/vector_relational.hpp>
 
 #include <algorithm>
 #include <limits>
@@ -41,7 +42,30 @@ BoxInfluence influenceOfRect(const WalkableFloor& floor, const FloorRect& rect,
                              glm::dvec3 captureMeters, double gapMeters) {
   glm::dvec3 lo, hi;
   floorRectBounds(floor, rect, captureMeters, lo, hi);
-  return boxAround(lo, hi, kOuterBandOverGap * gapMeters);
+  return influenceOfBounds(lo, hi, gapMeters);
+}
+
+BoxInfluence influenceOfBounds(glm::dvec3 innerLoMeters, glm::dvec3 innerHiMeters,
+                               double gapMeters) {
+  return boxAround(innerLoMeters, innerHiMeters, kOuterBandOverGap * gapMeters);
+}
+
+void keepClearOfInnerRanges(glm::dvec3& lo, glm::dvec3& hi, glm::dvec3& captureMeters,
+                            double floorMeters, std::span<const InfluenceVolume> others) {
+  for (const InfluenceVolume& other : others) {
+    const BoxInfluence* box = std::get_if<BoxInfluence>(&other);
+    if (box == nullptr) continue;
+    const glm::dvec3 otherLo = box->centerMeters - box->innerHalfExtentsMeters;
+    const glm::dvec3 otherHi = box->centerMeters + box->innerHalfExtentsMeters;
+    if (glm::any(glm::greaterThanEqual(lo, otherHi)) || glm::any(glm::lessThanEqual(hi, otherLo)))
+      continue;
+    if (otherLo.z > floorMeters)
+      hi.z = otherLo.z;
+    else if (otherHi.z <= floorMeters)
+      lo.z = otherHi.z;
+  }
+  if (captureMeters.z > hi.z - kCaptureMarginMeters)
+    captureMeters.z = floorMeters + 0.5 * (hi.z - floorMeters);
 }
 
 }  // namespace probeproxy

@@ -42,4 +42,16 @@ BoxInfluence influenceAroundFloor(const WalkableFloor& floor, std::span<const st
 BoxInfluence influenceOfRect(const WalkableFloor& floor, const FloorRect& rect,
                              glm::dvec3 captureMeters, double gapMeters);
 
+// A fill's inner range (lo, hi) that reaches into another volume's inner range stops where
+// that one begins, over or under the fill's floor: a pit or a grating in a range's plan, whose
+// box spans the air over it, would otherwise be claimed 100% by both. The capture point moves
+// into what is left (half way up it, at most). Where the other range spans the fill's floor
+// itself nothing is cut. Boxes only (a layout's volumes).
+void keepClearOfInnerRanges(glm::dvec3& lo, glm::dvec3& hi, glm::dvec3& captureMeters,
+                            double floorMeters, std::span<const InfluenceVolume> others);
+
+// The same around an inner range given in world metres.
+BoxInfluence influenceOfBounds(glm::dvec3 innerLoMeters, glm::dvec3 innerHiMeters,
+                               double gapMeters);
+
 }  // namespace probeproxy

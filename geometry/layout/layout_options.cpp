@@ -28,6 +28,7 @@ void LayoutOptions::check() const {
     throw InputError("option keep_authored",
                      "adds probes to the scene's own; it does not go with a baseline");
   floor.check();
+  coverFloor.check();
   candidateProxy.check();
   finalProxy.check();
 }

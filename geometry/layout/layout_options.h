@@ -37,6 +37,8 @@ struct LayoutOptions {
   double blendBandMeters = 1.0;
   // How finely candidates are judged: a coarser floor and fewer samples than `survey` takes.
   WalkableFloorOptions floor{0.5};
+  // The floor every point of which must lie in some volume: the survey's.
+  WalkableFloorOptions coverFloor;
   int samplesPerCell = 2;
   std::uint32_t seed = 1;
   // Each candidate's proxy: a small depth cube and few samples (a few thousand candidates per

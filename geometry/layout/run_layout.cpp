@@ -7,6 +7,7 @@
 #include "geometry/layout/layout_candidates.h"
 #include "geometry/layout/layout_influence.h"
 #include "geometry/layout/select_probes.h"
+#include "geometry/layout/uncovered_floor_fills.h"
 #include "geometry/survey/floor_samples.h"
 
 #include <tbb/parallel_for.h>
@@ -162,11 +163,16 @@ void layoutByCandidates(const LevelRayCaster& level, const WalkableFloor& floor,
          chosen.fitMeters});
   }
   const FloorColumns columns(floor);
+  std::vector<InfluenceVolume> volumes;
+  for (const SurveyProbe& k : kept) volumes.push_back(k.influence);
+  for (const LayoutProbe& p : r.probes) volumes.push_back(p.influence);
   for (const FloorRect& fill : selection.fills) {
     const FloorCell& middle = floor.cells[middleCell(columns, fill)];
-    const glm::dvec3 capture = captureAbove(level, middle.pointMeters, o.captureHeightMeters);
-    r.probes.push_back(
-        {capture, influenceOfRect(floor, fill, capture, o.blendBandMeters), kRoomFitMeters});
+    glm::dvec3 capture = captureAbove(level, middle.pointMeters, o.captureHeightMeters), lo, hi;
+    floorRectBounds(floor, fill, capture, lo, hi);
+    keepClearOfInnerRanges(lo, hi, capture, fill.floorMeters, volumes);
+    r.probes.push_back({capture, influenceOfBounds(lo, hi, o.blendBandMeters), kRoomFitMeters});
+    volumes.push_back(r.probes.back().influence);
   }
 }
 
@@ -198,6 +204,13 @@ LayoutResult runLayout(const LevelRayCaster& level, std::span<const glm::dvec3> 
                                                                   o.blendBandMeters)});
     } else {
       layoutByCandidates(level, floor, o, onCandidateDone, kept, r);
+      std::vector<InfluenceVolume> volumes;
+      for (const LayoutProbe& p : r.probes) volumes.push_back(p.influence);
+      for (const SurveyProbe& k : kept) volumes.push_back(k.influence);
+      const WalkableFloor walked = walkableFloor(level, seedsMeters, o.coverFloor);
+      for (const FloorFill& f :
+           fillsForUncoveredFloor(level, walked, volumes, o.blendBandMeters, o.captureHeightMeters))
+        r.probes.push_back({f.captureMeters, f.influence, kRoomFitMeters});
     }
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

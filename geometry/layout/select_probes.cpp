@@ -216,12 +216,13 @@ std::optional<ProbeSelection> oneProbeServesAsMuch(const FloorColumns& columns,
   return ProbeSelection{{best}, {all}, {}};
 }
 
-// Whether some range's band (or a kept volume) holds the floor cell.
+// Whether some range's band (or a kept volume) reaches the floor cell: its box's, so floor a
+// step under a range (a stair between the range's cells) is not left to a probe of its own.
 bool banded(const WalkableFloor& floor, std::size_t cell, int gapCells,
             std::span<const char> keptCovered, std::span<const FloorRect> ranges) {
   if (!keptCovered.empty() && keptCovered[cell]) return true;
   return std::any_of(ranges.begin(), ranges.end(), [&](const FloorRect& r) {
-    return widened(r, gapCells).holds(floor.cells[cell]);
+    return widened(r, gapCells).underInnerRange(floor.cells[cell]);
   });
 }
 
@@ -264,7 +265,8 @@ void growIntoOwnBands(const FloorColumns& columns, const CellSets& sets, int gap
     const auto othersBand = [&](std::size_t cell) {
       if (!keptCovered.empty() && keptCovered[cell]) return true;
       for (std::size_t j = 0; j < ranges.size(); ++j)
-        if (j != i && widened(ranges[j], gapCells).holds(columns.floor().cells[cell])) return true;
+        if (j != i && widened(ranges[j], gapCells).underInnerRange(columns.floor().cells[cell]))
+          return true;
       return false;
     };
     const FloorRect band = widened(ranges[i], gapCells);
@@ -284,12 +286,12 @@ std::vector<FloorRect> fillsForTheRest(const FloorColumns& columns, int gapCells
   std::vector<char> left(floor.cells.size(), 0);
   for (std::size_t cell = 0; cell < floor.cells.size(); ++cell)
     left[cell] = !banded(floor, cell, gapCells, keptCovered, ranges);
+  // A fill grows over what is left, and keeps the band from every fill before it.
   std::vector<char> claimed(floor.cells.size(), 0);
-  for (const FloorRect& r : ranges)
-    columns.forEachIn(widened(r, gapCells), [&](std::size_t cell) { claimed[cell] = 1; });
+  for (std::size_t cell = 0; cell < floor.cells.size(); ++cell) claimed[cell] = !left[cell];
   std::vector<FloorRect> fills;
   for (std::size_t cell = 0; cell < floor.cells.size(); ++cell) {
-    if (!left[cell] || claimed[cell]) continue;
+    if (claimed[cell]) continue;
     const FloorRect fill = growFloorRect(
         columns, cell, [&](std::size_t c) { return left[c] != 0; },
         [&](std::size_t c) { return claimed[c] != 0; }, 1.0);

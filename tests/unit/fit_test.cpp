@@ -514,6 +514,28 @@ TEST(PolytopeFromPlanes, FourPlanesThroughOneCornerGiveOneCorner) {
   expectConsistent(proxy, 1e-12);
 }
 
+TEST(PolytopeFromPlanes, FloorsMicrometresApartLeaveNoSliver) {
+  // A second floor plane, tilted 1e-7 from the first, takes over 2 micrometres short of the +x
+  // wall (two floors fitted to a real map meet like this: stormkeep). Kept apart, its facet
+  // was 2 micrometres wide, a triangle validate's proxy_degenerate_face rejects (under 1e-6 of
+  // the mesh's size); one corner each, the mesh is the box again.
+  std::vector<ProxyPlane> planes = boxPlanes(kRoomLow, kRoomHigh);
+  const glm::dvec3 tilted = glm::normalize(glm::dvec3(1e-7, 0.0, -1.0));
+  planes.push_back({tilted, glm::dot(tilted, glm::dvec3(kRoomHigh.x - 2e-6, 0.0, kRoomLow.z))});
+  const ConvexProxy proxy = polytopeFromPlanes(planes, kInside);
+  EXPECT_EQ(proxy.verticesMeters.size(), 8u);
+  EXPECT_EQ(proxy.triangles.size(), 12u);
+  const double size = glm::distance(kRoomLow, kRoomHigh);
+  for (const glm::uvec3& t : proxy.triangles) {
+    const glm::dvec3 a = proxy.verticesMeters[t[0]], b = proxy.verticesMeters[t[1]],
+                     c = proxy.verticesMeters[t[2]];
+    const double longest =
+        std::max({glm::distance(a, b), glm::distance(b, c), glm::distance(c, a)});
+    EXPECT_GT(glm::length(glm::cross(b - a, c - a)) / longest, 1e-6 * size);
+  }
+  expectConsistent(proxy, 1e-9);
+}
+
 TEST(PolytopeFromPlanes, CornersWhereManyPlanesMeetHaveTheSameBitsOnEveryThread) {
   // Six cones of 32 planes each, with their apexes at +-x, +-y, +-z and the interior point at
   // the origin: the dual point n / dot(n, apex) of every plane through the apex at +z has

@@ -239,8 +239,11 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
                       keptBuilds[i].candidates[keptBuilds[i].kept].shape});
   }
 
+  // Every point of the floor the survey walks must lie in a volume.
+  LayoutOptions layout = o.layout;
+  layout.coverFloor = o.survey.floor;
   LayoutJobResult r;
-  r.layout = runLayout(rayCaster, seeds, o.layout, progress, kept);
+  r.layout = runLayout(rayCaster, seeds, layout, progress, kept);
   r.scene = layoutScene(input, r.layout, o.outFolder.empty() ? fs::path(".") : o.outFolder,
                         o.layout.keepAuthored);
   std::vector<std::pair<fs::path, LevelMesh>> proxyMeshes;  // written with the scene

@@ -1,0 +1,83 @@
+#include "geometry/layout/uncovered_floor_fills.h"
+
+#include "core/blend/influence_factor.h"
+#include "geometry/layout/floor_rectangles.h"
+#include "geometry/layout/layout_candidates.h"
+#include "geometry/layout/layout_influence.h"
+#include "geometry/survey/blended_error.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <limits>
+
+namespace probeproxy {
+
+namespace {
+
+// Plan distance from a point to a rectangle (0 inside).
+double planDistance(glm::dvec3 p, glm::dvec3 lo, glm::dvec3 hi) {
+  const double dx = std::max({0.0, lo.x - p.x, p.x - hi.x});
+  const double dy = std::max({0.0, lo.y - p.y, p.y - hi.y});
+  return std::hypot(dx, dy);
+}
+
+}  // namespace
+
+std::vector<FloorFill> fillsForUncoveredFloor(const LevelRayCaster& level,
+                                              const WalkableFloor& floor,
+                                              std::span<const InfluenceVolume> volumes,
+                                              double gapMeters, double captureHeightMeters) {
+  std::vector<std::size_t> uncovered;
+  for (std::size_t i = 0; i < floor.cells.size(); ++i) {
+    const glm::dvec3 at = floor.cells[i].pointMeters + glm::dvec3(0.0, 0.0, kBlendLiftMeters);
+    if (std::none_of(volumes.begin(), volumes.end(),
+                     [&](const InfluenceVolume& v) { return insideInfluence(v, at); }))
+      uncovered.push_back(i);
+  }
+  const double half = 0.5 * floor.spacingMeters;
+  std::vector<InfluenceVolume> others(volumes.begin(), volumes.end());
+  std::vector<char> grouped(uncovered.size(), 0);
+  std::vector<FloorFill> fills;
+  for (std::size_t first = 0; first < uncovered.size(); ++first) {
+    if (grouped[first]) continue;
+    grouped[first] = 1;
+    const glm::dvec3 start = floor.cells[uncovered[first]].pointMeters;
+    const double storeyFloor = start.z;
+    glm::dvec3 lo = start, hi = start;
+    std::vector<std::size_t> members{uncovered[first]};
+    for (bool grew = true; grew;) {
+      grew = false;
+      for (std::size_t k = first + 1; k < uncovered.size(); ++k) {
+        const glm::dvec3 p = floor.cells[uncovered[k]].pointMeters;
+        if (grouped[k] || p.z < storeyFloor - kInfluenceBelowFloorMeters ||
+            p.z > storeyFloor + kInfluenceHeadRoomMeters ||
+            planDistance(p, lo, hi) > gapMeters + floor.spacingMeters)
+          continue;
+        grouped[k] = 1, grew = true;
+        members.push_back(uncovered[k]);
+        lo = glm::min(lo, p), hi = glm::max(hi, p);
+      }
+    }
+    // The capture point over the member nearest the group's middle.
+    const glm::dvec3 middle = 0.5 * (lo + hi);
+    const auto nearest = std::min_element(members.begin(), members.end(), [&](auto a, auto b) {
+      return planDistance(floor.cells[a].pointMeters, middle, middle) <
+             planDistance(floor.cells[b].pointMeters, middle, middle);
+    });
+    glm::dvec3 capture =
+        captureAbove(level, floor.cells[*nearest].pointMeters, captureHeightMeters);
+    glm::dvec3 innerLo(lo.x - half, lo.y - half,
+                       lo.z - kInfluenceBelowFloorMeters - kInfluenceStepMeters);
+    glm::dvec3 innerHi(hi.x + half, hi.y + half, hi.z + kInfluenceHeadRoomMeters);
+    innerLo = glm::min(innerLo, capture - glm::dvec3(kCaptureMarginMeters));
+    innerHi = glm::max(innerHi, capture + glm::dvec3(kCaptureMarginMeters));
+    keepClearOfInnerRanges(innerLo, innerHi, capture, storeyFloor, others);
+    fills.push_back({capture, influenceOfBounds(innerLo, innerHi, gapMeters)});
+    others.push_back(fills.back().influence);
+  }
+  return fills;
+}
+
+}  // namespace probeproxy

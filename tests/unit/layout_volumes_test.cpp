@@ -1,0 +1,74 @@
+// The layout's influence volumes: fills over floor no range reaches, kept clear of the ranges'
+// inner ranges (docs/layout.md).
+
+#include "core/blend/influence_factor.h"
+#include "geometry/builtin/box_room.h"
+#include "geometry/floor/walkable_floor.h"
+#include "geometry/layout/layout_influence.h"
+#include "geometry/layout/uncovered_floor_fills.h"
+#include "geometry/survey/blended_error.h"
+
+#include <gtest/gtest.h>
+#include <glm/common.hpp>
+
+#include <vector>
+
+namespace probeproxy {
+namespace {
+
+glm::dvec3 innerLo(const InfluenceVolume& v) {
+  const BoxInfluence& b = std::get<BoxInfluence>(v);
+  return b.centerMeters - b.innerHalfExtentsMeters;
+}
+glm::dvec3 innerHi(const InfluenceVolume& v) {
+  const BoxInfluence& b = std::get<BoxInfluence>(v);
+  return b.centerMeters + b.innerHalfExtentsMeters;
+}
+
+bool innerRangesOverlap(const InfluenceVolume& a, const InfluenceVolume& b) {
+  return glm::all(glm::lessThan(innerLo(a), innerHi(b))) &&
+         glm::all(glm::lessThan(innerLo(b), innerHi(a)));
+}
+
+TEST(KeepClearOfInnerRanges, APitFillStopsUnderTheRangeOverIt) {
+  // A range over a 10 x 10 m floor at z 0 whose box spans a pit 2 m deep at [2, 4]^2.
+  const std::vector<InfluenceVolume> range{influenceOfBounds({0, 0, -0.5}, {10, 10, 2.5}, 1.0)};
+  glm::dvec3 lo{2, 2, -2.5}, hi{4, 4, 0.5}, capture{3, 3, -0.4};
+  keepClearOfInnerRanges(lo, hi, capture, -2.0, range);
+  EXPECT_DOUBLE_EQ(hi.z, -0.5);
+  EXPECT_DOUBLE_EQ(lo.z, -2.5);
+  EXPECT_DOUBLE_EQ(capture.z, -1.25) << "half way up what is left";
+  EXPECT_FALSE(innerRangesOverlap(range[0], influenceOfBounds(lo, hi, 1.0)));
+}
+
+TEST(KeepClearOfInnerRanges, AFillOnARangesOwnFloorIsNotCut) {
+  // The other range spans the fill's floor: cutting it would leave the floor outside both.
+  const std::vector<InfluenceVolume> range{influenceOfBounds({0, 0, -0.5}, {10, 10, 2.5}, 1.0)};
+  glm::dvec3 lo{2, 2, -0.3}, hi{4, 4, 2.7}, capture{3, 3, 1.8};
+  keepClearOfInnerRanges(lo, hi, capture, 0.2, range);
+  EXPECT_DOUBLE_EQ(lo.z, -0.3);
+  EXPECT_DOUBLE_EQ(hi.z, 2.7);
+  EXPECT_DOUBLE_EQ(capture.z, 1.8);
+}
+
+TEST(FillsForUncoveredFloor, FloorBeyondEveryBandGetsOneProbeAndIsThenCovered) {
+  // A 10 x 10 m room; one range over x 0..5 whose band reaches to x 6.5 (1.5 gaps of 1 m).
+  const LevelRayCaster level(boxRoom({0, 0, 0}, {10, 10, 3.5f}));
+  const glm::dvec3 seed{2.0, 2.0, 1.6};
+  const WalkableFloor floor = walkableFloor(level, std::span(&seed, 1));
+  std::vector<InfluenceVolume> volumes{influenceOfBounds({0, 0, -0.5}, {5, 10, 2.5}, 1.0)};
+  const std::vector<FloorFill> fills = fillsForUncoveredFloor(level, floor, volumes, 1.0, 1.6);
+  ASSERT_EQ(fills.size(), 1u) << "the floor x 6.5..10 is one piece";
+  EXPECT_TRUE(insideInfluence(fills[0].influence, fills[0].captureMeters));
+  EXPECT_FALSE(innerRangesOverlap(volumes[0], fills[0].influence));
+  EXPECT_GE(innerLo(fills[0].influence).x, 5.0 + 1.0) << "a gap from the range";
+  volumes.push_back(fills[0].influence);
+  for (const FloorCell& c : floor.cells) {
+    const glm::dvec3 at = c.pointMeters + glm::dvec3(0, 0, kBlendLiftMeters);
+    EXPECT_TRUE(insideInfluence(volumes[0], at) || insideInfluence(volumes[1], at))
+        << c.pointMeters.x << ", " << c.pointMeters.y;
+  }
+}
+
+}  // namespace
+}  // namespace probeproxy
