@@ -1,6 +1,7 @@
 #include "geometry/fit/polytope_from_planes.h"
 
 #include "geometry/fit/exact_hull.h"
+#include "geometry/fit/fan_apex.h"
 #include "geometry/fit/fit_error.h"
 #include "geometry/fit/union_find.h"
 
@@ -360,9 +361,13 @@ ConvexProxy polytopeFromPlanes(std::vector<ProxyPlane> planes, glm::dvec3 interi
     }
     ++nextPlane;
     proxy.planes.push_back(planes[f.plane]);
-    for (std::size_t j = 1; j + 1 < f.corners.size(); ++j) {  // a fan: the facet is convex
-      proxy.triangles.emplace_back(outputIndex[f.corners[0]], outputIndex[f.corners[j]],
-                                   outputIndex[f.corners[j + 1]]);
+    std::vector<glm::dvec3> corners;
+    for (std::uint32_t root : f.corners) corners.push_back(position(root));
+    const std::size_t n = f.corners.size(), apex = fanApex(corners);
+    for (std::size_t j = 1; j + 1 < n; ++j) {  // a fan: the facet is convex
+      proxy.triangles.emplace_back(outputIndex[f.corners[apex]],
+                                   outputIndex[f.corners[(apex + j) % n]],
+                                   outputIndex[f.corners[(apex + j + 1) % n]]);
     }
   }
   for (; nextPlane < planes.size(); ++nextPlane) {

@@ -10,6 +10,10 @@ namespace probeproxy {
 
 namespace {
 
+// Ranges cut to meet stay this far apart, so that the scene file's rounding of centres and
+// extents cannot make them overlap (skyway: by 1e-9 m).
+constexpr double kInnerClearanceMeters = 1e-3;
+
 BoxInfluence boxAround(glm::dvec3 lo, glm::dvec3 hi, double bandMeters) {
   BoxInfluence box;
   box.centerMeters = 0.5 * (lo + hi);
@@ -38,13 +42,6 @@ BoxInfluence influenceAroundFloor(const WalkableFloor& floor, std::span<const st
   return boxAround(lo, hi, bandMeters);
 }
 
-BoxInfluence influenceOfRect(const WalkableFloor& floor, const FloorRect& rect,
-                             glm::dvec3 captureMeters, double gapMeters) {
-  glm::dvec3 lo, hi;
-  floorRectBounds(floor, rect, captureMeters, lo, hi);
-  return influenceOfBounds(lo, hi, gapMeters);
-}
-
 BoxInfluence influenceOfBounds(glm::dvec3 innerLoMeters, glm::dvec3 innerHiMeters,
                                double gapMeters) {
   return boxAround(innerLoMeters, innerHiMeters, kOuterBandOverGap * gapMeters);
@@ -54,15 +51,15 @@ void keepClearOfInnerRanges(glm::dvec3& lo, glm::dvec3& hi, glm::dvec3& captureM
                             double floorMeters, std::span<const InfluenceVolume> others) {
   for (const InfluenceVolume& other : others) {
     const BoxInfluence* box = std::get_if<BoxInfluence>(&other);
-    if (box == nullptr) continue;
+    if (box == nullptr || box->worldFromBox != glm::dquat(1, 0, 0, 0)) continue;
     const glm::dvec3 otherLo = box->centerMeters - box->innerHalfExtentsMeters;
     const glm::dvec3 otherHi = box->centerMeters + box->innerHalfExtentsMeters;
     if (glm::any(glm::greaterThanEqual(lo, otherHi)) || glm::any(glm::lessThanEqual(hi, otherLo)))
       continue;
     if (otherLo.z > floorMeters)
-      hi.z = otherLo.z;
+      hi.z = otherLo.z - kInnerClearanceMeters;
     else if (otherHi.z <= floorMeters)
-      lo.z = otherHi.z;
+      lo.z = otherHi.z + kInnerClearanceMeters;
   }
   if (captureMeters.z > hi.z - kCaptureMarginMeters)
     captureMeters.z = floorMeters + 0.5 * (hi.z - floorMeters);

@@ -37,20 +37,16 @@ inline constexpr double kVerticalBandMeters = 0.25;
 BoxInfluence influenceAroundFloor(const WalkableFloor& floor, std::span<const std::size_t> cells,
                                   glm::dvec3 captureMeters, double bandMeters);
 
-// The box whose inner range is the rectangle's (floorRectBounds) and whose outer range reaches
-// kOuterBandOverGap x `gapMeters` past it across the floor (kVerticalBandMeters up and down).
-BoxInfluence influenceOfRect(const WalkableFloor& floor, const FloorRect& rect,
-                             glm::dvec3 captureMeters, double gapMeters);
-
-// A fill's inner range (lo, hi) that reaches into another volume's inner range stops where
-// that one begins, over or under the fill's floor: a pit or a grating in a range's plan, whose
-// box spans the air over it, would otherwise be claimed 100% by both. The capture point moves
-// into what is left (half way up it, at most). Where the other range spans the fill's floor
-// itself nothing is cut. Boxes only (a layout's volumes).
+// An inner range (lo, hi) over a floor at `floorMeters` that reaches into another volume's
+// inner range stops where that one begins, over or under its floor: a pit or a lower floor in
+// a range's plan, whose box spans the air over it, would otherwise be claimed 100% by both.
+// The capture point moves into what is left (half way up it, at most). Where the other range
+// spans the floor itself nothing is cut. Axis-aligned boxes only (a layout's own volumes).
 void keepClearOfInnerRanges(glm::dvec3& lo, glm::dvec3& hi, glm::dvec3& captureMeters,
                             double floorMeters, std::span<const InfluenceVolume> others);
 
-// The same around an inner range given in world metres.
+// The box whose inner range is (lo, hi) (floorRectBounds) and whose outer range reaches
+// kOuterBandOverGap x `gapMeters` past it across the floor (kVerticalBandMeters up and down).
 BoxInfluence influenceOfBounds(glm::dvec3 innerLoMeters, glm::dvec3 innerHiMeters,
                                double gapMeters);
 

@@ -155,24 +155,26 @@ void layoutByCandidates(const LevelRayCaster& level, const WalkableFloor& floor,
   for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
   r.servableShare = servedShare(services, all, samples, keptCells.served);
   r.servedShare = servedShare(services, selection.chosen, samples, keptCells.served);
-  for (std::size_t p = 0; p < selection.chosen.size(); ++p) {
-    const CandidateService& chosen = services[selection.chosen[p]];
-    r.probes.push_back(
-        {chosen.captureMeters,
-         influenceOfRect(floor, selection.ranges[p], chosen.captureMeters, o.blendBandMeters),
-         chosen.fitMeters});
-  }
-  const FloorColumns columns(floor);
+  // Each probe's box, ranges in the order the cover took them, then the fills, each kept clear
+  // of the inner ranges before it (keepClearOfInnerRanges): windows of neighbouring heights
+  // (a ledge over a lower floor) put one range's box in the air over the other's floor.
   std::vector<InfluenceVolume> volumes;
   for (const SurveyProbe& k : kept) volumes.push_back(k.influence);
-  for (const LayoutProbe& p : r.probes) volumes.push_back(p.influence);
+  const auto add = [&](const FloorRect& rect, glm::dvec3 capture, double fitMeters) {
+    glm::dvec3 lo, hi;
+    floorRectBounds(floor, rect, capture, lo, hi);
+    keepClearOfInnerRanges(lo, hi, capture, rect.floorMeters, volumes);
+    r.probes.push_back({capture, influenceOfBounds(lo, hi, o.blendBandMeters), fitMeters});
+    volumes.push_back(r.probes.back().influence);
+  };
+  for (std::size_t p = 0; p < selection.chosen.size(); ++p) {
+    const CandidateService& chosen = services[selection.chosen[p]];
+    add(selection.ranges[p], chosen.captureMeters, chosen.fitMeters);
+  }
+  const FloorColumns columns(floor);
   for (const FloorRect& fill : selection.fills) {
     const FloorCell& middle = floor.cells[middleCell(columns, fill)];
-    glm::dvec3 capture = captureAbove(level, middle.pointMeters, o.captureHeightMeters), lo, hi;
-    floorRectBounds(floor, fill, capture, lo, hi);
-    keepClearOfInnerRanges(lo, hi, capture, fill.floorMeters, volumes);
-    r.probes.push_back({capture, influenceOfBounds(lo, hi, o.blendBandMeters), kRoomFitMeters});
-    volumes.push_back(r.probes.back().influence);
+    add(fill, captureAbove(level, middle.pointMeters, o.captureHeightMeters), kRoomFitMeters);
   }
 }
 

@@ -5,6 +5,7 @@
 #include "core/proxy/proxy_shape.h"
 #include "geometry/fit/bounding_sphere_fit.h"
 #include "geometry/fit/convex_hull_proxy.h"
+#include "geometry/fit/fan_apex.h"
 #include "geometry/fit/fit_error.h"
 #include "geometry/fit/oriented_box_fit.h"
 #include "geometry/fit/polytope_from_planes.h"
@@ -534,6 +535,25 @@ TEST(PolytopeFromPlanes, FloorsMicrometresApartLeaveNoSliver) {
     EXPECT_GT(glm::length(glm::cross(b - a, c - a)) / longest, 1e-6 * size);
   }
   expectConsistent(proxy, 1e-9);
+}
+
+TEST(FanApex, CornersInLineAreNotFannedFromTheirEnds) {
+  // A side wall's facet where a second floor, tilted 1e-7, takes over at x = 0: three corners
+  // in line along its foot, metres apart. Fanned from either end of that line (corner 0 or 2)
+  // a triangle is 1.5e-7 m high, under validate's 1e-6 of the size (bloodprison's layout).
+  const std::vector<glm::dvec3> facet = {
+      {-3, 0, 0}, {0, 0, 0}, {7, 0, 7e-7}, {7, 0, 3}, {-3, 0, 3}};
+  const std::size_t apex = fanApex(facet);
+  EXPECT_NE(apex, 0u);
+  EXPECT_NE(apex, 2u);
+  const double size = glm::distance(facet[0], facet[3]);
+  for (std::size_t j = 1; j + 1 < facet.size(); ++j) {
+    const glm::dvec3 a = facet[apex], b = facet[(apex + j) % 5], c = facet[(apex + j + 1) % 5];
+    const double longest =
+        std::max({glm::distance(a, b), glm::distance(b, c), glm::distance(c, a)});
+    EXPECT_GT(glm::length(glm::cross(b - a, c - a)) / longest, 1e-6 * size);
+  }
+  EXPECT_EQ(fanApex(std::vector<glm::dvec3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), 0u);
 }
 
 TEST(PolytopeFromPlanes, CornersWhereManyPlanesMeetHaveTheSameBitsOnEveryThread) {
