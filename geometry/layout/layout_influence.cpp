@@ -37,8 +37,8 @@ BoxInfluence influenceAroundFloor(const WalkableFloor& floor, std::span<const st
         glm::min(lo, p - glm::dvec3(half, half, kInfluenceBelowFloorMeters + kInfluenceStepMeters));
     hi = glm::max(hi, p + glm::dvec3(half, half, kInfluenceHeadRoomMeters));
   }
-  lo = glm::min(lo, captureMeters - glm::dvec3(0.05));
-  hi = glm::max(hi, captureMeters + glm::dvec3(0.05));
+  lo = glm::min(lo, captureMeters - glm::dvec3(kCaptureMarginMeters));
+  hi = glm::max(hi, captureMeters + glm::dvec3(kCaptureMarginMeters));
   return boxAround(lo, hi, bandMeters);
 }
 

@@ -10,7 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <limits>
+#include <cmath>
 
 namespace probeproxy {
 
