@@ -11,7 +11,11 @@
 
 namespace probeproxy {
 
-// The corner whose fan's lowest triangle (twice its area over its longest side) is highest;
+// The triangle's smallest height: twice its area over its longest side (what validate's
+// proxy_degenerate_face compares with 1e-6 of the mesh's size).
+double smallestHeight(glm::dvec3 a, glm::dvec3 b, glm::dvec3 c);
+
+// The corner whose fan's lowest triangle (smallestHeight) is highest;
 // the first such corner on ties, so the fan depends on the polygon only. 0 for a triangle.
 std::size_t fanApex(std::span<const glm::dvec3> corners);
 

@@ -355,15 +355,16 @@ ConvexProxy polytopeFromPlanes(std::vector<ProxyPlane> planes, glm::dvec3 interi
   }
 
   std::size_t nextPlane = 0;
+  std::vector<glm::dvec3> facetCorners;  // one facet's, for its fan
   for (const Facet& f : facets) {
     for (; nextPlane < f.plane; ++nextPlane) {
       if (droppedPlaneIndices != nullptr) droppedPlaneIndices->push_back(nextPlane);
     }
     ++nextPlane;
     proxy.planes.push_back(planes[f.plane]);
-    std::vector<glm::dvec3> corners;
-    for (std::uint32_t root : f.corners) corners.push_back(position(root));
-    const std::size_t n = f.corners.size(), apex = fanApex(corners);
+    facetCorners.clear();
+    for (std::uint32_t root : f.corners) facetCorners.push_back(position(root));
+    const std::size_t n = f.corners.size(), apex = fanApex(facetCorners);
     for (std::size_t j = 1; j + 1 < n; ++j) {  // a fan: the facet is convex
       proxy.triangles.emplace_back(outputIndex[f.corners[apex]],
                                    outputIndex[f.corners[(apex + j) % n]],

@@ -7,18 +7,24 @@
 
 namespace probeproxy {
 
-bool FloorRect::holds(const FloorCell& cell) const {
+namespace {
+
+// In the rectangle's columns and rows, from `belowMeters` under its floor to head room over it.
+bool inWindow(const FloorRect& r, const FloorCell& cell, double belowMeters) {
   const double z = cell.pointMeters.z;
-  return cell.column >= column0 && cell.column <= column1 && cell.row >= row0 && cell.row <= row1 &&
-         z >= floorMeters - kInfluenceBelowFloorMeters &&
-         z <= floorMeters + kInfluenceHeadRoomMeters;
+  return cell.column >= r.column0 && cell.column <= r.column1 && cell.row >= r.row0 &&
+         cell.row <= r.row1 && z >= r.floorMeters - belowMeters &&
+         z <= r.floorMeters + kInfluenceHeadRoomMeters;
+}
+
+}  // namespace
+
+bool FloorRect::holds(const FloorCell& cell) const {
+  return inWindow(*this, cell, kInfluenceBelowFloorMeters);
 }
 
 bool FloorRect::underInnerRange(const FloorCell& cell) const {
-  const double z = cell.pointMeters.z;
-  return cell.column >= column0 && cell.column <= column1 && cell.row >= row0 && cell.row <= row1 &&
-         z >= floorMeters - kInfluenceBelowFloorMeters - kInfluenceStepMeters &&
-         z <= floorMeters + kInfluenceHeadRoomMeters;
+  return inWindow(*this, cell, kInfluenceBelowFloorMeters + kInfluenceStepMeters);
 }
 
 FloorColumns::FloorColumns(const WalkableFloor& floor)

@@ -114,8 +114,8 @@ KeptFloor keptFloor(const LevelRayCaster& level, const WalkableFloor& floor,
   return k;
 }
 
-void layoutByCandidates(const LevelRayCaster& level, const WalkableFloor& floor,
-                        const LayoutOptions& o,
+void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3> seedsMeters,
+                        const WalkableFloor& floor, const LayoutOptions& o,
                         const std::function<void(std::size_t, std::size_t)>& onDone,
                         std::span<const SurveyProbe> kept, LayoutResult& r) {
   FloorSampleOptions so;
@@ -176,6 +176,11 @@ void layoutByCandidates(const LevelRayCaster& level, const WalkableFloor& floor,
     const FloorCell& middle = floor.cells[middleCell(columns, fill)];
     add(fill, captureAbove(level, middle.pointMeters, o.captureHeightMeters), kRoomFitMeters);
   }
+  // The survey walks a finer floor than the candidates: what of it no volume reaches.
+  const WalkableFloor walked = walkableFloor(level, seedsMeters, o.coverFloor);
+  for (const FloorFill& f :
+       fillsForUncoveredFloor(level, walked, volumes, o.blendBandMeters, o.captureHeightMeters))
+    r.probes.push_back({f.captureMeters, f.influence, kRoomFitMeters});
 }
 
 }  // namespace
@@ -205,14 +210,7 @@ LayoutResult runLayout(const LevelRayCaster& level, std::span<const glm::dvec3> 
         r.probes.push_back({g.captureMeters, influenceAroundFloor(floor, g.cells, g.captureMeters,
                                                                   o.blendBandMeters)});
     } else {
-      layoutByCandidates(level, floor, o, onCandidateDone, kept, r);
-      std::vector<InfluenceVolume> volumes;
-      for (const LayoutProbe& p : r.probes) volumes.push_back(p.influence);
-      for (const SurveyProbe& k : kept) volumes.push_back(k.influence);
-      const WalkableFloor walked = walkableFloor(level, seedsMeters, o.coverFloor);
-      for (const FloorFill& f :
-           fillsForUncoveredFloor(level, walked, volumes, o.blendBandMeters, o.captureHeightMeters))
-        r.probes.push_back({f.captureMeters, f.influence, kRoomFitMeters});
+      layoutByCandidates(level, seedsMeters, floor, o, onCandidateDone, kept, r);
     }
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

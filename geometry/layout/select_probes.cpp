@@ -283,17 +283,15 @@ std::vector<FloorRect> fillsForTheRest(const FloorColumns& columns, int gapCells
                                        std::span<const char> keptCovered,
                                        std::span<const FloorRect> ranges) {
   const WalkableFloor& floor = columns.floor();
-  std::vector<char> left(floor.cells.size(), 0);
-  for (std::size_t cell = 0; cell < floor.cells.size(); ++cell)
-    left[cell] = !banded(floor, cell, gapCells, keptCovered, ranges);
-  // A fill grows over what is left, and keeps the band from every fill before it.
+  // A fill grows over floor no band reaches, and keeps the band from every fill before it.
   std::vector<char> claimed(floor.cells.size(), 0);
-  for (std::size_t cell = 0; cell < floor.cells.size(); ++cell) claimed[cell] = !left[cell];
+  for (std::size_t cell = 0; cell < floor.cells.size(); ++cell)
+    claimed[cell] = banded(floor, cell, gapCells, keptCovered, ranges);
   std::vector<FloorRect> fills;
   for (std::size_t cell = 0; cell < floor.cells.size(); ++cell) {
     if (claimed[cell]) continue;
     const FloorRect fill = growFloorRect(
-        columns, cell, [&](std::size_t c) { return left[c] != 0; },
+        columns, cell, [](std::size_t) { return true; },
         [&](std::size_t c) { return claimed[c] != 0; }, 1.0);
     fills.push_back(fill);
     columns.forEachIn(widened(fill, gapCells), [&](std::size_t c) { claimed[c] = 1; });

@@ -16,18 +16,18 @@ constexpr double kInsideLiftMeters = 0.05;  // floor points sit on the volumes' 
 
 }  // namespace
 
-void checkFloorCoverage(const Scene& scene, const std::vector<FloorPoint>& floor,
+void checkFloorCoverage(const Scene& scene, const std::vector<FloorCell>& floor,
                         const ValidateOptions& options, std::vector<ValidationFinding>& out) {
   if (scene.probes.empty()) return;
   double uncovered = 0.0;
   std::optional<glm::dvec3> example;
-  for (const FloorPoint& f : floor) {
+  for (const FloorCell& f : floor) {
     const glm::dvec3 p = f.pointMeters + glm::dvec3(0, 0, kInsideLiftMeters);
     bool covered = false;
     for (const Probe& probe : scene.probes)
       covered = covered || insideInfluence(probe.influence, p);
     if (covered) continue;
-    uncovered += f.cellAreaSquareMeters;
+    uncovered += f.areaSquareMeters;
     if (!example) example = f.pointMeters;
   }
   if (uncovered <= options.maxUncoveredFloorSquareMeters) return;

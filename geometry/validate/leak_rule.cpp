@@ -46,12 +46,12 @@ bool seenFromAny(const LevelRayCaster& level, const std::vector<glm::dvec3>& fro
 }  // namespace
 
 void checkInfluenceLeak(const LevelRayCaster& level, const Probe& probe,
-                        const std::vector<FloorPoint>& floor, const ValidateOptions& options,
+                        const std::vector<FloorCell>& floor, const ValidateOptions& options,
                         std::vector<ValidationFinding>& out) {
   const std::vector<glm::dvec3> from = viewpoints(level, probe.captureMeters);
   double total = 0.0, hidden = 0.0;
   glm::dvec3 firstHidden(0.0);
-  for (const FloorPoint& f : floor) {
+  for (const FloorCell& f : floor) {
     const double factor =
         influenceFactor(probe.influence, f.pointMeters + glm::dvec3(0, 0, kInsideLiftMeters));
     if (factor <= 0.0) continue;

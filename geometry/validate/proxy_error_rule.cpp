@@ -10,7 +10,7 @@
 namespace probeproxy {
 
 void checkProxyError(const LevelRayCaster& level, const Probe& probe, const ProxyShape& authored,
-                     const std::vector<FloorPoint>& floor, const ValidateOptions& options,
+                     const std::vector<FloorCell>& floor, const ValidateOptions& options,
                      std::vector<ValidationFinding>& out) {
   if (std::holds_alternative<InfiniteShape>(authored)) return;  // chose no correction
   const std::vector<ReflectionSample> samples =

@@ -40,10 +40,10 @@ constexpr double kAllItSeesFitMeters = 4.0 * kRoomsFitMeters;
 // Floor points of the probe's volume, one per kTrySpacingMeters square and storey, at most
 // kMaxTries (every k-th when there are more), in floor order.
 std::vector<glm::dvec3> capturesToTry(const LevelRayCaster& level, const Probe& probe,
-                                      const std::vector<FloorPoint>& floor) {
+                                      const std::vector<FloorCell>& floor) {
   // The floor point nearest each square's centre (away from the walls the square touches).
   std::map<std::tuple<long, long, long>, std::pair<double, glm::dvec3>> squares;
-  for (const FloorPoint& f : floor) {
+  for (const FloorCell& f : floor) {
     const glm::dvec3 p = f.pointMeters;
     if (!insideInfluence(probe.influence, p + glm::dvec3(0.0, 0.0, kBlendLiftMeters))) continue;
     const double column = std::floor(p.x / kTrySpacingMeters),
@@ -117,7 +117,7 @@ double splitP95(std::span<const std::size_t> squareOf, std::size_t squareCount,
 
 void checkSplitProbe(const LevelRayCaster& level, const Probe& probe, const ProxyShape& own,
                      double ownP95Deg, std::span<const ReflectionSample> samples,
-                     const std::vector<FloorPoint>& floor, const ValidateOptions& options,
+                     const std::vector<FloorCell>& floor, const ValidateOptions& options,
                      std::vector<ValidationFinding>& out) {
   const std::vector<glm::dvec3> captures = capturesToTry(level, probe, floor);
   ProxyBuildOptions coarse = LayoutOptions::coarseCandidateProxyOptions();

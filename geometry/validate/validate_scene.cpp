@@ -34,7 +34,7 @@ std::vector<ValidationFinding> validateScene(const Scene& scene, const LevelRayC
                                              const ValidateOptions& options) {
   options.check();
   std::vector<ValidationFinding> findings;
-  const std::vector<FloorPoint> floor = floorPoints(scene, level, options);
+  const std::vector<FloorCell> floor = walkedFloor(scene, level, options).cells;
   for (const Probe& probe : scene.probes) {
     // Later rules measure what earlier ones establish: a proxy that is not a closed convex
     // mesh, or that misses its capture point, has no meaningful error yet; a capture point

@@ -3,6 +3,7 @@
 // rule alone. Each appends its findings to `out`.
 
 #include "core/proxy/proxy_shape.h"
+#include "geometry/floor/walkable_floor.h"
 #include "geometry/validate/validate_scene.h"
 
 #include <glm/vec3.hpp>
@@ -13,16 +14,11 @@
 
 namespace probeproxy {
 
-// A cell of the walkable floor: its point on the surface and its area.
-struct FloorPoint {
-  glm::dvec3 pointMeters{0.0};  // on the surface
-  double cellAreaSquareMeters = 0.0;
-};
-
 // The walkable floor (geometry/floor/walkable_floor.h) reached from options.seedPointsMeters, or
 // from the scene's capture points when there are none, on a grid of options.gridSpacingMeters.
-std::vector<FloorPoint> floorPoints(const Scene& scene, const LevelRayCaster& level,
-                                    const ValidateOptions& options);
+// Empty when there is no seed.
+WalkableFloor walkedFloor(const Scene& scene, const LevelRayCaster& level,
+                          const ValidateOptions& options);
 
 // Per probe.
 void checkAuthoredMesh(const Scene& scene, const Probe& probe, std::vector<ValidationFinding>& out);
@@ -33,17 +29,17 @@ void checkCaptureInsideLevel(const LevelRayCaster& level, const Probe& probe,
                              std::vector<ValidationFinding>& out);
 // With split_probe where neither the authored nor the generated proxy is within the tolerance.
 void checkProxyError(const LevelRayCaster& level, const Probe& probe, const ProxyShape& authored,
-                     const std::vector<FloorPoint>& floor, const ValidateOptions& options,
+                     const std::vector<FloorCell>& floor, const ValidateOptions& options,
                      std::vector<ValidationFinding>& out);
 // split_probe: whether a second capture point over the probe's floor, the volume split halfway
 // between the two, brings `samples` (its mirror_floor samples) within the tolerance; `own` is
 // the probe's best proxy, of p95 ownP95Deg. Names the best such point.
 void checkSplitProbe(const LevelRayCaster& level, const Probe& probe, const ProxyShape& own,
                      double ownP95Deg, std::span<const ReflectionSample> samples,
-                     const std::vector<FloorPoint>& floor, const ValidateOptions& options,
+                     const std::vector<FloorCell>& floor, const ValidateOptions& options,
                      std::vector<ValidationFinding>& out);
 void checkInfluenceLeak(const LevelRayCaster& level, const Probe& probe,
-                        const std::vector<FloorPoint>& floor, const ValidateOptions& options,
+                        const std::vector<FloorCell>& floor, const ValidateOptions& options,
                         std::vector<ValidationFinding>& out);
 void checkReflectedCameras(const LevelRayCaster& level, const Probe& probe,
                            const ProxyShape& authored, const ValidateOptions& options,
@@ -56,7 +52,7 @@ void checkInnerRanges(const Scene& scene, const ValidateOptions& options,
                       std::vector<ValidationFinding>& out);
 void checkWeightJumps(const Scene& scene, const LevelRayCaster& level,
                       const ValidateOptions& options, std::vector<ValidationFinding>& out);
-void checkFloorCoverage(const Scene& scene, const std::vector<FloorPoint>& floor,
+void checkFloorCoverage(const Scene& scene, const std::vector<FloorCell>& floor,
                         const ValidateOptions& options, std::vector<ValidationFinding>& out);
 
 // How far a point lies outside a shape, metres (negative inside; -inf for shapes without a

@@ -528,11 +528,9 @@ TEST(PolytopeFromPlanes, FloorsMicrometresApartLeaveNoSliver) {
   EXPECT_EQ(proxy.triangles.size(), 12u);
   const double size = glm::distance(kRoomLow, kRoomHigh);
   for (const glm::uvec3& t : proxy.triangles) {
-    const glm::dvec3 a = proxy.verticesMeters[t[0]], b = proxy.verticesMeters[t[1]],
-                     c = proxy.verticesMeters[t[2]];
-    const double longest =
-        std::max({glm::distance(a, b), glm::distance(b, c), glm::distance(c, a)});
-    EXPECT_GT(glm::length(glm::cross(b - a, c - a)) / longest, 1e-6 * size);
+    EXPECT_GT(smallestHeight(proxy.verticesMeters[t[0]], proxy.verticesMeters[t[1]],
+                             proxy.verticesMeters[t[2]]),
+              1e-6 * size);
   }
   expectConsistent(proxy, 1e-9);
 }
@@ -548,10 +546,8 @@ TEST(FanApex, CornersInLineAreNotFannedFromTheirEnds) {
   EXPECT_NE(apex, 2u);
   const double size = glm::distance(facet[0], facet[3]);
   for (std::size_t j = 1; j + 1 < facet.size(); ++j) {
-    const glm::dvec3 a = facet[apex], b = facet[(apex + j) % 5], c = facet[(apex + j + 1) % 5];
-    const double longest =
-        std::max({glm::distance(a, b), glm::distance(b, c), glm::distance(c, a)});
-    EXPECT_GT(glm::length(glm::cross(b - a, c - a)) / longest, 1e-6 * size);
+    EXPECT_GT(smallestHeight(facet[apex], facet[(apex + j) % 5], facet[(apex + j + 1) % 5]),
+              1e-6 * size);
   }
   EXPECT_EQ(fanApex(std::vector<glm::dvec3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), 0u);
 }

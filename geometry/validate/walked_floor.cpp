@@ -4,13 +4,12 @@
 // under the sky would count roofs and the tops of walls no one stands on (on eggandbacon
 // 236 m^2 of it, in no volume of a layout that covers all the floor a player reaches).
 
-#include "geometry/floor/walkable_floor.h"
 #include "geometry/validate/validation_rules.h"
 
 namespace probeproxy {
 
-std::vector<FloorPoint> floorPoints(const Scene& scene, const LevelRayCaster& level,
-                                    const ValidateOptions& options) {
+WalkableFloor walkedFloor(const Scene& scene, const LevelRayCaster& level,
+                          const ValidateOptions& options) {
   std::vector<glm::dvec3> seeds = options.seedPointsMeters;
   if (seeds.empty())
     for (const Probe& probe : scene.probes) seeds.push_back(probe.captureMeters);
@@ -18,12 +17,7 @@ std::vector<FloorPoint> floorPoints(const Scene& scene, const LevelRayCaster& le
   WalkableFloorOptions floorOptions;
   floorOptions.gridSpacingMeters = options.gridSpacingMeters;
   floorOptions.maxCells = options.gridPointBudget;
-  const WalkableFloor floor = walkableFloor(level, seeds, floorOptions);
-  std::vector<FloorPoint> points;
-  points.reserve(floor.cells.size());
-  for (const FloorCell& cell : floor.cells)
-    points.push_back({cell.pointMeters, cell.areaSquareMeters});
-  return points;
+  return walkableFloor(level, seeds, floorOptions);
 }
 
 }  // namespace probeproxy
