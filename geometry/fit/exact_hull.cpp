@@ -8,6 +8,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Triangulation_3.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/convex_hull_3.h>
 
@@ -32,6 +33,7 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Point2 = Kernel::Point_2;
 using Mesh = CGAL::Surface_mesh<Point>;
+using Triangulation = CGAL::Triangulation_3<Kernel>;
 
 Point toCgal(glm::dvec3 p) { return Point(p.x, p.y, p.z); }
 
@@ -181,7 +183,9 @@ int orientationSign(glm::dvec3 a, glm::dvec3 b, glm::dvec3 c, glm::dvec3 d) {
   return static_cast<int>(CGAL::orientation(toCgal(a), toCgal(b), toCgal(c), toCgal(d)));
 }
 
-TriangleHull convexHull3(std::span<const glm::dvec3> points, bool withSourceIndex) {
+namespace {
+
+std::vector<Point> hullInput(std::span<const glm::dvec3> points) {
   requireFinite(points, "convex hull");
   std::vector<Point> cgalPoints;
   cgalPoints.reserve(points.size());
@@ -191,16 +195,47 @@ TriangleHull convexHull3(std::span<const glm::dvec3> points, bool withSourceInde
   // and unique, the input also has one canonical order, whatever order the caller had.
   std::sort(cgalPoints.begin(), cgalPoints.end());
   cgalPoints.erase(std::unique(cgalPoints.begin(), cgalPoints.end()), cgalPoints.end());
+  return cgalPoints;
+}
 
+[[noreturn]] void throwNoVolume(std::size_t pointCount) {
+  std::ostringstream message;
+  message << "convex hull: the " << pointCount << " points span no volume";
+  throw FitError(message.str());
+}
+
+}  // namespace
+
+std::vector<std::array<glm::dvec3, 3>> hullTriangles(std::span<const glm::dvec3> points) {
+  const std::vector<Point> cgalPoints = hullInput(points);
+  const Triangulation triangulation(cgalPoints.begin(), cgalPoints.end());
+  if (triangulation.dimension() < 3) throwNoVolume(points.size());
+  const auto at = [](Triangulation::Vertex_handle v) {
+    return glm::dvec3(v->point().x(), v->point().y(), v->point().z());
+  };
+  // Each infinite cell holds one hull facet, the one opposite its infinite vertex; the finite
+  // cell across it has its fourth corner strictly inside, which decides the winding.
+  std::vector<std::array<glm::dvec3, 3>> triangles;
+  for (auto cell = triangulation.all_cells_begin(); cell != triangulation.all_cells_end(); ++cell) {
+    if (!triangulation.is_infinite(cell)) continue;
+    const int far = cell->index(triangulation.infinite_vertex());
+    std::array<glm::dvec3, 3> t;
+    for (int k = 0; k < 3; ++k) t[k] = at(cell->vertex((far + 1 + k) % 4));
+    const glm::dvec3 inside = at(triangulation.mirror_vertex(cell, far));
+    if (orientationSign(t[0], t[1], t[2], inside) > 0) std::swap(t[1], t[2]);
+    triangles.push_back(t);
+  }
+  return triangles;
+}
+
+TriangleHull convexHull3(std::span<const glm::dvec3> points, bool withSourceIndex) {
+  const std::vector<Point> cgalPoints = hullInput(points);
   Mesh mesh;
   CGAL::convex_hull_3(cgalPoints.begin(), cgalPoints.end(), mesh);
   // Points that span no volume give a polygon, a segment or a point: callers check the span
   // first, so this is the last guard, not the way to find out.
-  if (mesh.number_of_faces() < 4 || !CGAL::is_closed(mesh) || !CGAL::is_triangle_mesh(mesh)) {
-    std::ostringstream message;
-    message << "convex hull: the " << points.size() << " points span no volume";
-    throw FitError(message.str());
-  }
+  if (mesh.number_of_faces() < 4 || !CGAL::is_closed(mesh) || !CGAL::is_triangle_mesh(mesh))
+    throwNoVolume(points.size());
 
   // convex_hull_3 builds a fresh mesh, so indices run 0..n-1 with no removed elements.
   const std::size_t meshVertexCount = mesh.number_of_vertices();

@@ -51,4 +51,14 @@ struct TriangleHull {
 // their lowest corner and are sorted by corners.
 TriangleHull convexHull3(std::span<const glm::dvec3> points, bool withSourceIndex = false);
 
+// The hull's triangles, counter-clockwise seen from outside, from CGAL's Triangulation_3 (exact
+// predicates): for questions that every triangulation of the hull answers alike (is a point
+// strictly inside it?). Robust where convex_hull_3 is not: on plane normals (every wall's normal
+// on one great circle, one floor tilted by 1e-10) CGAL 5.5's quickhull fails its own assertion
+// (convex_hull_3.h:684, the visible set's border is no cycle) and, built without assertions,
+// crashes or returns garbage. A fraction of convexHull3's cost: no canonical form, no
+// neighbours. The order follows the input's sorted order, so it is the same every run. Same
+// preconditions as convexHull3.
+std::vector<std::array<glm::dvec3, 3>> hullTriangles(std::span<const glm::dvec3> points);
+
 }  // namespace probeproxy::fit

@@ -34,8 +34,18 @@ bool isFinite(glm::dvec3 v) {
 std::string formatVec(glm::dvec3 v) {
   std::ostringstream s;
   s.precision(9);
-  s << "(" << v.x << ", " << v.y << ", " << v.z << ")";
+  s << "(" << v.x + 0.0 << ", " << v.y + 0.0 << ", " << v.z + 0.0 << ")";  // no "-0"
   return s.str();
+}
+
+// A hull facet (a, b, c) of the normals that does not have the origin strictly behind it:
+// every normal lies behind it, so its outward normal u has dot(u, n_i) <= dot(u, facet) <= 0. A
+// facet with the origin less than kMinNormalSpread behind it leaves u nearly open: the planes
+// stop a walk along u only after more than 1/kMinNormalSpread times their offsets (a corridor
+// closed by a floor tilted by 1e-11, seen on a real map), which no proxy is meant to be.
+bool leavesOpen(glm::dvec3 a, glm::dvec3 b, glm::dvec3 c) {
+  if (fit::orientationSign(a, b, c, glm::dvec3(0.0)) >= 0) return true;
+  return glm::dot(glm::normalize(glm::cross(b - a, c - a)), a) < kMinNormalSpread;
 }
 
 // A direction in which nothing stops the intersection (dot(n_i, v) <= 0 for every normal), or
@@ -65,19 +75,8 @@ std::optional<glm::dvec3> openDirection(std::span<const glm::dvec3> normals) {
     default:
       break;
   }
-  // A hull facet that does not have the origin strictly behind it: every normal lies behind
-  // it, so its outward normal u has dot(u, n_i) <= dot(u, facet) <= 0. A facet with the origin
-  // less than kMinNormalSpread behind it leaves u nearly open: the planes stop a walk along u
-  // only after more than 1/kMinNormalSpread times their offsets (a corridor closed by a
-  // floor tilted by 1e-11, seen on a real map), which no proxy is meant to be.
-  const fit::TriangleHull hull = fit::convexHull3(normals);
-  for (const auto& t : hull.triangles) {
-    const glm::dvec3 a = hull.vertices[t[0]], b = hull.vertices[t[1]], c = hull.vertices[t[2]];
-    if (fit::orientationSign(a, b, c, glm::dvec3(0.0)) >= 0)
-      return glm::normalize(glm::cross(b - a, c - a));
-    const glm::dvec3 outward = glm::normalize(glm::cross(b - a, c - a));
-    if (glm::dot(outward, a) < kMinNormalSpread) return outward;
-  }
+  for (const auto& [a, b, c] : fit::hullTriangles(normals))
+    if (leavesOpen(a, b, c)) return glm::normalize(glm::cross(b - a, c - a));
   return std::nullopt;
 }
 

@@ -27,15 +27,23 @@ std::vector<ProxyPlane> startingPlanes(const ConvexProxy& hull, const ProbeView&
   // angle; the wall's own plane (every texel on it averaged) is exact. So a wall plane
   // replaces the hull facets it matches, and the proxy's walls coincide with the level's.
   const double offsetTolerance = 10 * view.toleranceMeters;
-  for (const ProxyPlane& p : view.wallPlanes) {
-    const auto matches = [&](const ProxyPlane& q) {
+  const auto replaceMatches = [&](std::vector<ProxyPlane>& set, const ProxyPlane& p) {
+    std::erase_if(set, [&](const ProxyPlane& q) {
       return glm::dot(p.normal, q.normal) > 0.9998 &&
              std::abs(p.offsetMeters - q.offsetMeters) < offsetTolerance;
-    };
-    const std::vector<ProxyPlane> before = planes;
-    std::erase_if(planes, matches);
-    planes.push_back(p);
-    if (!isBounded(planes)) planes = before;
+    });
+    set.push_back(p);
+  };
+  // A wall plane is within a degree of the facets it replaces, so the set stays bounded after
+  // every replacement, all but always: test the end result once, and one replacement at a time
+  // only when it is not.
+  std::vector<ProxyPlane> all = planes;
+  for (const ProxyPlane& p : view.wallPlanes) replaceMatches(all, p);
+  if (isBounded(all)) return all;
+  for (const ProxyPlane& p : view.wallPlanes) {
+    std::vector<ProxyPlane> replaced = planes;
+    replaceMatches(replaced, p);
+    if (isBounded(replaced)) planes = std::move(replaced);
   }
   return planes;
 }
@@ -49,11 +57,12 @@ std::vector<ProxyCandidate> simplifyHull(const ConvexProxy& hull, const ProbeVie
   // twice the farthest point seen.
   const std::vector<ProxyPlane> start = startingPlanes(hull, view);
   PlaneReach reach(start, capture);
-  const PlaneRemovalRule nearTheRoom{[&](const std::vector<ProxyPlane>& p, std::size_t j) {
-                                       return isBounded(p) && reach.farthestWithoutMeters(j) <=
-                                                                  2.0 * view.farthestMeters;
-                                     },
-                                     [&](std::size_t j) { reach.remove(j); }};
+  // The reach first: it is the cheaper test.
+  const PlaneRemovalRule nearTheRoom{
+      [&](const std::vector<ProxyPlane>& p, std::size_t j) {
+        return reach.farthestWithoutMeters(j) <= 2.0 * view.farthestMeters && isBounded(p);
+      },
+      [&](std::size_t j) { reach.remove(j); }};
   const std::vector<PlaneRemovalStep> steps =
       greedyPlaneRemoval(start, capture, fitSamples, 4, nearTheRoom);
   simplifyMs = time.ms();

@@ -652,6 +652,50 @@ TEST(PolytopeFromPlanes, PlanesThatCloseADirectionOnlyByRoundingAreOpen) {
   for (const glm::dvec3& v : proxy.verticesMeters) EXPECT_GE(v.x, 30.0 - 1e-9);
 }
 
+// Normals met while simplifying a hull on warfare: most of them on the great circle x = 0, many
+// repeated or a rounding apart, one tilted by 1e-10. CGAL 5.5's quickhull fails its own
+// assertion on them (convex_hull_3.h:684: the visible set's border is no cycle) and, built without
+// assertions, crashed the layout.
+TEST(PolytopeFromPlanes, NormalsThatBreakQuickhullStillDecideBoundedness) {
+  const std::vector<glm::dvec3> normals = {
+      {0, -1, 0},
+      {0, 0, 1},
+      {0, -1, 0},
+      {0, 1, 0},
+      {0, -1, 0},
+      {0, 0, 1},
+      {0, 0.19611613103081263, -0.98058067651239444},
+      {0, 0.97014250014533199, 0.242535625036333},
+      {0, 0, 0.99999999999999989},
+      {0, 1, 0},
+      {0, 0.89442719099991586, -0.44721359549995793},
+      {0, -0.97014250715764228, 0.24253559698708929},
+      {0, 0.97014250014533188, 0.24253562503633297},
+      {0, 0.97014250014533199, 0.242535625036333},
+      {0, -1, 0},
+      {0.70710678118654746, -0.70710678118654746, 0},
+      {0, -0.99999999999999989, 0},
+      {0, 0.97014250014533177, 0.24253562503633294},
+      {0, 1, 0},
+      {0, -1, 0},
+      {0, 1, 0},
+      {0, 1, 0},
+      {0, 1, 0},
+      {0, 0.24253562503633297, 0.97014250014533188},
+      {-9.6139842181100923e-11, 0.97014250777637601, 0.24253559451215462},
+      {0, 0.97014250014533188, 0.24253562503633297},
+      {0, -0.97014250014533199, 0.242535625036333},
+      {-0.70710678118654746, -0.70710678118654746, 0},
+      {0.68348613064841857, -0.68348613064841857, 0.25630727344830823}};
+  std::vector<ProxyPlane> planes;
+  for (const glm::dvec3& n : normals) planes.push_back({n, 1.0});
+  EXPECT_TRUE(isBounded(planes));
+  const ConvexProxy proxy = polytopeFromPlanes(planes, glm::dvec3(0.0));
+  EXPECT_GE(proxy.verticesMeters.size(), 8u);
+  for (const glm::dvec3& v : proxy.verticesMeters)
+    EXPECT_LE(signedDistanceOutside(planes, v), 1e-9);
+}
+
 TEST(PolytopeFromPlanes, InteriorPointOutsideOrOnAPlaneIsAFitError) {
   const std::vector<ProxyPlane> planes = boxPlanes(kRoomLow, kRoomHigh);
   expectFitError(
