@@ -40,24 +40,13 @@ std::vector<GridCellProbe> placeCaptures(const LevelRayCaster& level, const Walk
     const auto [y, x, storey] = key;
     const glm::dvec3 centre(floor.originMeters.x + (x + 0.5) * spacingMeters,
                             floor.originMeters.y + (y + 0.5) * spacingMeters, 0.0);
-    // The floor cell nearest the centre whose capture point stands clear of every surface.
-    std::vector<std::pair<double, std::size_t>> byDistance;
-    for (std::size_t c : square.cells) {
-      const glm::dvec3 p = floor.cells[c].pointMeters;
-      byDistance.push_back({glm::length(glm::dvec3(p.x, p.y, 0.0) - centre), c});
-    }
-    std::sort(byDistance.begin(), byDistance.end());
-    // Else the clearest of its cells; a square where every capture point touches a surface (a
+    // The floor cell nearest the centre whose capture point stands clear of every surface, else
+    // the clearest of its cells; a square where every capture point touches a surface (a
     // sliver of floor under a beam) gets no probe: a scene may not hold one there.
-    double clearest = -1.0;
-    for (const auto& [distance, c] : byDistance) {
-      const glm::dvec3 capture =
-          captureAbove(level, floor.cells[c].pointMeters, captureHeightMeters);
-      const double clearance = nearestSurface(level, capture).distanceMeters;
-      if (clearance > clearest) clearest = clearance, square.captureMeters = capture;
-      if (clearance >= kLayoutCaptureClearanceMeters) break;
-    }
-    if (clearest < kMinCaptureClearanceMeters) continue;
+    const ClearCapture clear = clearCaptureAbove(
+        level, floor, nearestFirst(floor, square.cells, centre), captureHeightMeters);
+    square.captureMeters = clear.captureMeters;
+    if (clear.clearanceMeters < kMinCaptureClearanceMeters) continue;
     probes.push_back(std::move(square));
   }
   return probes;

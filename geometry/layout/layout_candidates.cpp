@@ -18,6 +18,29 @@ glm::dvec3 captureAbove(const LevelRayCaster& level, glm::dvec3 floorMeters, dou
   return floorMeters + glm::dvec3(0.0, 0.0, std::min(heightMeters, 0.5 * freeHeight));
 }
 
+ClearCapture clearCaptureAbove(const LevelRayCaster& level, const WalkableFloor& floor,
+                               std::span<const std::size_t> cells, double heightMeters) {
+  ClearCapture best;
+  for (std::size_t c : cells) {
+    const glm::dvec3 capture = captureAbove(level, floor.cells[c].pointMeters, heightMeters);
+    const double clearance = nearestSurface(level, capture).distanceMeters;
+    if (clearance > best.clearanceMeters) best = {capture, clearance};
+    if (clearance >= kLayoutCaptureClearanceMeters) break;
+  }
+  return best;
+}
+
+std::vector<std::size_t> nearestFirst(const WalkableFloor& floor, std::vector<std::size_t> cells,
+                                      glm::dvec3 middleMeters) {
+  const auto planDistance = [&](std::size_t c) {
+    const glm::dvec3 d = floor.cells[c].pointMeters - middleMeters;
+    return d.x * d.x + d.y * d.y;
+  };
+  std::stable_sort(cells.begin(), cells.end(),
+                   [&](std::size_t a, std::size_t b) { return planDistance(a) < planDistance(b); });
+  return cells;
+}
+
 LayoutCandidates layoutCandidates(const LevelRayCaster& level, const WalkableFloor& floor,
                                   double spacingMeters, double captureHeightMeters,
                                   std::size_t maxCandidates) {

@@ -10,6 +10,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <span>
 #include <vector>
 
 namespace probeproxy {
@@ -33,5 +34,21 @@ LayoutCandidates layoutCandidates(const LevelRayCaster& level, const WalkableFlo
 
 // The capture point above a floor point: `heightMeters` up, at most half the free height.
 glm::dvec3 captureAbove(const LevelRayCaster& level, glm::dvec3 floorMeters, double heightMeters);
+
+// The capture point over the first of `cells` (the caller's order of preference: nearest the
+// middle of what the probe serves first) that stands kLayoutCaptureClearanceMeters clear of
+// every surface, else over the clearest of them, with its clearance. A floor cell's centre can
+// lie in a wall's plane (the map's grid and the floor's agree: warfare's fills had a capture
+// point 0.5 mm from a wall), and a scene may not hold such a probe.
+struct ClearCapture {
+  glm::dvec3 captureMeters{0.0};
+  double clearanceMeters = -1.0;
+};
+ClearCapture clearCaptureAbove(const LevelRayCaster& level, const WalkableFloor& floor,
+                               std::span<const std::size_t> cells, double heightMeters);
+
+// `cells` nearest (in plan) to `middleMeters` first; ties in the given order.
+std::vector<std::size_t> nearestFirst(const WalkableFloor& floor, std::vector<std::size_t> cells,
+                                      glm::dvec3 middleMeters);
 
 }  // namespace probeproxy

@@ -14,6 +14,12 @@ namespace {
 // extents cannot make them overlap (skyway: by 1e-9 m).
 constexpr double kInnerClearanceMeters = 1e-3;
 
+// A range cut closer than this over its floor keeps no room for its capture point (half way
+// up, it must stand kLayoutCaptureClearanceMeters off the floor): a platform one step higher
+// whose range starts 0.1 mm over this floor (warfare) spans the floor as much as one that
+// starts under it, and neither cuts.
+constexpr double kMinAirOverFloorMeters = 0.2;
+
 BoxInfluence boxAround(glm::dvec3 lo, glm::dvec3 hi, double bandMeters) {
   BoxInfluence box;
   box.centerMeters = 0.5 * (lo + hi);
@@ -56,7 +62,7 @@ void keepClearOfInnerRanges(glm::dvec3& lo, glm::dvec3& hi, glm::dvec3& captureM
     const glm::dvec3 otherHi = box->centerMeters + box->innerHalfExtentsMeters;
     if (glm::any(glm::greaterThanEqual(lo, otherHi)) || glm::any(glm::lessThanEqual(hi, otherLo)))
       continue;
-    if (otherLo.z > floorMeters)
+    if (otherLo.z > floorMeters + kMinAirOverFloorMeters)
       hi.z = otherLo.z - kInnerClearanceMeters;
     else if (otherHi.z <= floorMeters)
       lo.z = otherHi.z + kInnerClearanceMeters;

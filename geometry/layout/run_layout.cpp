@@ -173,8 +173,14 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
   }
   const FloorColumns columns(floor);
   for (const FloorRect& fill : selection.fills) {
-    const FloorCell& middle = floor.cells[middleCell(columns, fill)];
-    add(fill, captureAbove(level, middle.pointMeters, o.captureHeightMeters), kRoomFitMeters);
+    std::vector<std::size_t> cells;
+    columns.forEachIn(fill, [&](std::size_t cell) { cells.push_back(cell); });
+    const glm::dvec3 middle = floor.cells[middleCell(columns, fill)].pointMeters;
+    add(fill,
+        clearCaptureAbove(level, floor, nearestFirst(floor, std::move(cells), middle),
+                          o.captureHeightMeters)
+            .captureMeters,
+        kRoomFitMeters);
   }
   // The survey walks a finer floor than the candidates: what of it no volume reaches.
   const WalkableFloor walked = walkableFloor(level, seedsMeters, o.coverFloor);

@@ -60,14 +60,10 @@ std::vector<FloorFill> fillsForUncoveredFloor(const LevelRayCaster& level,
         lo = glm::min(lo, p), hi = glm::max(hi, p);
       }
     }
-    // The capture point over the member nearest the group's middle.
-    const glm::dvec3 middle = 0.5 * (lo + hi);
-    const auto nearest = std::min_element(members.begin(), members.end(), [&](auto a, auto b) {
-      return planDistance(floor.cells[a].pointMeters, middle, middle) <
-             planDistance(floor.cells[b].pointMeters, middle, middle);
-    });
     glm::dvec3 capture =
-        captureAbove(level, floor.cells[*nearest].pointMeters, captureHeightMeters);
+        clearCaptureAbove(level, floor, nearestFirst(floor, members, 0.5 * (lo + hi)),
+                          captureHeightMeters)
+            .captureMeters;
     glm::dvec3 innerLo(lo.x - half, lo.y - half,
                        lo.z - kInfluenceBelowFloorMeters - kInfluenceStepMeters);
     glm::dvec3 innerHi(hi.x + half, hi.y + half, hi.z + kInfluenceHeadRoomMeters);

@@ -52,6 +52,21 @@ TEST(KeepClearOfInnerRanges, AFillOnARangesOwnFloorIsNotCut) {
   EXPECT_DOUBLE_EQ(capture.z, 1.8);
 }
 
+TEST(KeepClearOfInnerRanges, ARangeStartingJustOverTheFloorIsNotCut) {
+  // A platform one step up (its range starts 1e-4 m over this floor, warfare): cut under it,
+  // this range would keep no air over its floor and its capture point would sit on the floor.
+  const std::vector<InfluenceVolume> platform{influenceOfBounds({0, 0, 5.5}, {10, 10, 8.5}, 1.0)};
+  glm::dvec3 lo{2, 2, 5.0}, hi{4, 4, 8.0}, capture{3, 3, 7.1};
+  keepClearOfInnerRanges(lo, hi, capture, 5.5 - 1e-4, platform);
+  EXPECT_DOUBLE_EQ(hi.z, 8.0);
+  EXPECT_DOUBLE_EQ(capture.z, 7.1);
+  // 0.3 m of air is enough: cut, the capture point half way up it.
+  glm::dvec3 lo2{2, 2, 4.7}, hi2{4, 4, 7.7}, capture2{3, 3, 6.8};
+  keepClearOfInnerRanges(lo2, hi2, capture2, 5.2, platform);
+  EXPECT_NEAR(hi2.z, 5.5, 2e-3);
+  EXPECT_NEAR(capture2.z, 5.35, 1e-3);
+}
+
 TEST(FillsForUncoveredFloor, FloorBeyondEveryBandGetsOneProbeAndIsThenCovered) {
   // A 10 x 10 m room; one range over x 0..5 whose band reaches to x 6.5 (1.5 gaps of 1 m).
   const LevelRayCaster level(boxRoom({0, 0, 0}, {10, 10, 3.5f}));
