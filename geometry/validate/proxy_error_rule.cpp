@@ -35,18 +35,19 @@ void checkProxyError(const LevelRayCaster& level, const Probe& probe, const Prox
                 candidateName(kept).c_str(), planeCount(kept.shape), kept.error.p95Deg);
   std::string message = "probe '" + probe.name;
   message += text;
-  out.push_back({probe.name, "proxy_error_over_tolerance", "warning", error.p95Deg,
-                 options.toleranceDeg, std::move(message),
-                 kept.error.p95Deg < error.p95Deg
-                     ? "use the generated proxy (`\"proxy\": \"auto\"`, or `probeproxy build "
-                       "--regenerate` to see it), or move the proxy's faces onto the walls "
-                       "the reflections land on"
-                     : "no convex proxy does better here: split the probe's area between more "
-                       "probes, or accept the error"});
+  if (options.measures("proxy_error_over_tolerance"))
+    out.push_back({probe.name, "proxy_error_over_tolerance", "warning", error.p95Deg,
+                   options.toleranceDeg, std::move(message),
+                   kept.error.p95Deg < error.p95Deg
+                       ? "use the generated proxy (`\"proxy\": \"auto\"`, or `probeproxy build "
+                         "--regenerate` to see it), or move the proxy's faces onto the walls "
+                         "the reflections land on"
+                       : "no convex proxy does better here: split the probe's area between more "
+                         "probes, or accept the error"});
   // Where no proxy of its own will do, a second probe may.
   const bool generatedBetter = kept.error.p95Deg < error.p95Deg;
   const double best = generatedBetter ? kept.error.p95Deg : error.p95Deg;
-  if (best > options.toleranceDeg)
+  if (best > options.toleranceDeg && options.measures("split_probe"))
     checkSplitProbe(level, probe, generatedBetter ? kept.shape : authored, best, samples, floor,
                     options, out);
 }

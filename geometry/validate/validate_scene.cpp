@@ -15,6 +15,10 @@ bool hasError(const std::vector<ValidationFinding>& findings, std::size_t from) 
                      [](const ValidationFinding& f) { return f.severity == "error"; });
 }
 
+void keep(std::vector<ValidationFinding>& found, std::vector<ValidationFinding>& findings) {
+  for (ValidationFinding& f : found) findings.push_back(std::move(f));
+}
+
 }  // namespace
 
 void ValidateOptions::check() const {
@@ -28,6 +32,18 @@ void ValidateOptions::check() const {
   requireInRange("grid", gridSpacingMeters, 0.01, 10.0);
   requireInRange<std::size_t>("grid_point_budget", gridPointBudget, 1, 100'000'000);
   samples.check();
+  for (const std::string& rule : rules) {
+    if (std::find(kSelectableRules.begin(), kSelectableRules.end(), rule) != kSelectableRules.end())
+      continue;
+    std::string known;
+    for (std::string_view r : kSelectableRules)
+      known += (known.empty() ? "" : ", ") + std::string(r);
+    throw InputError("option rules", "unknown rule '" + rule + "' (rules: " + known + ")");
+  }
+}
+
+bool ValidateOptions::measures(std::string_view rule) const {
+  return rules.empty() || std::find(rules.begin(), rules.end(), rule) != rules.end();
 }
 
 std::vector<ValidationFinding> validateScene(const Scene& scene, const LevelRayCaster& level,
@@ -45,22 +61,29 @@ std::vector<ValidationFinding> validateScene(const Scene& scene, const LevelRayC
     if (authored && !hasError(findings, first)) checkCaptureInsideProxy(probe, *authored, findings);
     checkCaptureInsideInfluence(probe, findings);
     if (hasError(findings, first)) continue;
-    checkCaptureInsideLevel(level, probe, findings);
-    if (authored) checkProxyError(level, probe, *authored, floor, options, findings);
-    const std::size_t beforeLeak = findings.size();
-    checkInfluenceLeak(level, probe, floor, options, findings);
+    if (options.measures("capture_outside_level")) checkCaptureInsideLevel(level, probe, findings);
+    if (authored &&
+        (options.measures("proxy_error_over_tolerance") || options.measures("split_probe")))
+      checkProxyError(level, probe, *authored, floor, options, findings);
     // Cameras over the floor behind the wall a volume leaks through are outside any proxy of
     // this probe's room: that is the leak, reported once.
-    if (authored && findings.size() == beforeLeak)
-      checkReflectedCameras(level, probe, *authored, options, findings);
+    std::vector<ValidationFinding> leak;
+    const bool cameras = authored && options.measures("reflected_camera_outside_proxy");
+    if (cameras || options.measures("influence_leak"))
+      checkInfluenceLeak(level, probe, floor, options, leak);
+    if (options.measures("influence_leak")) keep(leak, findings);
+    if (cameras && leak.empty()) checkReflectedCameras(level, probe, *authored, options, findings);
   }
-  checkOverlaps(scene, options, findings);
+  if (options.measures("too_many_overlaps")) checkOverlaps(scene, options, findings);
   // Overlapping inner ranges make the weights jump where one range ends (both claim 100%):
   // that is one problem, reported once.
-  const std::size_t beforeInner = findings.size();
-  checkInnerRanges(scene, options, findings);
-  if (findings.size() == beforeInner) checkWeightJumps(scene, level, options, findings);
-  checkFloorCoverage(scene, floor, options, findings);
+  std::vector<ValidationFinding> inner;
+  if (options.measures("inner_ranges_overlap") || options.measures("weight_jump"))
+    checkInnerRanges(scene, options, inner);
+  if (options.measures("inner_ranges_overlap")) keep(inner, findings);
+  if (inner.empty() && options.measures("weight_jump"))
+    checkWeightJumps(scene, level, options, findings);
+  if (options.measures("floor_not_covered")) checkFloorCoverage(scene, floor, options, findings);
   return findings;
 }
 

@@ -34,7 +34,9 @@
 
 #include <glm/vec3.hpp>
 
+#include <array>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace probeproxy {
@@ -48,6 +50,18 @@ struct ValidationFinding {
   std::string message;   // one line: what is wrong, naming the probe(s) and where
   std::string hint;      // one line: how to fix it
 };
+
+// The rules ValidateOptions::rules may name.
+inline constexpr std::array<std::string_view, 9> kSelectableRules = {
+    "capture_outside_level",
+    "proxy_error_over_tolerance",
+    "split_probe",
+    "influence_leak",
+    "reflected_camera_outside_proxy",
+    "too_many_overlaps",
+    "inner_ranges_overlap",
+    "weight_jump",
+    "floor_not_covered"};
 
 struct ValidateOptions {
   // proxy_error_over_tolerance: the authored proxy's mirror_floor p95 may be at most this.
@@ -81,11 +95,18 @@ struct ValidateOptions {
   std::vector<glm::dvec3> seedPointsMeters;
   // Samples and cameras of proxy_error_over_tolerance and reflected_camera_outside_proxy.
   ReflectionSampleOptions samples;
+  // The rules measured, by id (kSelectableRules); empty: all. The mesh and capture checks
+  // (proxy_*, capture_outside_proxy, capture_outside_influence) always run: they decide whether
+  // a probe's other rules can be measured at all. On a real map's layout the proxy error rule
+  // and its split_probe search take nearly all of validate's time (darkzone: 225 s), so the
+  // volume rules alone are a quick check.
+  std::vector<std::string> rules;
+  bool measures(std::string_view rule) const;
 
   // Throws InputError naming the first option outside its range (the CLI flags' names in
   // snake_case): tolerance_deg > 0, max_overlap in [1, 64], max_inner_overlap_m3 >= 0,
   // max_uncovered_m2 >= 0, max_weight_jump > 0, max_leak_share in [0, 1], grid in
-  // [0.01, 10], samples in [64, 1000000].
+  // [0.01, 10], samples in [64, 1000000], every rule one of kSelectableRules.
   void check() const;
 };
 

@@ -40,4 +40,12 @@ assert "from %.2f to" % own[0]["value"] in split[0]["message"], split[0]["messag
 clean = json.load(open(os.path.join(work, "clean.json")))["findings"]
 assert not [f for f in clean if f["rule"] == "split_probe"], clean
 PY
+# --rules without split_probe: the same proxy error, and no search for a second probe.
+"$probeproxy" validate "$work/one_probe.scene.json" --tolerance-deg 5 --json \
+  --rules proxy_error_over_tolerance >"$work/no_split.json" 2>/dev/null || true
+python3 - "$work" <<'PY' || fail "split_probe left out by --rules"
+import json, os, sys
+rules = [f["rule"] for f in json.load(open(os.path.join(sys.argv[1], "no_split.json")))["findings"]]
+assert rules == ["proxy_error_over_tolerance"], rules
+PY
 echo "split_probe checks passed"

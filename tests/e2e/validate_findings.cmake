@@ -1,8 +1,8 @@
-# cmake -DPROBEPROXY=... -DSCENE=... -DEXPECT="rule_a;rule_b" -P validate_findings.cmake
-# Runs `probeproxy validate --json SCENE` and checks the findings are exactly EXPECT (rule ids,
-# in the order validate reports them; empty for a clean level), and the exit code says so:
+# cmake -DPROBEPROXY=... -DSCENE=... -DEXPECT="rule_a;rule_b" [-DARGS="--rules;a,b"] -P validate_findings.cmake
+# Runs `probeproxy validate --json SCENE [ARGS]` and checks the findings are exactly EXPECT (rule
+# ids, in the order validate reports them; empty for a clean level), and the exit code says so:
 # 0 without findings, 1 with.
-execute_process(COMMAND ${PROBEPROXY} validate --json ${SCENE}
+execute_process(COMMAND ${PROBEPROXY} validate --json ${SCENE} ${ARGS}
   RESULT_VARIABLE code OUTPUT_VARIABLE json ERROR_VARIABLE err)
 if(NOT code EQUAL 0 AND NOT code EQUAL 1)
   message(FATAL_ERROR "validate exited ${code}: ${err}")
