@@ -14,11 +14,12 @@ namespace {
 // extents cannot make them overlap (skyway: by 1e-9 m).
 constexpr double kInnerClearanceMeters = 1e-3;
 
-// A range cut closer than this over its floor keeps no room for its capture point (half way
-// up, it must stand kLayoutCaptureClearanceMeters off the floor): a platform one step higher
-// whose range starts 0.1 mm over this floor (warfare) spans the floor as much as one that
-// starts under it, and neither cuts.
-constexpr double kMinAirOverFloorMeters = 0.2;
+// A range cut closer than this over its floor keeps no room for its capture point (half way up
+// it, which a scene wants kMinCaptureClearanceMeters off every surface): a platform range that
+// starts 0.1 mm over this floor (warfare, with 4 samples a cell) spans the floor as much as one
+// that starts under it, and cuts nothing. Skyway has a fill cut 8 cm over its floor: more
+// than this would leave that fill's range overlapping the platform's instead.
+constexpr double kMinAirOverFloorMeters = 0.05;
 
 BoxInfluence boxAround(glm::dvec3 lo, glm::dvec3 hi, double bandMeters) {
   BoxInfluence box;

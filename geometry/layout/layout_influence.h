@@ -41,7 +41,7 @@ BoxInfluence influenceAroundFloor(const WalkableFloor& floor, std::span<const st
 // inner range stops where that one begins, over or under its floor: a pit or a lower floor in
 // a range's plan, whose box spans the air over it, would otherwise be claimed 100% by both.
 // The capture point moves into what is left (half way up it, at most). Where the other range
-// spans the floor itself (or starts less than 0.2 m over it) nothing is cut. Axis-aligned boxes
+// spans the floor itself (or starts less than 5 cm over it) nothing is cut. Axis-aligned boxes
 // only (a layout's own volumes).
 void keepClearOfInnerRanges(glm::dvec3& lo, glm::dvec3& hi, glm::dvec3& captureMeters,
                             double floorMeters, std::span<const InfluenceVolume> others);

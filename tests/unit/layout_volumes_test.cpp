@@ -60,11 +60,11 @@ TEST(KeepClearOfInnerRanges, ARangeStartingJustOverTheFloorIsNotCut) {
   keepClearOfInnerRanges(lo, hi, capture, 5.5 - 1e-4, platform);
   EXPECT_DOUBLE_EQ(hi.z, 8.0);
   EXPECT_DOUBLE_EQ(capture.z, 7.1);
-  // 0.3 m of air is enough: cut, the capture point half way up it.
-  glm::dvec3 lo2{2, 2, 4.7}, hi2{4, 4, 7.7}, capture2{3, 3, 6.8};
-  keepClearOfInnerRanges(lo2, hi2, capture2, 5.2, platform);
+  // 8 cm of air is enough (skyway): cut, the capture point half way up it.
+  glm::dvec3 lo2{2, 2, 4.92}, hi2{4, 4, 7.92}, capture2{3, 3, 7.02};
+  keepClearOfInnerRanges(lo2, hi2, capture2, 5.42, platform);
   EXPECT_NEAR(hi2.z, 5.5, 2e-3);
-  EXPECT_NEAR(capture2.z, 5.35, 1e-3);
+  EXPECT_NEAR(capture2.z, 5.46, 1e-3);
 }
 
 TEST(FillsForUncoveredFloor, FloorBeyondEveryBandGetsOneProbeAndIsThenCovered) {
