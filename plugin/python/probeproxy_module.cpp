@@ -278,7 +278,8 @@ PYBIND11_MODULE(probeproxy_py, m) {
         "Validates the probes' volumes against the level (`probeproxy validate`). level: as "
         "build_proxies. options (the CLI's, same defaults): tolerance_deg, max_overlap, "
         "max_uncovered_m2, max_leak_share, max_inner_overlap_m3, max_weight_jump, glossy, "
-        "grid, samples; and threads. Returns the findings of `validate --json`, in its order: "
+        "grid, samples, rules (a list of rule ids: only those are measured); and threads. Returns "
+        "the findings of `validate --json`, in its order: "
         "dicts with probe, rule, severity, value, limit (None where not finite), message, "
         "hint. An empty list: the scene is clean.");
 

@@ -1,6 +1,9 @@
 #include "plugin/python/python_options.h"
 
+#include <pybind11/stl.h>
+
 #include <string>
+#include <vector>
 
 namespace py = pybind11;
 
@@ -62,6 +65,8 @@ void readValidateOptions(const py::dict& options, jobs::ValidateJobOptions& job)
       o.gridSpacingMeters = value.cast<double>();
     else if (name == "samples")
       o.samples.targetSamples = value.cast<std::size_t>();
+    else if (name == "rules")
+      o.rules = value.cast<std::vector<std::string>>();
     else if (name == "threads")
       job.threads = value.cast<int>();
     else

@@ -16,7 +16,8 @@ namespace probeproxy::python {
 void readBuildOptions(const pybind11::dict& options, jobs::BuildJobOptions& job);
 
 // The `probeproxy validate` options: tolerance_deg, max_overlap, max_uncovered_m2,
-// max_leak_share, max_inner_overlap_m3, max_weight_jump, glossy, grid, samples; and threads.
+// max_leak_share, max_inner_overlap_m3, max_weight_jump, glossy, grid, samples, rules (a list
+// of rule ids); and threads.
 void readValidateOptions(const pybind11::dict& options, jobs::ValidateJobOptions& job);
 
 // The `probeproxy layout` options: tolerance_deg, max_probes, spacing, max_candidates, reach,

@@ -6,8 +6,9 @@
 # Imports the scene through Import Scene and asserts that the findings in the panel equal
 # `probeproxy validate --json`'s (same order, same values), that there are some, that exactly
 # the offending probes are selected (the first finding's active), and that the module's
-# validate_scene returns the CLI's findings too; a refused option raises InputError, a missing
-# level mesh InputError with the library's one line.
+# validate_scene returns the CLI's findings too, and only the named rules' under options
+# {"rules": [...]}; a refused option raises InputError, a missing level mesh InputError with
+# the library's one line.
 
 import os
 import sys
@@ -38,6 +39,18 @@ data = native.module.read_scene(scene)
 e = raised(lambda: native.module.validate_scene(data, scene, options={"grid": 0}))
 check(isinstance(e, native.module.InputError) and str(e) == "option grid: 0 is outside [0.01, 10]",
       "an option the CLI refuses raises the job's InputError, the CLI's line: %s" % e)
+# rules: only floor_not_covered is measured; the mesh and capture checks always run.
+always = {"capture_outside_proxy", "capture_outside_influence", "floor_not_covered"}
+only = native.module.validate_scene(data, scene, options={"rules": ["floor_not_covered"]})
+kept = [f for f in expected
+        if f["rule"] in always or (f["rule"].startswith("proxy_") and
+                                   f["rule"] != "proxy_error_over_tolerance")]
+check(only == kept, "options rules: the findings of the rules named and the gating checks: %s"
+      % [f["rule"] for f in only])
+e = raised(lambda: native.module.validate_scene(data, scene, options={"rules": ["leaks"]}))
+check(isinstance(e, native.module.InputError) and
+      str(e).startswith("option rules: unknown rule 'leaks' (rules: capture_outside_level, "),
+      "an unknown rule raises InputError listing the rules: %s" % e)
 data["level"] = ["no_such_level.obj"]
 e = raised(lambda: native.module.validate_scene(data, scene))
 missing = os.path.join(os.path.dirname(scene), "no_such_level.obj")
