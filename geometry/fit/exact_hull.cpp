@@ -131,6 +131,25 @@ PointBits bitsOf(double x, double y, double z) {
 // differ in the sign of a zero, the hull keeps the same bits whichever comes first.
 glm::dvec3 withoutNegativeZero(glm::dvec3 p) { return {p.x + 0.0, p.y + 0.0, p.z + 0.0}; }
 
+std::vector<Point> hullInput(std::span<const glm::dvec3> points) {
+  requireFinite(points, "convex hull");
+  std::vector<Point> cgalPoints;
+  cgalPoints.reserve(points.size());
+  for (const glm::dvec3& p : points) cgalPoints.push_back(toCgal(withoutNegativeZero(p)));
+  // Repeated points reach a use-after-free in CGAL 5.5's quickhull (CGAL issues #6543, #8625:
+  // the farthest point can be one of the three it starts from, and is erased twice). Sorted
+  // and unique, the input also has one canonical order, whatever order the caller had.
+  std::sort(cgalPoints.begin(), cgalPoints.end());
+  cgalPoints.erase(std::unique(cgalPoints.begin(), cgalPoints.end()), cgalPoints.end());
+  return cgalPoints;
+}
+
+[[noreturn]] void throwNoVolume(std::size_t pointCount) {
+  std::ostringstream message;
+  message << "convex hull: the " << pointCount << " points span no volume";
+  throw FitError(message.str());
+}
+
 }  // namespace
 
 void requireFinite(std::span<const glm::dvec3> points, std::string_view what) {
@@ -182,29 +201,6 @@ int orientationSign(glm::dvec3 a, glm::dvec3 b, glm::dvec3 c, glm::dvec3 d) {
   // c, the side from which they turn counter-clockwise: where cross(b - a, c - a) points.
   return static_cast<int>(CGAL::orientation(toCgal(a), toCgal(b), toCgal(c), toCgal(d)));
 }
-
-namespace {
-
-std::vector<Point> hullInput(std::span<const glm::dvec3> points) {
-  requireFinite(points, "convex hull");
-  std::vector<Point> cgalPoints;
-  cgalPoints.reserve(points.size());
-  for (const glm::dvec3& p : points) cgalPoints.push_back(toCgal(withoutNegativeZero(p)));
-  // Repeated points reach a use-after-free in CGAL 5.5's quickhull (CGAL issues #6543, #8625:
-  // the farthest point can be one of the three it starts from, and is erased twice). Sorted
-  // and unique, the input also has one canonical order, whatever order the caller had.
-  std::sort(cgalPoints.begin(), cgalPoints.end());
-  cgalPoints.erase(std::unique(cgalPoints.begin(), cgalPoints.end()), cgalPoints.end());
-  return cgalPoints;
-}
-
-[[noreturn]] void throwNoVolume(std::size_t pointCount) {
-  std::ostringstream message;
-  message << "convex hull: the " << pointCount << " points span no volume";
-  throw FitError(message.str());
-}
-
-}  // namespace
 
 std::vector<std::array<glm::dvec3, 3>> hullTriangles(std::span<const glm::dvec3> points) {
   const std::vector<Point> cgalPoints = hullInput(points);

@@ -15,10 +15,6 @@ bool hasError(const std::vector<ValidationFinding>& findings, std::size_t from) 
                      [](const ValidationFinding& f) { return f.severity == "error"; });
 }
 
-void keep(std::vector<ValidationFinding>& found, std::vector<ValidationFinding>& findings) {
-  for (ValidationFinding& f : found) findings.push_back(std::move(f));
-}
-
 }  // namespace
 
 void ValidateOptions::check() const {
@@ -35,11 +31,15 @@ void ValidateOptions::check() const {
   for (const std::string& rule : rules) {
     if (std::find(kSelectableRules.begin(), kSelectableRules.end(), rule) != kSelectableRules.end())
       continue;
-    std::string known;
-    for (std::string_view r : kSelectableRules)
-      known += (known.empty() ? "" : ", ") + std::string(r);
-    throw InputError("option rules", "unknown rule '" + rule + "' (rules: " + known + ")");
+    throw InputError("option rules",
+                     "unknown rule '" + rule + "' (rules: " + selectableRuleNames() + ")");
   }
+}
+
+std::string selectableRuleNames() {
+  std::string names;
+  for (std::string_view r : kSelectableRules) names += (names.empty() ? "" : ", ") + std::string(r);
+  return names;
 }
 
 bool ValidateOptions::measures(std::string_view rule) const {
@@ -50,7 +50,12 @@ std::vector<ValidationFinding> validateScene(const Scene& scene, const LevelRayC
                                              const ValidateOptions& options) {
   options.check();
   std::vector<ValidationFinding> findings;
-  const std::vector<FloorCell> floor = walkedFloor(scene, level, options).cells;
+  // The walkable floor is walked for the rules that measure on it only.
+  const bool onFloor = options.measures("split_probe") || options.measures("influence_leak") ||
+                       options.measures("reflected_camera_outside_proxy") ||
+                       options.measures("floor_not_covered");
+  const std::vector<FloorCell> floor =
+      onFloor ? walkedFloor(scene, level, options).cells : std::vector<FloorCell>{};
   for (const Probe& probe : scene.probes) {
     // Later rules measure what earlier ones establish: a proxy that is not a closed convex
     // mesh, or that misses its capture point, has no meaningful error yet; a capture point
@@ -71,7 +76,8 @@ std::vector<ValidationFinding> validateScene(const Scene& scene, const LevelRayC
     const bool cameras = authored && options.measures("reflected_camera_outside_proxy");
     if (cameras || options.measures("influence_leak"))
       checkInfluenceLeak(level, probe, floor, options, leak);
-    if (options.measures("influence_leak")) keep(leak, findings);
+    if (options.measures("influence_leak"))
+      findings.insert(findings.end(), leak.begin(), leak.end());
     if (cameras && leak.empty()) checkReflectedCameras(level, probe, *authored, options, findings);
   }
   if (options.measures("too_many_overlaps")) checkOverlaps(scene, options, findings);
@@ -80,7 +86,8 @@ std::vector<ValidationFinding> validateScene(const Scene& scene, const LevelRayC
   std::vector<ValidationFinding> inner;
   if (options.measures("inner_ranges_overlap") || options.measures("weight_jump"))
     checkInnerRanges(scene, options, inner);
-  if (options.measures("inner_ranges_overlap")) keep(inner, findings);
+  if (options.measures("inner_ranges_overlap"))
+    findings.insert(findings.end(), inner.begin(), inner.end());
   if (inner.empty() && options.measures("weight_jump"))
     checkWeightJumps(scene, level, options, findings);
   if (options.measures("floor_not_covered")) checkFloorCoverage(scene, floor, options, findings);

@@ -63,6 +63,9 @@ inline constexpr std::array<std::string_view, 9> kSelectableRules = {
     "weight_jump",
     "floor_not_covered"};
 
+// kSelectableRules, comma-separated: for the rules option's help and its error.
+std::string selectableRuleNames();
+
 struct ValidateOptions {
   // proxy_error_over_tolerance: the authored proxy's mirror_floor p95 may be at most this.
   double toleranceDeg = 0.25;

@@ -66,10 +66,8 @@ Verb addValidateVerb(CLI::App& app) {
   verb->add_option("--samples", v.samples.targetSamples, "reflection samples per probe")
       ->capture_default_str();
   verb->add_option("--rules", v.rules,
-                   "measure only these rules (comma-separated ids: capture_outside_level, "
-                   "proxy_error_over_tolerance, split_probe, influence_leak, "
-                   "reflected_camera_outside_proxy, too_many_overlaps, inner_ranges_overlap, "
-                   "weight_jump, floor_not_covered); the mesh and capture checks always run")
+                   "measure only these rules (comma-separated: " + selectableRuleNames() +
+                       "); the mesh and capture checks always run")
       ->delimiter(',');
   verb->add_option("--threads", o->job.threads, "worker threads (0: all cores)")
       ->capture_default_str();
