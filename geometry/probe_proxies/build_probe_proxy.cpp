@@ -8,11 +8,15 @@
 #include "geometry/probe_proxies/ieee_float_mode.h"
 #include "geometry/probe_proxies/probe_samples.h"
 #include "geometry/probe_proxies/probe_view.h"
+#include "geometry/probe_proxies/select_proxy.h"
 #include "geometry/probe_proxies/simplify_hull.h"
 #include "geometry/probe_proxies/stopwatch.h"
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <string>
 
 namespace probeproxy {
@@ -36,7 +40,39 @@ void measureOnAllSurfaces(ProbeProxyBuild& build, glm::dvec3 capture,
   }
 }
 
+double farthestCornerMeters(const ConvexProxy& convex, glm::dvec3 from) {
+  double farthest = 0.0;
+  for (const glm::dvec3& v : convex.verticesMeters)
+    farthest = std::max(farthest, glm::length(v - from));
+  return farthest;
+}
+
 }  // namespace
+
+// The simplification's reach rule samples directions (PlaneReach), and a wedge between two
+// nearly parallel planes can slip between them: skyway's layout kept an 8 km wedge along a
+// wall 0.2 degrees off another. Corners are exact; twice the rule's reach leaves room for a
+// corner between sampled directions.
+void dropStepsReachingFar(ProbeProxyBuild& build, glm::dvec3 capture, double farthestSeenMeters,
+                          const ProxyBuildOptions& o) {
+  PROBEPROXY_CHECK(build.kept < build.candidates.size());
+  const double limit = 2 * kMaxReachOverFarthestSeen * farthestSeenMeters;
+  while (build.candidates[build.kept].origin == CandidateOrigin::Simplified) {
+    auto& convex = std::get<ConvexProxy>(build.candidates[build.kept].shape);
+    try {
+      ConvexProxy withCorners = polytopeFromPlanes(convex.planes, capture);
+      if (farthestCornerMeters(withCorners, capture) <= limit) {
+        convex = std::move(withCorners);
+        return;
+      }
+    } catch (const FitError&) {
+      return;  // finishKeptProxy says so and keeps the box
+    }
+    build.candidates.erase(build.candidates.begin() + static_cast<std::ptrdiff_t>(build.kept),
+                           build.candidates.end());
+    build.kept = selectProxy(build.candidates, o);
+  }
+}
 
 void finishKeptProxy(ProbeProxyBuild& build, glm::dvec3 capture) {
   PROBEPROXY_CHECK(build.kept < build.candidates.size());
@@ -104,6 +140,7 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
   for (ProxyCandidate& c : build.candidates)
     c.error = evaluateShape(c.shape, capture, samples.floor);
   build.kept = selectProxy(build.candidates, o);
+  dropStepsReachingFar(build, capture, view.farthestMeters, o);
   measureOnAllSurfaces(build, capture, samples.all);
   build.evaluateMs = stage.lap();
   finishKeptProxy(build, capture);

@@ -8,7 +8,8 @@
 //   3. fitCandidates      fit_candidates.h  authored, infinite, cheap_k, spheres, boxes, hull
 //   4. simplifyHull       simplify_hull.h   convex_k for every plane count the error allows
 //   5. measure            evaluate_shape.h  each candidate's error on mirror_floor
-//   6. selectProxy        select_proxy.h    which one to keep
+//   6. selectProxy        select_proxy.h    which one to keep; a simplification step whose
+//                                           corners reach far is dropped and it runs again
 //   7. finishKeptProxy    (here)            the kept convex's corners; the capture inside it
 
 #include "core/proxy/proxy_candidate.h"
@@ -39,6 +40,14 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
                                 const ProbeView& view, const ViewHull& hull,
                                 const std::optional<ProxyShape>& authored,
                                 const ProxyBuildOptions& options);
+
+// After stage 6: a kept simplification step whose corners reach past twice
+// kMaxReachOverFarthestSeen x farthestSeenMeters ends the simplification there (every later
+// step drops more planes, so it holds this one and reaches as far): those steps are dropped
+// and the selection runs again. The step kept gets its corners. Other kinds fit around the
+// points seen and cannot reach far.
+void dropStepsReachingFar(ProbeProxyBuild& build, glm::dvec3 captureMeters,
+                          double farthestSeenMeters, const ProxyBuildOptions& options);
 
 // Stage 7: the kept convex proxy gets its corners and triangles (engines and Blender draw
 // it); one that has none keeps the aabb candidate instead. A finding when the capture point is

@@ -53,16 +53,15 @@ std::vector<ProxyCandidate> simplifyHull(const ConvexProxy& hull, const ProbeVie
                                          double& simplifyMs) {
   const Stopwatch time;
   const glm::dvec3 capture = view.captureMeters;
-  // A proxy may reach past what the probe sees (an open end of a corridor), but not far:
-  // twice the farthest point seen.
   const std::vector<ProxyPlane> start = startingPlanes(hull, view);
   PlaneReach reach(start, capture);
   // The reach first: it is the cheaper test.
-  const PlaneRemovalRule nearTheRoom{
-      [&](const std::vector<ProxyPlane>& p, std::size_t j) {
-        return reach.farthestWithoutMeters(j) <= 2.0 * view.farthestMeters && isBounded(p);
-      },
-      [&](std::size_t j) { reach.remove(j); }};
+  const PlaneRemovalRule nearTheRoom{[&](const std::vector<ProxyPlane>& p, std::size_t j) {
+                                       return reach.farthestWithoutMeters(j) <=
+                                                  kMaxReachOverFarthestSeen * view.farthestMeters &&
+                                              isBounded(p);
+                                     },
+                                     [&](std::size_t j) { reach.remove(j); }};
   const std::vector<PlaneRemovalStep> steps =
       greedyPlaneRemoval(start, capture, fitSamples, 4, nearTheRoom);
   simplifyMs = time.ms();

@@ -13,6 +13,11 @@
 
 namespace probeproxy {
 
+// A proxy may reach past what the probe sees (an open end of a corridor), but not far: no
+// farther than this many times the farthest point seen, along every direction PlaneReach
+// samples.
+inline constexpr double kMaxReachOverFarthestSeen = 2.0;
+
 // The planes simplification starts from: the hull's, without its thin bevels (under 0.2% of
 // its area, unless the rest would not be bounded), each wall plane replacing the hull facets it
 // matches.

@@ -156,6 +156,52 @@ TEST(BuildStages, SelectionKeepsTheFewestPlanesWithinToleranceElseTheMostAccurat
   EXPECT_EQ(selectProxy(c, o), 2u);
 }
 
+// The room's walls, with its -x wall swapped for a plane 0.14 degrees off its +y wall: the
+// two meet 2 km away, in a wedge so thin that the nearest of PlaneReach's 2048 directions
+// (about 4.5 degrees apart) leaves it 65 m out.
+ConvexProxy wedge() {
+  const glm::dvec3 slant = glm::normalize(glm::dvec3(-5, -2000, 0));  // through (6,-2), (-1994,3)
+  return ConvexProxy{{{{1, 0, 0}, kHi.x},
+                      {{0, 1, 0}, kHi.y},
+                      {{0, 0, 1}, kHi.z},
+                      {{0, 0, -1}, -kLo.z},
+                      {slant, glm::dot(slant, glm::dvec3(kHi.x, kLo.y, 0))}}};
+}
+
+TEST(BuildStages, AStepWhoseCornersReachFarIsDroppedWithTheStepsAfterIt) {
+  ProxyBuildOptions o;
+  o.toleranceDeg = 1.0;
+  ConvexProxy room = convexFromBox({0.5 * (kLo + kHi), 0.5 * (kHi - kLo), {1, 0, 0, 0}});
+  room.verticesMeters.clear();
+  room.triangles.clear();
+  ProbeProxyBuild b;
+  b.candidates = {candidate(CandidateOrigin::Aabb, BoxShape{}, 1.5, 0.3),
+                  candidate(CandidateOrigin::Simplified, room, 0.8, 0.2),
+                  candidate(CandidateOrigin::Simplified, wedge(), 0.5, 0.2),
+                  candidate(CandidateOrigin::Simplified, planes(4), 5.0, 2.0)};
+  const double farthestSeen = 40.0;  // e.g. down a corridor from the room
+  ASSERT_LE(farthestExitMeters(wedge().planes, kCapture),
+            kMaxReachOverFarthestSeen * farthestSeen);  // the sampled reach lets it pass
+  const ProbeProxyBuild asSelected = [&] {
+    ProbeProxyBuild s = b;
+    s.kept = selectProxy(s.candidates, o);
+    return s;
+  }();
+  ASSERT_EQ(asSelected.kept, 2u);  // the wedge: the fewest planes within tolerance
+
+  ProbeProxyBuild near = asSelected;
+  dropStepsReachingFar(near, kCapture, farthestSeen, o);
+  ASSERT_EQ(near.candidates.size(), 2u);  // the wedge and the step after it, which holds it
+  EXPECT_EQ(near.kept, 1u);               // the room's six planes, the next within tolerance
+  EXPECT_EQ(std::get<ConvexProxy>(near.candidates[1].shape).verticesMeters.size(), 8u);
+
+  ProbeProxyBuild far = asSelected;  // a probe that sees a kilometre may keep it
+  dropStepsReachingFar(far, kCapture, 1000.0, o);
+  EXPECT_EQ(far.candidates.size(), 4u);
+  EXPECT_EQ(far.kept, 2u);
+  EXPECT_EQ(std::get<ConvexProxy>(far.candidates[2].shape).verticesMeters.size(), 6u);
+}
+
 TEST(BuildStages, FinishingTheKeptConvexGivesItCornersAndChecksTheCapture) {
   ProbeProxyBuild b;
   ConvexProxy box = convexFromBox({0.5 * (kLo + kHi), 0.5 * (kHi - kLo), {1, 0, 0, 0}});
