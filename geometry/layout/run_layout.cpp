@@ -1,6 +1,7 @@
 #include "geometry/layout/run_layout.h"
 
 #include "core/errors/input_error.h"
+#include "geometry/layout/bands_in_sight.h"
 #include "geometry/layout/candidate_service.h"
 #include "geometry/layout/capture_sight.h"
 #include "geometry/layout/grid_layout.h"
@@ -149,8 +150,11 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
   const KeptFloor keptCells =
       kept.empty() ? KeptFloor{}
                    : keptFloor(level, floor, samples, kept, o.toleranceDeg, r.keptServedShare);
-  const ProbeSelection selection =
-      selectProbes(services, built.sights, captureCells, samples, floor, select, keptCells);
+  std::vector<glm::dvec3> capturePoints;
+  for (const LayoutCandidate& c : candidates) capturePoints.push_back(c.captureMeters);
+  const FloorInSight inSight(level, floor, capturePoints);
+  const ProbeSelection selection = selectProbes(services, built.sights, inSight, captureCells,
+                                                samples, floor, select, keptCells);
   std::vector<std::size_t> all(services.size());
   for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
   r.servableShare = servedShare(services, all, samples, keptCells.served);
@@ -160,10 +164,13 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
   // (a ledge over a lower floor) put one range's box in the air over the other's floor.
   std::vector<InfluenceVolume> volumes;
   for (const SurveyProbe& k : kept) volumes.push_back(k.influence);
+  // The survey walks a finer floor than the candidates (validate's leak rule too).
+  const WalkableFloor walked = walkableFloor(level, seedsMeters, o.coverFloor);
   const auto add = [&](const FloorRect& rect, glm::dvec3 capture, double fitMeters) {
     glm::dvec3 lo, hi;
     floorRectBounds(floor, rect, capture, lo, hi);
     keepClearOfInnerRanges(lo, hi, capture, rect.floorMeters, volumes);
+    pullBandsIntoSight(level, walked, capture, o.blendBandMeters, lo, hi);
     r.probes.push_back({capture, influenceOfBounds(lo, hi, o.blendBandMeters), fitMeters});
     volumes.push_back(r.probes.back().influence);
   };
@@ -182,8 +189,7 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
             .captureMeters,
         kRoomFitMeters);
   }
-  // The survey walks a finer floor than the candidates: what of it no volume reaches.
-  const WalkableFloor walked = walkableFloor(level, seedsMeters, o.coverFloor);
+  // What of the survey's floor no volume reaches.
   for (const FloorFill& f :
        fillsForUncoveredFloor(level, walked, volumes, o.blendBandMeters, o.captureHeightMeters))
     r.probes.push_back({f.captureMeters, f.influence, kRoomFitMeters});

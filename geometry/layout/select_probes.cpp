@@ -11,27 +11,33 @@ namespace probeproxy {
 
 namespace {
 
-// Per candidate, the floor cells it serves whole and those it sees a sample of.
+// Per candidate, the floor cells it serves whole and those it sees a sample of, of the floor
+// it holds in sight.
 struct CellSets {
   std::vector<std::vector<char>> served, seen;
   std::vector<char> servable;  // some candidate serves the cell whole
 };
 
 CellSets cellSets(std::span<const CandidateService> services, std::span<const CaptureSight> sights,
-                  std::span<const FloorSample> samples, std::size_t cellCount) {
+                  const FloorInSight& inSight, std::span<const FloorSample> samples,
+                  std::size_t cellCount) {
   std::vector<int> perCell(cellCount, 0);
   for (const FloorSample& s : samples) ++perCell[s.cell];
   CellSets sets;
   sets.served.resize(services.size());
   sets.seen.resize(services.size());
   tbb::parallel_for(std::size_t{0}, services.size(), [&](std::size_t c) {
+    const std::size_t capture = services[c].capture;
     std::vector<int> count(cellCount, 0);
     for (std::uint32_t i : services[c].served) ++count[samples[i].cell];
-    sets.served[c].assign(cellCount, 0);
-    for (std::size_t cell = 0; cell < cellCount; ++cell)
-      sets.served[c][cell] = perCell[cell] > 0 && count[cell] == perCell[cell];
     sets.seen[c].assign(cellCount, 0);
-    for (std::uint32_t i : sights[services[c].capture].seen) sets.seen[c][samples[i].cell] = 1;
+    for (std::uint32_t i : sights[capture].seen) sets.seen[c][samples[i].cell] = 1;
+    sets.served[c].assign(cellCount, 0);
+    for (std::size_t cell = 0; cell < cellCount; ++cell) {
+      if (sets.seen[c][cell]) sets.seen[c][cell] = inSight.inSight(capture, cell);
+      sets.served[c][cell] =
+          sets.seen[c][cell] && perCell[cell] > 0 && count[cell] == perCell[cell];
+    }
   });
   sets.servable.assign(cellCount, 0);
   for (const std::vector<char>& served : sets.served)
@@ -43,13 +49,17 @@ struct Cover {
   const FloorColumns& columns;
   std::span<const CandidateService> services;
   std::span<const std::size_t> captureCells;
+  const FloorInSight& inSight;
   const SelectionOptions& options;
   std::vector<char> claimed;  // inside a chosen range or its gap
   ProbeSelection selection;
 
+  // Floor out of the candidate's sight ends a rectangle's growth as another range does: in
+  // the share a strip may hold of floor its probe does not serve, it would leak.
   FloorRect rectOf(std::size_t c, const std::function<bool(std::size_t)>& acceptable) const {
+    const std::size_t capture = services[c].capture;
     return growFloorRect(
-        columns, captureCells[services[c].capture], acceptable,
+        columns, captureCells[capture], acceptable,
         [&](std::size_t cell) { return claimed[cell] != 0; }, options.acceptedShare);
   }
 
@@ -59,11 +69,14 @@ struct Cover {
     return gain;
   }
 
+  // The claim reaches as far down as the inner range (a step under its floor): a range on a
+  // stair a step lower would otherwise overlap it (bloodprison: two ranges 0.3 m apart,
+  // one's plan inside the other's).
   void choose(std::size_t c, const FloorRect& rect) {
     selection.chosen.push_back(c);
     selection.ranges.push_back(rect);
-    columns.forEachIn(widened(rect, options.gapCells),
-                      [&](std::size_t cell) { claimed[cell] = 1; });
+    columns.forEachUnderInnerRange(widened(rect, options.gapCells),
+                                   [&](std::size_t cell) { claimed[cell] = 1; });
   }
 
   // Greedy with lazy gains: claims only grow, so a candidate's rectangle and gain only shrink,
@@ -145,8 +158,9 @@ FloorRect boundingUnion(const FloorRect& a, const FloorRect& b) {
 // accepted share) the floor its range would gain and keeping the band from every third range, is
 // dropped, the last taken (the smallest gain) first. Greedy order leaves such probes where the
 // first big range blocked a second one's growth (the L-room's corner, between its two arms).
-void dropAbsorbed(const FloorColumns& columns, const CellSets& sets, double acceptedShare,
-                  int gapCells, ProbeSelection& selection) {
+void dropAbsorbed(const FloorColumns& columns, const CellSets& sets,
+                  std::span<const CandidateService> services, const FloorInSight& inSight,
+                  double acceptedShare, int gapCells, ProbeSelection& selection) {
   for (std::size_t p = selection.chosen.size(); p-- > 0;) {
     for (std::size_t q = 0; q < selection.chosen.size(); ++q) {
       if (q == p || !sameStorey(selection.ranges[p], selection.ranges[q])) continue;
@@ -156,14 +170,17 @@ void dropAbsorbed(const FloorColumns& columns, const CellSets& sets, double acce
         clear = j == p || j == q || keepsGap(merged, selection.ranges[j], gapCells);
       if (!clear) continue;
       double gained = 0.0, served = 0.0;
+      bool allInSight = true;
       const std::vector<char>& servedByQ = sets.served[selection.chosen[q]];
+      const std::size_t captureOfQ = services[selection.chosen[q]].capture;
       columns.forEachIn(merged, [&](std::size_t cell) {
         if (selection.ranges[q].holds(columns.floor().cells[cell])) return;
         const double area = columns.floor().cells[cell].areaSquareMeters;
         gained += area;
         if (servedByQ[cell]) served += area;
+        allInSight = allInSight && inSight.inSight(captureOfQ, cell);
       });
-      if (served < acceptedShare * gained) continue;
+      if (served < acceptedShare * gained || !allInSight) continue;
       selection.ranges[q] = merged;
       selection.chosen.erase(selection.chosen.begin() + static_cast<std::ptrdiff_t>(p));
       selection.ranges.erase(selection.ranges.begin() + static_cast<std::ptrdiff_t>(p));
@@ -178,10 +195,9 @@ void dropAbsorbed(const FloorColumns& columns, const CellSets& sets, double acce
 // the layout. A box room with a few
 // props (the hangar) has floor near the props that no proxy serves whole; the cover's small
 // probes there were chosen on coarse candidates and do not deliver once built and blended.
-std::optional<ProbeSelection> oneProbeServesAsMuch(const FloorColumns& columns,
-                                                   const CellSets& sets,
-                                                   const ProbeSelection& cover, double slack,
-                                                   double acceptedShare) {
+std::optional<ProbeSelection> oneProbeServesAsMuch(
+    const FloorColumns& columns, const CellSets& sets, std::span<const CandidateService> services,
+    const FloorInSight& inSight, const ProbeSelection& cover, double slack, double acceptedShare) {
   const WalkableFloor& floor = columns.floor();
   if (cover.chosen.size() < 2 || floor.cells.empty()) return std::nullopt;
   FloorRect all{floor.cells[0].column, floor.cells[0].column, floor.cells[0].row,
@@ -213,6 +229,8 @@ std::optional<ProbeSelection> oneProbeServesAsMuch(const FloorColumns& columns,
   if (best == sets.served.size() || bestServed < coverServed - slack * area ||
       bestServed < acceptedShare * area)
     return std::nullopt;
+  for (std::size_t cell = 0; cell < floor.cells.size(); ++cell)
+    if (!inSight.inSight(services[best].capture, cell)) return std::nullopt;
   return ProbeSelection{{best}, {all}, {}};
 }
 
@@ -228,9 +246,21 @@ bool banded(const WalkableFloor& floor, std::size_t cell, int gapCells,
 
 // Floor that no range's band reaches (crumbs too small to be worth a probe, floor between
 // ranges wider than the band): the range on its storey that needs the least stretch takes it,
-// where the stretched range keeps the band from every other.
-void coverLeftovers(const WalkableFloor& floor, int gapCells, std::span<const char> keptCovered,
-                    std::vector<FloorRect>& ranges) {
+// where the stretched range keeps the band from every other and its probe holds in sight all
+// the floor it gains.
+void coverLeftovers(const FloorColumns& columns, std::span<const CandidateService> services,
+                    const FloorInSight& inSight, int gapCells, std::span<const char> keptCovered,
+                    ProbeSelection& selection) {
+  const WalkableFloor& floor = columns.floor();
+  std::vector<FloorRect>& ranges = selection.ranges;
+  const auto allInSight = [&](std::size_t i, const FloorRect& stretched) {
+    bool all = true;
+    const std::size_t capture = services[selection.chosen[i]].capture;
+    columns.forEachIn(stretched, [&](std::size_t cell) {
+      all = all && (ranges[i].holds(floor.cells[cell]) || inSight.inSight(capture, cell));
+    });
+    return all;
+  };
   for (std::size_t cell = 0; cell < floor.cells.size(); ++cell) {
     if (banded(floor, cell, gapCells, keptCovered, ranges)) continue;
     const FloorCell& at = floor.cells[cell];
@@ -246,7 +276,7 @@ void coverLeftovers(const WalkableFloor& floor, int gapCells, std::span<const ch
       bool clear = true;
       for (std::size_t j = 0; j < ranges.size() && clear; ++j)
         clear = j == i || keepsGap(stretched, ranges[j], gapCells);
-      if (!clear) continue;
+      if (!clear || !allInSight(i, stretched)) continue;
       ranges[i] = stretched;
       break;
     }
@@ -302,13 +332,14 @@ std::vector<FloorRect> fillsForTheRest(const FloorColumns& columns, int gapCells
 }  // namespace
 
 ProbeSelection selectProbes(std::span<const CandidateService> services,
-                            std::span<const CaptureSight> sights,
+                            std::span<const CaptureSight> sights, const FloorInSight& inSight,
                             std::span<const std::size_t> captureCells,
                             std::span<const FloorSample> samples, const WalkableFloor& floor,
                             const SelectionOptions& o, const KeptFloor& kept) {
   const FloorColumns columns(floor);
-  const CellSets sets = cellSets(services, sights, samples, floor.cells.size());
-  Cover cover{columns, services, captureCells, o, std::vector<char>(floor.cells.size(), 0), {}};
+  const CellSets sets = cellSets(services, sights, inSight, samples, floor.cells.size());
+  Cover cover{columns, services, captureCells, inSight, o, std::vector<char>(floor.cells.size(), 0),
+              {}};
   // Floor the kept probes already serve is worth nothing to a new probe, but a new range may
   // take it in on its way to the floor they fail (where it serves it too, as ranges grow only
   // over floor their candidate serves): closed, it would leave no room round the pillars.
@@ -330,13 +361,13 @@ ProbeSelection selectProbes(std::span<const CandidateService> services,
       [&](std::size_t c, std::size_t cell) { return sets.seen[c][cell] != 0; },
       [&](std::size_t c, std::size_t cell) { return sets.seen[c][cell] ? area(cell) : 0.0; },
       minGain);
-  dropAbsorbed(columns, sets, o.acceptedShare, o.gapCells, cover.selection);
+  dropAbsorbed(columns, sets, services, inSight, o.acceptedShare, o.gapCells, cover.selection);
   if (kept.served.empty()) {
-    if (const auto one =
-            oneProbeServesAsMuch(columns, sets, cover.selection, o.oneProbeSlack, o.acceptedShare))
+    if (const auto one = oneProbeServesAsMuch(columns, sets, services, inSight, cover.selection,
+                                              o.oneProbeSlack, o.acceptedShare))
       cover.selection = *one;
   }
-  coverLeftovers(floor, o.gapCells, kept.covered, cover.selection.ranges);
+  coverLeftovers(columns, services, inSight, o.gapCells, kept.covered, cover.selection);
   growIntoOwnBands(columns, sets, o.gapCells, kept.covered, cover.selection);
   cover.selection.fills =
       fillsForTheRest(columns, o.gapCells, kept.covered, cover.selection.ranges);

@@ -2,8 +2,9 @@
 // Which candidates become probes, and the floor each one's inner range holds (docs/layout.md).
 // Lagarde's blend gives a box's probe 100% inside its inner range, so the selection picks
 // candidates together with their ranges: rectangles of floor (floor_rectangles.h) grown from
-// each capture point over the floor its proxy serves within the tolerance, no two within the
-// blend band of each other. Greedy by area: each step takes the candidate whose rectangle holds
+// each capture point over the floor its proxy serves within the tolerance, never over floor out
+// of its sight (floor_in_sight.h: such floor would leak), no two within the blend band of each
+// other. Greedy by area: each step takes the candidate whose rectangle holds
 // the most floor it serves (ties to the lower index), until none gains `minGainSquareMeters`.
 // Floor no candidate serves goes to the candidates that see it, in the same rectangles. Then
 // the floor left outside every range and band goes, the same way, to the candidates that see
@@ -15,6 +16,7 @@
 #include "geometry/floor/walkable_floor.h"
 #include "geometry/layout/candidate_service.h"
 #include "geometry/layout/capture_sight.h"
+#include "geometry/layout/floor_in_sight.h"
 #include "geometry/layout/floor_rectangles.h"
 
 #include <cstddef>
@@ -55,9 +57,10 @@ struct KeptFloor {
 };
 
 // `sights[services[c].capture]` is what candidate c sees; `captureCells[services[c].capture]`
-// the floor cell under its capture point. `kept`: empty, or per floor cell as above.
+// the floor cell under its capture point; `inSight` which floor it holds in sight (a range
+// holds no other). `kept`: empty, or per floor cell as above.
 ProbeSelection selectProbes(std::span<const CandidateService> services,
-                            std::span<const CaptureSight> sights,
+                            std::span<const CaptureSight> sights, const FloorInSight& inSight,
                             std::span<const std::size_t> captureCells,
                             std::span<const FloorSample> samples, const WalkableFloor& floor,
                             const SelectionOptions& options, const KeptFloor& kept = {});

@@ -1,6 +1,7 @@
 #include "geometry/layout/uncovered_floor_fills.h"
 
 #include "core/blend/influence_factor.h"
+#include "geometry/layout/bands_in_sight.h"
 #include "geometry/layout/floor_rectangles.h"
 #include "geometry/layout/layout_candidates.h"
 #include "geometry/layout/layout_influence.h"
@@ -70,6 +71,7 @@ std::vector<FloorFill> fillsForUncoveredFloor(const LevelRayCaster& level,
     innerLo = glm::min(innerLo, capture - glm::dvec3(kCaptureMarginMeters));
     innerHi = glm::max(innerHi, capture + glm::dvec3(kCaptureMarginMeters));
     keepClearOfInnerRanges(innerLo, innerHi, capture, storeyFloor, others);
+    pullBandsIntoSight(level, floor, capture, gapMeters, innerLo, innerHi);
     fills.push_back({capture, influenceOfBounds(innerLo, innerHi, gapMeters)});
     others.push_back(fills.back().influence);
   }

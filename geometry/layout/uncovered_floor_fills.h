@@ -2,7 +2,8 @@
 // Floor the survey walks that the layout's coarser floor has no cell on: planks, gratings and
 // ledges narrower than the candidates' 0.5 m grid (darkzone: 0.1% of its floor, three strips of
 // grating, in no volume). Each group of such cells gets a probe of its own: the cells within a
-// gap of one another on one storey, its inner range over them, its band as every range's.
+// gap of one another on one storey, its inner range over them, its band as every range's
+// (kept to the floor in its probe's sight, bands_in_sight.h).
 
 #include "core/scene/influence_volume.h"
 #include "geometry/floor/walkable_floor.h"
