@@ -49,17 +49,15 @@ struct Cover {
   const FloorColumns& columns;
   std::span<const CandidateService> services;
   std::span<const std::size_t> captureCells;
-  const FloorInSight& inSight;
   const SelectionOptions& options;
   std::vector<char> claimed;  // inside a chosen range or its gap
   ProbeSelection selection;
 
-  // Floor out of the candidate's sight ends a rectangle's growth as another range does: in
-  // the share a strip may hold of floor its probe does not serve, it would leak.
+  // Floor out of the candidate's sight is not acceptable (cellSets): a strip may hold a tenth
+  // of it at most. Ending the growth there too gave the same layouts within a probe a map.
   FloorRect rectOf(std::size_t c, const std::function<bool(std::size_t)>& acceptable) const {
-    const std::size_t capture = services[c].capture;
     return growFloorRect(
-        columns, captureCells[capture], acceptable,
+        columns, captureCells[services[c].capture], acceptable,
         [&](std::size_t cell) { return claimed[cell] != 0; }, options.acceptedShare);
   }
 
@@ -338,8 +336,7 @@ ProbeSelection selectProbes(std::span<const CandidateService> services,
                             const SelectionOptions& o, const KeptFloor& kept) {
   const FloorColumns columns(floor);
   const CellSets sets = cellSets(services, sights, inSight, samples, floor.cells.size());
-  Cover cover{columns, services, captureCells, inSight, o, std::vector<char>(floor.cells.size(), 0),
-              {}};
+  Cover cover{columns, services, captureCells, o, std::vector<char>(floor.cells.size(), 0), {}};
   // Floor the kept probes already serve is worth nothing to a new probe, but a new range may
   // take it in on its way to the floor they fail (where it serves it too, as ranges grow only
   // over floor their candidate serves): closed, it would leave no room round the pillars.
