@@ -19,9 +19,7 @@ bool isFinite(glm::dvec3 v) {
 // exit point within that distance of E' (E' on the proxy's boundary) can be clipped, far enough
 // that projected coordinates stay well inside double precision.
 double nearPlaneMeters(const ConvexProxy& proxy, glm::dvec3 eye) {
-  double reach = 0.0;
-  for (const glm::dvec3& v : proxy.verticesMeters) reach = std::max(reach, glm::length(v - eye));
-  return std::max(1e-6 * reach, 1e-12);
+  return std::max(1e-6 * farthestCornerMeters(proxy, eye), 1e-12);
 }
 
 }  // namespace

@@ -36,6 +36,10 @@ inline constexpr int kReachDirections = 2048;
 double farthestExitMeters(const std::vector<ProxyPlane>& planes, glm::dvec3 fromMeters,
                           int directions = kReachDirections);
 
+// How far the proxy's farthest corner lies from a point (0 without corners): exact where
+// farthestExitMeters samples.
+double farthestCornerMeters(const ConvexProxy& proxy, glm::dvec3 fromMeters);
+
 // Direction i of farthestExitMeters' n (a Fibonacci sphere: even coverage, no randomness).
 glm::dvec3 reachDirection(int i, int directions);
 

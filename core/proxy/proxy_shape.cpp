@@ -58,6 +58,13 @@ double farthestExitMeters(const std::vector<ProxyPlane>& planes, glm::dvec3 from
   return farthest;
 }
 
+double farthestCornerMeters(const ConvexProxy& proxy, glm::dvec3 from) {
+  double farthest = 0.0;
+  for (const glm::dvec3& v : proxy.verticesMeters)
+    farthest = std::max(farthest, glm::length(v - from));
+  return farthest;
+}
+
 Method methodOf(const ProxyShape& shape) {
   struct Visitor {
     Method operator()(const InfiniteShape&) const { return Method::Infinite; }

@@ -4,6 +4,7 @@
 #include "geometry/layout/floor_rectangles.h"
 #include "geometry/layout/layout_influence.h"
 #include "geometry/raycast/room_in_sight.h"
+#include "geometry/survey/blended_error.h"
 
 #include <glm/vector_relational.hpp>
 
@@ -14,8 +15,6 @@
 namespace probeproxy {
 
 namespace {
-
-constexpr double kInsideLiftMeters = 0.05;  // as validate's leak rule: off the box's floor
 
 struct BandFloor {
   glm::dvec3 pointMeters;
@@ -46,7 +45,7 @@ void pullBandsIntoSight(const LevelRayCaster& level, const WalkableFloor& floor,
   std::vector<BandFloor> inBox;
   bool anyHidden = false;
   for (const FloorCell& cell : floor.cells) {
-    const glm::dvec3 p = cell.pointMeters + glm::dvec3(0, 0, kInsideLiftMeters);
+    const glm::dvec3 p = cell.pointMeters + glm::dvec3(0, 0, kBlendLiftMeters);
     if (glm::any(glm::lessThanEqual(p, outerLo)) || glm::any(glm::greaterThanEqual(p, outerHi)))
       continue;
     const bool hidden = !roomInSight(level, from, roomTargetsOver(level, cell.pointMeters));

@@ -152,6 +152,19 @@ FloorRect boundingUnion(const FloorRect& a, const FloorRect& b) {
   return u;
 }
 
+// Whether range i's probe holds in sight all the floor `grown` adds to its range.
+bool gainsOnlyFloorInSight(const FloorColumns& columns, std::span<const CandidateService> services,
+                           const FloorInSight& inSight, const ProbeSelection& selection,
+                           std::size_t i, const FloorRect& grown) {
+  bool all = true;
+  const std::size_t capture = services[selection.chosen[i]].capture;
+  columns.forEachIn(grown, [&](std::size_t cell) {
+    all = all && (selection.ranges[i].holds(columns.floor().cells[cell]) ||
+                  inSight.inSight(capture, cell));
+  });
+  return all;
+}
+
 // The refining pass: a probe whose whole range a neighbour can take over, serving (in the
 // accepted share) the floor its range would gain and keeping the band from every third range, is
 // dropped, the last taken (the smallest gain) first. Greedy order leaves such probes where the
@@ -168,17 +181,16 @@ void dropAbsorbed(const FloorColumns& columns, const CellSets& sets,
         clear = j == p || j == q || keepsGap(merged, selection.ranges[j], gapCells);
       if (!clear) continue;
       double gained = 0.0, served = 0.0;
-      bool allInSight = true;
       const std::vector<char>& servedByQ = sets.served[selection.chosen[q]];
-      const std::size_t captureOfQ = services[selection.chosen[q]].capture;
       columns.forEachIn(merged, [&](std::size_t cell) {
         if (selection.ranges[q].holds(columns.floor().cells[cell])) return;
         const double area = columns.floor().cells[cell].areaSquareMeters;
         gained += area;
         if (servedByQ[cell]) served += area;
-        allInSight = allInSight && inSight.inSight(captureOfQ, cell);
       });
-      if (served < acceptedShare * gained || !allInSight) continue;
+      if (served < acceptedShare * gained ||
+          !gainsOnlyFloorInSight(columns, services, inSight, selection, q, merged))
+        continue;
       selection.ranges[q] = merged;
       selection.chosen.erase(selection.chosen.begin() + static_cast<std::ptrdiff_t>(p));
       selection.ranges.erase(selection.ranges.begin() + static_cast<std::ptrdiff_t>(p));
@@ -251,14 +263,6 @@ void coverLeftovers(const FloorColumns& columns, std::span<const CandidateServic
                     ProbeSelection& selection) {
   const WalkableFloor& floor = columns.floor();
   std::vector<FloorRect>& ranges = selection.ranges;
-  const auto allInSight = [&](std::size_t i, const FloorRect& stretched) {
-    bool all = true;
-    const std::size_t capture = services[selection.chosen[i]].capture;
-    columns.forEachIn(stretched, [&](std::size_t cell) {
-      all = all && (ranges[i].holds(floor.cells[cell]) || inSight.inSight(capture, cell));
-    });
-    return all;
-  };
   for (std::size_t cell = 0; cell < floor.cells.size(); ++cell) {
     if (banded(floor, cell, gapCells, keptCovered, ranges)) continue;
     const FloorCell& at = floor.cells[cell];
@@ -274,7 +278,8 @@ void coverLeftovers(const FloorColumns& columns, std::span<const CandidateServic
       bool clear = true;
       for (std::size_t j = 0; j < ranges.size() && clear; ++j)
         clear = j == i || keepsGap(stretched, ranges[j], gapCells);
-      if (!clear || !allInSight(i, stretched)) continue;
+      if (!clear || !gainsOnlyFloorInSight(columns, services, inSight, selection, i, stretched))
+        continue;
       ranges[i] = stretched;
       break;
     }

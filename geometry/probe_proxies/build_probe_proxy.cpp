@@ -12,8 +12,6 @@
 #include "geometry/probe_proxies/simplify_hull.h"
 #include "geometry/probe_proxies/stopwatch.h"
 
-#include <glm/geometric.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -38,13 +36,6 @@ void measureOnAllSurfaces(ProbeProxyBuild& build, glm::dvec3 capture,
     if (i == build.kept || c.origin != CandidateOrigin::Simplified)
       c.errorAllSurfaces = evaluateShape(c.shape, capture, all);
   }
-}
-
-double farthestCornerMeters(const ConvexProxy& convex, glm::dvec3 from) {
-  double farthest = 0.0;
-  for (const glm::dvec3& v : convex.verticesMeters)
-    farthest = std::max(farthest, glm::length(v - from));
-  return farthest;
 }
 
 }  // namespace

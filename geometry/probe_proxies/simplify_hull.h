@@ -5,8 +5,8 @@
 // (geometry/tune/greedy_plane_removal.h). One `convex_<planes>` candidate per plane count.
 
 #include "core/proxy/proxy_candidate.h"
-#include "geometry/probe_proxies/probe_view.h"
 #include "geometry/evaluation/reflection_sample.h"
+#include "geometry/probe_proxies/probe_view.h"
 
 #include <span>
 #include <vector>

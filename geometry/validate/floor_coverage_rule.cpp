@@ -1,6 +1,7 @@
 // floor_not_covered: walkable floor that no influence volume reaches gets no local reflection
 // at all (the sky or a global cubemap shows through).
 
+#include "geometry/survey/blended_error.h"
 #include "geometry/validate/validation_rules.h"
 
 #include <glm/geometric.hpp>
@@ -10,19 +11,13 @@
 
 namespace probeproxy {
 
-namespace {
-
-constexpr double kInsideLiftMeters = 0.05;  // floor points sit on the volumes' boundary
-
-}  // namespace
-
 void checkFloorCoverage(const Scene& scene, const std::vector<FloorCell>& floor,
                         const ValidateOptions& options, std::vector<ValidationFinding>& out) {
   if (scene.probes.empty()) return;
   double uncovered = 0.0;
   std::optional<glm::dvec3> example;
   for (const FloorCell& f : floor) {
-    const glm::dvec3 p = f.pointMeters + glm::dvec3(0, 0, kInsideLiftMeters);
+    const glm::dvec3 p = f.pointMeters + glm::dvec3(0, 0, kBlendLiftMeters);
     bool covered = false;
     for (const Probe& probe : scene.probes)
       covered = covered || insideInfluence(probe.influence, p);

@@ -6,17 +6,12 @@
 
 #include "core/blend/influence_factor.h"
 #include "geometry/raycast/room_in_sight.h"
+#include "geometry/survey/blended_error.h"
 #include "geometry/validate/validation_rules.h"
 
 #include <cstdio>
 
 namespace probeproxy {
-
-namespace {
-
-constexpr double kInsideLiftMeters = 0.05;  // floor points sit on the volume's boundary
-
-}  // namespace
 
 void checkInfluenceLeak(const LevelRayCaster& level, const Probe& probe,
                         const std::vector<FloorCell>& floor, const ValidateOptions& options,
@@ -26,7 +21,7 @@ void checkInfluenceLeak(const LevelRayCaster& level, const Probe& probe,
   glm::dvec3 firstHidden(0.0);
   for (const FloorCell& f : floor) {
     const double factor =
-        influenceFactor(probe.influence, f.pointMeters + glm::dvec3(0, 0, kInsideLiftMeters));
+        influenceFactor(probe.influence, f.pointMeters + glm::dvec3(0, 0, kBlendLiftMeters));
     if (factor <= 0.0) continue;
     total += factor;
     if (roomInSight(level, from, roomTargetsOver(level, f.pointMeters))) continue;

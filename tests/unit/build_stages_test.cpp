@@ -161,11 +161,13 @@ TEST(BuildStages, SelectionKeepsTheFewestPlanesWithinToleranceElseTheMostAccurat
 // (about 4.5 degrees apart) leaves it 65 m out.
 ConvexProxy wedge() {
   const glm::dvec3 slant = glm::normalize(glm::dvec3(-5, -2000, 0));  // through (6,-2), (-1994,3)
-  return ConvexProxy{{{{1, 0, 0}, kHi.x},
-                      {{0, 1, 0}, kHi.y},
-                      {{0, 0, 1}, kHi.z},
-                      {{0, 0, -1}, -kLo.z},
-                      {slant, glm::dot(slant, glm::dvec3(kHi.x, kLo.y, 0))}}};
+  ConvexProxy wedge;
+  wedge.planes = {{{1, 0, 0}, kHi.x},
+                  {{0, 1, 0}, kHi.y},
+                  {{0, 0, 1}, kHi.z},
+                  {{0, 0, -1}, -kLo.z},
+                  {slant, glm::dot(slant, glm::dvec3(kHi.x, kLo.y, 0))}};
+  return wedge;
 }
 
 TEST(BuildStages, AStepWhoseCornersReachFarIsDroppedWithTheStepsAfterIt) {
