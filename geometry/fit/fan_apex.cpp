@@ -7,6 +7,29 @@
 
 namespace probeproxy {
 
+namespace {
+
+// Folds shallower than this times the facet's size are rounding of a planar facet.
+constexpr double kFoldToleranceRelative = 1e-9;
+
+// How far the fan from `apex` folds inwards at worst: the largest distance of a fan triangle's
+// next corner outside that triangle's plane (0 or less for a fan that only folds outwards).
+double deepestInwardFold(std::span<const glm::dvec3> corners, std::size_t apex) {
+  const std::size_t n = corners.size();
+  const glm::dvec3 a = corners[apex];
+  double deepest = -std::numeric_limits<double>::infinity();
+  for (std::size_t j = 1; j + 2 < n; ++j) {
+    const glm::dvec3 b = corners[(apex + j) % n], c = corners[(apex + j + 1) % n];
+    const glm::dvec3 normal = glm::cross(b - a, c - a);  // outwards: counter-clockwise
+    const double length = glm::length(normal);
+    if (length == 0.0) continue;
+    deepest = std::max(deepest, glm::dot(normal / length, corners[(apex + j + 2) % n] - a));
+  }
+  return deepest;
+}
+
+}  // namespace
+
 double smallestHeight(glm::dvec3 a, glm::dvec3 b, glm::dvec3 c) {
   const double longest = std::max({glm::distance(a, b), glm::distance(b, c), glm::distance(c, a)});
   return glm::length(glm::cross(b - a, c - a)) / longest;
@@ -14,15 +37,20 @@ double smallestHeight(glm::dvec3 a, glm::dvec3 b, glm::dvec3 c) {
 
 std::size_t fanApex(std::span<const glm::dvec3> corners) {
   const std::size_t n = corners.size();
+  double size = 0.0;
+  for (std::size_t i = 1; i < n; ++i) size = std::max(size, glm::distance(corners[0], corners[i]));
+  const double foldTolerance = kFoldToleranceRelative * size;
   std::size_t best = 0;
-  double bestHeight = -1.0;
+  double bestHeight = -1.0, bestFold = std::numeric_limits<double>::infinity();
   for (std::size_t apex = 0; apex < n && n > 3; ++apex) {
     double lowest = std::numeric_limits<double>::infinity();
     for (std::size_t j = 1; j + 1 < n; ++j) {
       lowest = std::min(lowest, smallestHeight(corners[apex], corners[(apex + j) % n],
                                                corners[(apex + j + 1) % n]));
     }
-    if (lowest > bestHeight) bestHeight = lowest, best = apex;
+    const double fold = std::max(deepestInwardFold(corners, apex), foldTolerance);
+    if (fold < bestFold || (fold == bestFold && lowest > bestHeight))
+      bestFold = fold, bestHeight = lowest, best = apex;
   }
   return best;
 }

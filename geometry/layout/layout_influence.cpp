@@ -31,6 +31,15 @@ BoxInfluence boxAround(glm::dvec3 lo, glm::dvec3 hi, double bandMeters) {
   return box;
 }
 
+// The inner range of one of the layout's own volumes (an axis-aligned box).
+bool axisAlignedInnerRange(const InfluenceVolume& volume, glm::dvec3& lo, glm::dvec3& hi) {
+  const BoxInfluence* box = std::get_if<BoxInfluence>(&volume);
+  if (box == nullptr || box->worldFromBox != glm::dquat(1, 0, 0, 0)) return false;
+  lo = box->centerMeters - box->innerHalfExtentsMeters;
+  hi = box->centerMeters + box->innerHalfExtentsMeters;
+  return true;
+}
+
 }  // namespace
 
 BoxInfluence influenceAroundFloor(const WalkableFloor& floor, std::span<const std::size_t> cells,
@@ -55,12 +64,11 @@ BoxInfluence influenceOfBounds(glm::dvec3 innerLoMeters, glm::dvec3 innerHiMeter
 }
 
 void keepClearOfInnerRanges(glm::dvec3& lo, glm::dvec3& hi, glm::dvec3& captureMeters,
-                            double floorMeters, std::span<const InfluenceVolume> others) {
+                            double floorMeters, std::span<const InfluenceVolume> others,
+                            double gapMeters) {
   for (const InfluenceVolume& other : others) {
-    const BoxInfluence* box = std::get_if<BoxInfluence>(&other);
-    if (box == nullptr || box->worldFromBox != glm::dquat(1, 0, 0, 0)) continue;
-    const glm::dvec3 otherLo = box->centerMeters - box->innerHalfExtentsMeters;
-    const glm::dvec3 otherHi = box->centerMeters + box->innerHalfExtentsMeters;
+    glm::dvec3 otherLo, otherHi;
+    if (!axisAlignedInnerRange(other, otherLo, otherHi)) continue;
     if (glm::any(glm::greaterThanEqual(lo, otherHi)) || glm::any(glm::lessThanEqual(hi, otherLo)))
       continue;
     if (otherLo.z > floorMeters + kMinAirOverFloorMeters)
@@ -70,6 +78,24 @@ void keepClearOfInnerRanges(glm::dvec3& lo, glm::dvec3& hi, glm::dvec3& captureM
   }
   if (captureMeters.z > hi.z - kCaptureMarginMeters)
     captureMeters.z = floorMeters + 0.5 * (hi.z - floorMeters);
+  // After the height cuts: a range cut under a platform no longer meets it.
+  for (const InfluenceVolume& other : others) {
+    glm::dvec3 otherLo, otherHi;
+    if (!axisAlignedInnerRange(other, otherLo, otherHi) || lo.z >= otherHi.z || hi.z <= otherLo.z)
+      continue;
+    // How far apart in plan, per axis, and on which side of this range the other lies.
+    const glm::dvec2 below = glm::dvec2(lo) - glm::dvec2(otherHi);
+    const glm::dvec2 above = glm::dvec2(otherLo) - glm::dvec2(hi);
+    const glm::dvec2 apart = glm::max(below, above);
+    const int axis = apart.x >= apart.y ? 0 : 1;
+    // Overlapping in plan (one spans the other's floor) or already a gap apart on some axis.
+    if (apart[axis] < 0.0 || apart[axis] >= gapMeters) continue;
+    const double missing = gapMeters - apart[axis];
+    if (above[axis] >= below[axis])
+      hi[axis] = std::max(hi[axis] - missing, captureMeters[axis] + kCaptureMarginMeters);
+    else
+      lo[axis] = std::min(lo[axis] + missing, captureMeters[axis] - kCaptureMarginMeters);
+  }
 }
 
 }  // namespace probeproxy

@@ -43,8 +43,15 @@ BoxInfluence influenceAroundFloor(const WalkableFloor& floor, std::span<const st
 // The capture point moves into what is left (half way up it, at most). Where the other range
 // spans the floor itself (or starts less than 5 cm over it) nothing is cut. Axis-aligned boxes
 // only (a layout's own volumes).
+//
+// A range beside another in plan whose height overlaps it (floors a ledge apart, which the
+// selection's gap between ranges of one height window does not see) also keeps `gapMeters`
+// from it across the floor: inner ranges that touch hand the whole weight from one probe to the
+// other at the touching face (validate's weight_jump). Its near side comes back, never past its
+// capture point; the floor it gives up stays in its band.
 void keepClearOfInnerRanges(glm::dvec3& lo, glm::dvec3& hi, glm::dvec3& captureMeters,
-                            double floorMeters, std::span<const InfluenceVolume> others);
+                            double floorMeters, std::span<const InfluenceVolume> others,
+                            double gapMeters);
 
 // The box whose inner range is (lo, hi) (floorRectBounds) and whose outer range reaches
 // kOuterBandOverGap x `gapMeters` past it across the floor (kVerticalBandMeters up and down).

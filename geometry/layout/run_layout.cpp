@@ -169,7 +169,7 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
   const auto add = [&](const FloorRect& rect, glm::dvec3 capture, double fitMeters) {
     glm::dvec3 lo, hi;
     floorRectBounds(floor, rect, capture, lo, hi);
-    keepClearOfInnerRanges(lo, hi, capture, rect.floorMeters, volumes);
+    keepClearOfInnerRanges(lo, hi, capture, rect.floorMeters, volumes, o.blendBandMeters);
     pullBandsIntoSight(level, walked, capture, o.blendBandMeters, lo, hi);
     r.probes.push_back({capture, influenceOfBounds(lo, hi, o.blendBandMeters), fitMeters});
     volumes.push_back(r.probes.back().influence);

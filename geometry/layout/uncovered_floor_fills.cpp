@@ -70,7 +70,7 @@ std::vector<FloorFill> fillsForUncoveredFloor(const LevelRayCaster& level,
     glm::dvec3 innerHi(hi.x + half, hi.y + half, hi.z + kInfluenceHeadRoomMeters);
     innerLo = glm::min(innerLo, capture - glm::dvec3(kCaptureMarginMeters));
     innerHi = glm::max(innerHi, capture + glm::dvec3(kCaptureMarginMeters));
-    keepClearOfInnerRanges(innerLo, innerHi, capture, storeyFloor, others);
+    keepClearOfInnerRanges(innerLo, innerHi, capture, storeyFloor, others, gapMeters);
     pullBandsIntoSight(level, floor, capture, gapMeters, innerLo, innerHi);
     fills.push_back({capture, influenceOfBounds(innerLo, innerHi, gapMeters)});
     others.push_back(fills.back().influence);

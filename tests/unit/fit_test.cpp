@@ -552,6 +552,26 @@ TEST(FanApex, CornersInLineAreNotFannedFromTheirEnds) {
   EXPECT_EQ(fanApex(std::vector<glm::dvec3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}), 0u);
 }
 
+TEST(FanApex, ANotQuitePlanarFacetIsFannedAcrossTheDiagonalThatFoldsOutwards) {
+  // A square facet facing +z (counter-clockwise seen from above) with one corner 1 cm off its
+  // plane, as merging corners within rounding leaves one. Raised, the fan must run along the
+  // ridge 0-2; lowered, along 1-3: across the other diagonal it folds inwards.
+  const auto facet = [](double offPlane) {
+    return std::vector<glm::dvec3>{{0, 0, 0}, {1, 0, 0}, {1, 1, offPlane}, {0, 1, 0}};
+  };
+  const auto inwardFolds = [](const std::vector<glm::dvec3>& f, std::size_t apex) {
+    const glm::dvec3 a = f[apex], b = f[(apex + 1) % 4], c = f[(apex + 2) % 4];
+    return glm::dot(glm::cross(b - a, c - a), f[(apex + 3) % 4] - a) > 0.0;
+  };
+  for (double offPlane : {0.01, -0.01}) {
+    const std::vector<glm::dvec3> f = facet(offPlane);
+    const std::size_t apex = fanApex(f);
+    EXPECT_FALSE(inwardFolds(f, apex)) << "corner 2 off its plane by " << offPlane;
+    EXPECT_TRUE(inwardFolds(f, (apex + 1) % 4)) << "the other diagonal folds in";
+  }
+  EXPECT_EQ(fanApex(facet(0.0)), 0u) << "planar: the first corner, as before";
+}
+
 TEST(PolytopeFromPlanes, CornersWhereManyPlanesMeetHaveTheSameBitsOnEveryThread) {
   // Six cones of 32 planes each, with their apexes at +-x, +-y, +-z and the interior point at
   // the origin: the dual point n / dot(n, apex) of every plane through the apex at +z has

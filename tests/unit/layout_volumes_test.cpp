@@ -2,6 +2,7 @@
 // inner ranges (docs/layout.md).
 
 #include "core/blend/influence_factor.h"
+#include "core/blend/weight_continuity.h"
 #include "geometry/builtin/box_room.h"
 #include "geometry/floor/walkable_floor.h"
 #include "geometry/layout/layout_influence.h"
@@ -34,7 +35,7 @@ TEST(KeepClearOfInnerRanges, APitFillStopsUnderTheRangeOverIt) {
   // A range over a 10 x 10 m floor at z 0 whose box spans a pit 2 m deep at [2, 4]^2.
   const std::vector<InfluenceVolume> range{influenceOfBounds({0, 0, -0.5}, {10, 10, 2.5}, 1.0)};
   glm::dvec3 lo{2, 2, -2.5}, hi{4, 4, 0.5}, capture{3, 3, -0.4};
-  keepClearOfInnerRanges(lo, hi, capture, -2.0, range);
+  keepClearOfInnerRanges(lo, hi, capture, -2.0, range, 1.0);
   EXPECT_NEAR(hi.z, -0.5, 2e-3);
   EXPECT_LT(hi.z, -0.5);
   EXPECT_DOUBLE_EQ(lo.z, -2.5);
@@ -46,7 +47,7 @@ TEST(KeepClearOfInnerRanges, AFillOnARangesOwnFloorIsNotCut) {
   // The other range spans the fill's floor: cutting it would leave the floor outside both.
   const std::vector<InfluenceVolume> range{influenceOfBounds({0, 0, -0.5}, {10, 10, 2.5}, 1.0)};
   glm::dvec3 lo{2, 2, -0.3}, hi{4, 4, 2.7}, capture{3, 3, 1.8};
-  keepClearOfInnerRanges(lo, hi, capture, 0.2, range);
+  keepClearOfInnerRanges(lo, hi, capture, 0.2, range, 1.0);
   EXPECT_DOUBLE_EQ(lo.z, -0.3);
   EXPECT_DOUBLE_EQ(hi.z, 2.7);
   EXPECT_DOUBLE_EQ(capture.z, 1.8);
@@ -57,14 +58,47 @@ TEST(KeepClearOfInnerRanges, ARangeStartingJustOverTheFloorIsNotCut) {
   // this range would keep no air over its floor and its capture point would sit on the floor.
   const std::vector<InfluenceVolume> platform{influenceOfBounds({0, 0, 5.5}, {10, 10, 8.5}, 1.0)};
   glm::dvec3 lo{2, 2, 5.0}, hi{4, 4, 8.0}, capture{3, 3, 7.1};
-  keepClearOfInnerRanges(lo, hi, capture, 5.5 - 1e-4, platform);
+  keepClearOfInnerRanges(lo, hi, capture, 5.5 - 1e-4, platform, 1.0);
   EXPECT_DOUBLE_EQ(hi.z, 8.0);
   EXPECT_DOUBLE_EQ(capture.z, 7.1);
   // 8 cm of air is enough (skyway): cut, the capture point half way up it.
   glm::dvec3 lo2{2, 2, 4.92}, hi2{4, 4, 7.92}, capture2{3, 3, 7.02};
-  keepClearOfInnerRanges(lo2, hi2, capture2, 5.42, platform);
+  keepClearOfInnerRanges(lo2, hi2, capture2, 5.42, platform, 1.0);
   EXPECT_NEAR(hi2.z, 5.5, 2e-3);
   EXPECT_NEAR(capture2.z, 5.46, 1e-3);
+}
+
+TEST(KeepClearOfInnerRanges, ARangeOnALedgeBesideAnotherKeepsTheGapInPlan) {
+  // A range over floor at z 0, x 0..5, and one on a ledge 0.75 m up, x 5..10, that reached to
+  // it (downer): their inner ranges touched at x 5 over the same heights, and the weight of
+  // either probe went from 1 to 0 there.
+  const InfluenceVolume low = influenceOfBounds({0, 0, -0.5}, {5, 10, 2.5}, 1.0);
+  const glm::dvec3 ledgeLo{5, 0, 0.25}, ledgeHi{10, 10, 3.25};
+  glm::dvec3 lo = ledgeLo, hi = ledgeHi, capture{8, 5, 2.35};
+  keepClearOfInnerRanges(lo, hi, capture, 0.75, std::span(&low, 1), 1.0);
+  EXPECT_DOUBLE_EQ(lo.x, 6.0) << "one gap from the other range";
+  EXPECT_EQ(hi, ledgeHi);
+  EXPECT_EQ(glm::dvec2(lo.y, lo.z), glm::dvec2(ledgeLo.y, ledgeLo.z));
+  EXPECT_EQ(capture, glm::dvec3(8, 5, 2.35));
+
+  // What validate's weight_jump measures, at the capture height: over 1 per cm before, under
+  // its limit of 0.02 per cm after.
+  const auto largestJumpPerCm = [&](glm::dvec3 ledgeInnerLo) {
+    const std::vector<InfluenceVolume> volumes{low, influenceOfBounds(ledgeInnerLo, hi, 1.0)};
+    WeightGrid grid = gridOverVolumes(volumes, 2.35, 0.02);
+    return measureWeightContinuity(volumes, grid).largestJump / 2.0;
+  };
+  EXPECT_GT(largestJumpPerCm(ledgeLo), 0.4);
+  EXPECT_LT(largestJumpPerCm(lo), 0.02);
+  // The floor it gave up stays in its band.
+  EXPECT_TRUE(insideInfluence(influenceOfBounds(lo, hi, 1.0), {5.01, 5, 0.8}));
+}
+
+TEST(KeepClearOfInnerRanges, ARangeACaptureMarginFromTheOtherComesBackOnlyToItsCapture) {
+  const InfluenceVolume other = influenceOfBounds({0, 0, -0.5}, {5, 10, 2.5}, 1.0);
+  glm::dvec3 lo{5.2, 0, -0.5}, hi{9, 10, 2.5}, capture{5.6, 5, 1.6};
+  keepClearOfInnerRanges(lo, hi, capture, 0.0, std::span(&other, 1), 1.0);
+  EXPECT_DOUBLE_EQ(lo.x, 5.6 - kCaptureMarginMeters) << "its capture point stays inside";
 }
 
 TEST(FillsForUncoveredFloor, FloorBeyondEveryBandGetsOneProbeAndIsThenCovered) {
