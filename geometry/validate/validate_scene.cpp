@@ -80,7 +80,7 @@ std::vector<ValidationFinding> validateScene(const Scene& scene, const LevelRayC
       findings.insert(findings.end(), leak.begin(), leak.end());
     if (cameras && leak.empty()) checkReflectedCameras(level, probe, *authored, options, findings);
   }
-  if (options.measures("too_many_overlaps")) checkOverlaps(scene, options, findings);
+  if (options.measures("too_many_overlaps")) checkOverlaps(scene, level, options, findings);
   // Overlapping inner ranges make the weights jump where one range ends (both claim 100%):
   // that is one problem, reported once.
   std::vector<ValidationFinding> inner;

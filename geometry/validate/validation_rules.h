@@ -46,7 +46,7 @@ void checkReflectedCameras(const LevelRayCaster& level, const Probe& probe,
                            std::vector<ValidationFinding>& out);
 
 // Scene-wide.
-void checkOverlaps(const Scene& scene, const ValidateOptions& options,
+void checkOverlaps(const Scene& scene, const LevelRayCaster& level, const ValidateOptions& options,
                    std::vector<ValidationFinding>& out);
 void checkInnerRanges(const Scene& scene, const ValidateOptions& options,
                       std::vector<ValidationFinding>& out);

@@ -2,6 +2,7 @@
 // more is a probe whose weight can pop in or out there), and inner ranges that overlap (two
 // probes that each claim 100% of the same space).
 
+#include "geometry/raycast/open_space.h"
 #include "geometry/validate/validation_rules.h"
 
 #include <glm/common.hpp>
@@ -56,7 +57,7 @@ void forEachPoint(const Grid& grid, F&& f) {
 
 }  // namespace
 
-void checkOverlaps(const Scene& scene, const ValidateOptions& options,
+void checkOverlaps(const Scene& scene, const LevelRayCaster& level, const ValidateOptions& options,
                    std::vector<ValidationFinding>& out) {
   if (static_cast<int>(scene.probes.size()) <= options.maxOverlap) return;
   glm::dvec3 lo(INFINITY), hi(-INFINITY);
@@ -65,13 +66,30 @@ void checkOverlaps(const Scene& scene, const ValidateOptions& options,
     influenceBounds(probe.influence, a, b);
     lo = glm::min(lo, a), hi = glm::max(hi, b);
   }
-  int worst = 0;
-  glm::dvec3 worstPoint(0.0);
-  forEachPoint(makeGrid(lo, hi, options), [&](glm::dvec3 p) {
+  // Points over the limit where the blend can pop, then only those in the open. Inside an
+  // inner range one probe takes 100% however many volumes overlap there (seed 000): none
+  // drops out. Inside a wall or a floor slab, where volumes meet as they reach past their
+  // floor, nothing is shaded and no camera goes.
+  std::vector<glm::dvec3> over;
+  std::vector<int> counts;
+  const Grid grid = makeGrid(lo, hi, options);
+  forEachPoint(grid, [&](glm::dvec3 p) {
     int count = 0;
-    for (const Probe& probe : scene.probes) count += insideInfluence(probe.influence, p) ? 1 : 0;
-    if (count > worst) worst = count, worstPoint = p;
+    for (const Probe& probe : scene.probes) {
+      if (insideInnerRange(probe.influence, p)) return;
+      count += insideInfluence(probe.influence, p) ? 1 : 0;
+    }
+    if (count > options.maxOverlap) over.push_back(p), counts.push_back(count);
   });
+  const std::vector<VerticalView> views = lookUpAndDown(level, over);
+  int worst = 0;
+  std::size_t open = 0;
+  glm::dvec3 worstPoint(0.0);
+  for (std::size_t i = 0; i < over.size(); ++i) {
+    if (views[i].insideSolid) continue;
+    ++open;
+    if (counts[i] > worst) worst = counts[i], worstPoint = over[i];
+  }
   if (worst <= options.maxOverlap) return;
   std::string names;
   for (const Probe& probe : scene.probes) {
@@ -81,9 +99,13 @@ void checkOverlaps(const Scene& scene, const ValidateOptions& options,
   std::string first;
   for (const Probe& probe : scene.probes)
     if (first.empty() && insideInfluence(probe.influence, worstPoint)) first = probe.name;
+  char extent[64];
+  std::snprintf(extent, sizeof extent, " (%.2f m^3 in all)",
+                static_cast<double>(open) * grid.cellVolume());
   std::string message = std::to_string(worst) + " influence volumes overlap at ";
   message += formatPoint(worstPoint) + " (" + names + "), more than " +
-             std::to_string(options.maxOverlap) + ": lighting pops where a probe drops out";
+             std::to_string(options.maxOverlap) + extent +
+             ": lighting pops where a probe drops out";
   out.push_back({first, "too_many_overlaps", "warning", static_cast<double>(worst),
                  static_cast<double>(options.maxOverlap), std::move(message),
                  "shrink the influence volumes so that at most " +

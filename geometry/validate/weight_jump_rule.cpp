@@ -3,12 +3,11 @@
 // height, over points at most head room above a floor of the level (volumes reach into walls,
 // where nobody stands, and over pits, where a camera only falls), and scaled to a change per
 // centimetre so the grid spacing does not move the limit.
-// A point under the back of a floor is inside a solid block, not over a floor: Quake 3's
-// compiler drops a block's faces that rest on the floor, so from inside it the floor below is
-// in plain view (basement: a 6 m block under the upper storey, whose neighbours' bands met in
-// it).
+// Points inside a solid block are not over a floor even where its bottom face is missing
+// (geometry/raycast/open_space.h; basement: two bands met inside a 6 m block).
 
 #include "core/blend/weight_continuity.h"
+#include "geometry/raycast/open_space.h"
 #include "geometry/validate/validation_rules.h"
 
 #include <cmath>
@@ -28,20 +27,9 @@ void checkWeightJumps(const Scene& scene, const LevelRayCaster& level,
   }
   const ReachableMask aboveFloor = [&](std::span<const glm::dvec3> points,
                                        std::span<char> reachable) {
-    std::vector<Ray> rays(2 * points.size());
-    std::vector<RayHit> hits(rays.size());
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      rays[2 * i] = {points[i], {0, 0, -1}};
-      rays[2 * i + 1] = {points[i], {0, 0, 1}};
-    }
-    level.firstHits(rays, hits, true);
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      const RayHit& down = hits[2 * i];
-      const RayHit& up = hits[2 * i + 1];
-      const bool underBackOfFloor = up.hit() && up.geometricNormal.z > 0.5f;
-      reachable[i] = down.hit() && down.geometricNormal.z > 0.5f &&
-                     down.t <= options.weightJumpHeadRoomMeters && !underBackOfFloor;
-    }
+    const std::vector<VerticalView> views = lookUpAndDown(level, points);
+    for (std::size_t i = 0; i < points.size(); ++i)
+      reachable[i] = views[i].floorBelowMeters <= options.weightJumpHeadRoomMeters;
   };
   WeightContinuity worst;
   double worstPerCm = 0.0, worstSpacing = 0.0;

@@ -1,0 +1,101 @@
+// validate's weight_jump and too_many_overlaps count only where a camera can be or a surface is
+// shaded: not inside a solid block, even one whose bottom face the map compiler dropped
+// (geometry/raycast/open_space.h); weight_jump also only within head room over a floor.
+
+#include "geometry/builtin/box_room.h"
+#include "geometry/layout/layout_influence.h"
+#include "geometry/raycast/open_space.h"
+#include "geometry/validate/validation_rules.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace probeproxy {
+namespace {
+
+// A 10 x 6 x 3 m room with a solid block 2 m high across it at x 4..6, wound outwards,
+// without its bottom face (Quake 3's compiler drops the faces a block rests on).
+LevelMesh roomWithBottomlessBlock() {
+  LevelMesh level = boxRoom({0, 0, 0}, {10, 6, 3});
+  LevelMesh block = boxRoom({4, 0, 0}, {6, 6, 2}, "block");
+  for (glm::uvec3& t : block.triangles) std::swap(t.y, t.z);
+  std::erase_if(block.triangles, [&](const glm::uvec3& t) {
+    return block.positionsMeters[t.x].z == 0.0f && block.positionsMeters[t.y].z == 0.0f &&
+           block.positionsMeters[t.z].z == 0.0f;
+  });
+  block.parts[0].triangleCount = static_cast<std::uint32_t>(block.triangles.size());
+  appendLevelMesh(level, block);
+  return level;
+}
+
+Probe boxProbe(const std::string& name, glm::dvec3 innerLo, glm::dvec3 innerHi) {
+  Probe probe;
+  probe.name = name;
+  probe.captureMeters = 0.5 * (innerLo + innerHi);
+  probe.influence = influenceOfBounds(innerLo, innerHi, 1.0);  // bands 1.5 m
+  return probe;
+}
+
+TEST(OpenSpace, InsideABottomlessBlockIsSolidAndOverItsTopIsOverAFloor) {
+  const LevelRayCaster level(roomWithBottomlessBlock());
+  const std::vector<glm::dvec3> points{{2, 3, 1.6}, {5, 3, 1.0}, {5, 3, 2.5}};
+  const std::vector<VerticalView> views = lookUpAndDown(level, points);
+  EXPECT_FALSE(views[0].insideSolid);
+  EXPECT_FLOAT_EQ(views[0].floorBelowMeters, 1.6f);
+  EXPECT_TRUE(views[1].insideSolid) << "the floor below is in plain view, yet it is solid";
+  EXPECT_FALSE(views[2].insideSolid);
+  EXPECT_FLOAT_EQ(views[2].floorBelowMeters, 0.5f) << "the block's top is a floor";
+}
+
+std::vector<ValidationFinding> weightJumps(const LevelMesh& mesh) {
+  // Two probes whose bands meet, and only touch, at x = 5.
+  Scene scene;
+  scene.probes = {boxProbe("west", {0, 0, -0.5}, {3.5, 6, 2.5}),
+                  boxProbe("east", {6.5, 0, -0.5}, {10, 6, 2.5})};
+  const LevelRayCaster level(mesh);
+  ValidateOptions options;
+  options.weightGridMeters = 0.04;
+  std::vector<ValidationFinding> out;
+  checkWeightJumps(scene, level, options, out);
+  return out;
+}
+
+TEST(WeightJumpRule, BandsMeetingOverFloorJumpAndInsideABottomlessBlockOrHighOverAPitDoNot) {
+  const std::vector<ValidationFinding> open = weightJumps(boxRoom({0, 0, 0}, {10, 6, 3}));
+  ASSERT_EQ(open.size(), 1u);
+  EXPECT_EQ(open[0].rule, "weight_jump");
+  EXPECT_GT(open[0].value, 0.2);
+  EXPECT_TRUE(weightJumps(roomWithBottomlessBlock()).empty());
+  // Nor in the air 5 m over the floor of a pit, where a camera only falls.
+  EXPECT_TRUE(weightJumps(boxRoom({0, 0, -4}, {10, 6, 3})).empty());
+}
+
+std::vector<ValidationFinding> overlaps(const LevelMesh& mesh, double xFrom) {
+  // Five volumes over x xFrom..xFrom + 3, their inner ranges 0.4 m wide side by side, 0.2 m
+  // apart, and 1.5 m high: their bands (1.5 m across, 0.25 m up) all cover x xFrom + 0.9 to
+  // xFrom + 1.9, up to 1.75 m over the floor.
+  Scene scene;
+  for (int i = 0; i < 5; ++i) {
+    const double lo = xFrom + 0.6 * i;
+    scene.probes.push_back(
+        boxProbe(std::string(1, static_cast<char>('a' + i)), {lo, 2, -0.5}, {lo + 0.4, 4, 1.5}));
+  }
+  const LevelRayCaster level(mesh);
+  std::vector<ValidationFinding> out;
+  checkOverlaps(scene, level, ValidateOptions{}, out);
+  return out;
+}
+
+TEST(TooManyOverlapsRule, FiveVolumesMeetingInTheOpenAreFoundAndInsideABlockAreNot) {
+  const LevelMesh level = roomWithBottomlessBlock();
+  const std::vector<ValidationFinding> open = overlaps(level, 0.5);
+  ASSERT_EQ(open.size(), 1u);
+  EXPECT_EQ(open[0].rule, "too_many_overlaps");
+  EXPECT_EQ(open[0].value, 5.0);
+  EXPECT_TRUE(overlaps(level, 3.5).empty()) << "they meet at x 4.4..5.4, inside the 2 m block";
+}
+
+}  // namespace
+}  // namespace probeproxy
