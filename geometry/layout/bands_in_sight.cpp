@@ -38,9 +38,8 @@ double hiddenShare(const std::vector<BandFloor>& floor, glm::dvec3 innerLo, glm:
 
 void pullBandsIntoSight(const LevelRayCaster& level, const WalkableFloor& floor, glm::dvec3 capture,
                         double gapMeters, glm::dvec3& innerLo, glm::dvec3& innerHi) {
-  const double band = kOuterBandOverGap * gapMeters;
-  const glm::dvec3 reach(band, band, std::min(band, kVerticalBandMeters));
-  const glm::dvec3 outerLo = innerLo - reach, outerHi = innerHi + reach;
+  glm::dvec3 outerLo, outerHi;
+  influenceBounds(influenceOfBounds(innerLo, innerHi, gapMeters), outerLo, outerHi);
   const std::vector<glm::dvec3> from = roomViewpoints(level, capture);
   std::vector<BandFloor> inBox;
   bool anyHidden = false;
@@ -57,7 +56,7 @@ void pullBandsIntoSight(const LevelRayCaster& level, const WalkableFloor& floor,
   // the capture point's own floor loses influence too), until the share is under the rule's
   // limit with room to spare (the rule walks the same floor, but at other heights).
   const double step = floor.spacingMeters;
-  const int maxSteps = static_cast<int>(band / step);
+  const int maxSteps = static_cast<int>(kOuterBandOverGap * gapMeters / step);
   glm::dvec3 lo = innerLo, hi = innerHi;
   double share = hiddenShare(inBox, lo, hi, gapMeters);
   const auto pulled = [&](int side, int steps, glm::dvec3& l, glm::dvec3& h) {

@@ -76,8 +76,9 @@ void checkOverlaps(const Scene& scene, const LevelRayCaster& level, const Valida
   forEachPoint(grid, [&](glm::dvec3 p) {
     int count = 0;
     for (const Probe& probe : scene.probes) {
-      if (insideInnerRange(probe.influence, p)) return;
-      count += insideInfluence(probe.influence, p) ? 1 : 0;
+      if (!insideInfluence(probe.influence, p)) continue;
+      if (insideInnerRange(probe.influence, p)) return;  // inner ranges lie in the outer ones
+      ++count;
     }
     if (count > options.maxOverlap) over.push_back(p), counts.push_back(count);
   });
@@ -91,14 +92,12 @@ void checkOverlaps(const Scene& scene, const LevelRayCaster& level, const Valida
     if (counts[i] > worst) worst = counts[i], worstPoint = over[i];
   }
   if (worst <= options.maxOverlap) return;
-  std::string names;
+  std::string names, first;
   for (const Probe& probe : scene.probes) {
     if (!insideInfluence(probe.influence, worstPoint)) continue;
+    if (first.empty()) first = probe.name;
     names += (names.empty() ? "'" : ", '") + probe.name + "'";
   }
-  std::string first;
-  for (const Probe& probe : scene.probes)
-    if (first.empty() && insideInfluence(probe.influence, worstPoint)) first = probe.name;
   char extent[64];
   std::snprintf(extent, sizeof extent, " (%.2f m^3 in all)",
                 static_cast<double>(open) * grid.cellVolume());
