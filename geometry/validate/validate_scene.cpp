@@ -53,9 +53,10 @@ std::vector<ValidationFinding> validateScene(const Scene& scene, const LevelRayC
   // The walkable floor is walked for the rules that measure on it only.
   const bool onFloor = options.measures("split_probe") || options.measures("influence_leak") ||
                        options.measures("reflected_camera_outside_proxy") ||
-                       options.measures("floor_not_covered");
-  const std::vector<FloorCell> floor =
-      onFloor ? walkedFloor(scene, level, options).cells : std::vector<FloorCell>{};
+                       options.measures("floor_not_covered") ||
+                       options.measures("too_many_overlaps") || options.measures("weight_jump");
+  const WalkableFloor walked = onFloor ? walkedFloor(scene, level, options) : WalkableFloor{};
+  const std::vector<FloorCell>& floor = walked.cells;
   for (const Probe& probe : scene.probes) {
     // Later rules measure what earlier ones establish: a proxy that is not a closed convex
     // mesh, or that misses its capture point, has no meaningful error yet; a capture point
@@ -80,7 +81,7 @@ std::vector<ValidationFinding> validateScene(const Scene& scene, const LevelRayC
       findings.insert(findings.end(), leak.begin(), leak.end());
     if (cameras && leak.empty()) checkReflectedCameras(level, probe, *authored, options, findings);
   }
-  if (options.measures("too_many_overlaps")) checkOverlaps(scene, level, options, findings);
+  if (options.measures("too_many_overlaps")) checkOverlaps(scene, level, walked, options, findings);
   // Overlapping inner ranges make the weights jump where one range ends (both claim 100%):
   // that is one problem, reported once.
   std::vector<ValidationFinding> inner;
@@ -89,7 +90,7 @@ std::vector<ValidationFinding> validateScene(const Scene& scene, const LevelRayC
   if (options.measures("inner_ranges_overlap"))
     findings.insert(findings.end(), inner.begin(), inner.end());
   if (inner.empty() && options.measures("weight_jump"))
-    checkWeightJumps(scene, level, options, findings);
+    checkWeightJumps(scene, level, walked, options, findings);
   if (options.measures("floor_not_covered")) checkFloorCoverage(scene, floor, options, findings);
   return findings;
 }

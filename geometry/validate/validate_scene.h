@@ -82,9 +82,9 @@ struct ValidateOptions {
   double maxWeightJumpPerCentimeter = 0.02;
   // weight_jump: spacing of the horizontal grid the weights are compared on.
   double weightGridMeters = 0.01;
-  // weight_jump: a camera is at most this far over the floor under it (eye height, 1.7 m,
-  // and a jump); higher, in the air over a pit or a hall, a point of interest only falls.
-  double weightJumpHeadRoomMeters = 2.5;
+  // weight_jump, too_many_overlaps: a camera is at most this far over the walked floor under it
+  // (eye height, 1.7 m, and a jump); higher, in the air over a pit or a hall, it only falls.
+  double cameraHeadRoomMeters = 2.5;
   // influence_leak: at most this share of an influence volume's walkable floor may be
   // hidden from its capture point.
   double maxLeakShare = 0.05;

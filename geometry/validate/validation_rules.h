@@ -46,11 +46,12 @@ void checkReflectedCameras(const LevelRayCaster& level, const Probe& probe,
                            std::vector<ValidationFinding>& out);
 
 // Scene-wide.
-void checkOverlaps(const Scene& scene, const LevelRayCaster& level, const ValidateOptions& options,
-                   std::vector<ValidationFinding>& out);
+// Both look where a camera can be (camera_space.h): over `walked`, the walked floor.
+void checkOverlaps(const Scene& scene, const LevelRayCaster& level, const WalkableFloor& walked,
+                   const ValidateOptions& options, std::vector<ValidationFinding>& out);
 void checkInnerRanges(const Scene& scene, const ValidateOptions& options,
                       std::vector<ValidationFinding>& out);
-void checkWeightJumps(const Scene& scene, const LevelRayCaster& level,
+void checkWeightJumps(const Scene& scene, const LevelRayCaster& level, const WalkableFloor& walked,
                       const ValidateOptions& options, std::vector<ValidationFinding>& out);
 void checkFloorCoverage(const Scene& scene, const std::vector<FloorCell>& floor,
                         const ValidateOptions& options, std::vector<ValidationFinding>& out);

@@ -2,7 +2,7 @@
 // more is a probe whose weight can pop in or out there), and inner ranges that overlap (two
 // probes that each claim 100% of the same space).
 
-#include "geometry/raycast/open_space.h"
+#include "geometry/validate/camera_space.h"
 #include "geometry/validate/validation_rules.h"
 
 #include <glm/common.hpp>
@@ -57,8 +57,8 @@ void forEachPoint(const Grid& grid, F&& f) {
 
 }  // namespace
 
-void checkOverlaps(const Scene& scene, const LevelRayCaster& level, const ValidateOptions& options,
-                   std::vector<ValidationFinding>& out) {
+void checkOverlaps(const Scene& scene, const LevelRayCaster& level, const WalkableFloor& walked,
+                   const ValidateOptions& options, std::vector<ValidationFinding>& out) {
   if (static_cast<int>(scene.probes.size()) <= options.maxOverlap) return;
   glm::dvec3 lo(INFINITY), hi(-INFINITY);
   for (const Probe& probe : scene.probes) {
@@ -66,10 +66,10 @@ void checkOverlaps(const Scene& scene, const LevelRayCaster& level, const Valida
     influenceBounds(probe.influence, a, b);
     lo = glm::min(lo, a), hi = glm::max(hi, b);
   }
-  // Points over the limit where the blend can pop, then only those in the open. Inside an
-  // inner range one probe takes 100% however many volumes overlap there (seed 000): none
-  // drops out. Inside a wall or a floor slab, where volumes meet as they reach past their
-  // floor, nothing is shaded and no camera goes.
+  // Points over the limit where the blend can pop, then only those where a camera can be.
+  // Inside an inner range one probe takes 100% however many volumes overlap there (seed 000):
+  // none drops out. Inside a wall or a floor slab, where volumes meet as they reach past their
+  // floor, no camera goes.
   std::vector<glm::dvec3> over;
   std::vector<int> counts;
   const Grid grid = makeGrid(lo, hi, options);
@@ -82,12 +82,13 @@ void checkOverlaps(const Scene& scene, const LevelRayCaster& level, const Valida
     }
     if (count > options.maxOverlap) over.push_back(p), counts.push_back(count);
   });
-  const std::vector<VerticalView> views = lookUpAndDown(level, over);
+  std::vector<char> cameras(over.size(), 0);
+  markCameraSpace(level, walked, options.cameraHeadRoomMeters, over, cameras);
   int worst = 0;
   std::size_t open = 0;
   glm::dvec3 worstPoint(0.0);
   for (std::size_t i = 0; i < over.size(); ++i) {
-    if (views[i].insideSolid) continue;
+    if (!cameras[i]) continue;
     ++open;
     if (counts[i] > worst) worst = counts[i], worstPoint = over[i];
   }

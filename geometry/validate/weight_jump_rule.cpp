@@ -1,13 +1,10 @@
 // weight_jump: a blend weight that changes abruptly between neighbouring points pops as the
 // camera moves (Lagarde's weights, core/blend). Measured on a horizontal grid at each capture
-// height, over points at most head room above a floor of the level (volumes reach into walls,
-// where nobody stands, and over pits, where a camera only falls), and scaled to a change per
-// centimetre so the grid spacing does not move the limit.
-// Points inside a solid block are not over a floor even where its bottom face is missing
-// (geometry/raycast/open_space.h; basement: two bands met inside a 6 m block).
+// height, where a camera can be (camera_space.h), and scaled to a change per centimetre so the
+// grid spacing does not move the limit.
 
 #include "core/blend/weight_continuity.h"
-#include "geometry/raycast/open_space.h"
+#include "geometry/validate/camera_space.h"
 #include "geometry/validate/validation_rules.h"
 
 #include <cmath>
@@ -16,7 +13,7 @@
 
 namespace probeproxy {
 
-void checkWeightJumps(const Scene& scene, const LevelRayCaster& level,
+void checkWeightJumps(const Scene& scene, const LevelRayCaster& level, const WalkableFloor& walked,
                       const ValidateOptions& options, std::vector<ValidationFinding>& out) {
   if (scene.probes.empty()) return;
   std::vector<InfluenceVolume> volumes;
@@ -25,11 +22,8 @@ void checkWeightJumps(const Scene& scene, const LevelRayCaster& level,
     volumes.push_back(p.influence);
     heights.insert(p.captureMeters.z);
   }
-  const ReachableMask aboveFloor = [&](std::span<const glm::dvec3> points,
-                                       std::span<char> reachable) {
-    const std::vector<VerticalView> views = lookUpAndDown(level, points);
-    for (std::size_t i = 0; i < points.size(); ++i)
-      reachable[i] = views[i].floorBelowMeters <= options.weightJumpHeadRoomMeters;
+  const ReachableMask cameras = [&](std::span<const glm::dvec3> points, std::span<char> reachable) {
+    markCameraSpace(level, walked, options.cameraHeadRoomMeters, points, reachable);
   };
   WeightContinuity worst;
   double worstPerCm = 0.0, worstSpacing = 0.0;
@@ -40,7 +34,7 @@ void checkWeightJumps(const Scene& scene, const LevelRayCaster& level,
     const double budget = static_cast<double>(options.gridPointBudget);
     if (points > budget)
       grid = gridOverVolumes(volumes, z, options.weightGridMeters * std::sqrt(points / budget));
-    const WeightContinuity c = measureWeightContinuity(volumes, grid, {}, aboveFloor);
+    const WeightContinuity c = measureWeightContinuity(volumes, grid, {}, cameras);
     const double perCm = c.largestJump / (100.0 * grid.spacingMeters);
     if (perCm > worstPerCm) worstPerCm = perCm, worst = c, worstSpacing = grid.spacingMeters;
   }

@@ -1,6 +1,7 @@
-// validate's weight_jump and too_many_overlaps count only where a camera can be or a surface is
-// shaded: not inside a solid block, even one whose bottom face the map compiler dropped
-// (geometry/raycast/open_space.h); weight_jump also only within head room over a floor.
+// validate's weight_jump and too_many_overlaps count only where a camera can be
+// (geometry/validate/camera_space.h): over the walked floor, within head room, and not inside a
+// solid block, even one whose bottom face the map compiler dropped
+// (geometry/raycast/open_space.h).
 
 #include "geometry/builtin/box_room.h"
 #include "geometry/layout/layout_influence.h"
@@ -15,11 +16,11 @@
 namespace probeproxy {
 namespace {
 
-// A 10 x 6 x 3 m room with a solid block 2 m high across it at x 4..6, wound outwards,
+// A 10 x 6 x 3 m room with a solid block `height` m high across it at x 4..6, wound outwards,
 // without its bottom face (Quake 3's compiler drops the faces a block rests on).
-LevelMesh roomWithBottomlessBlock() {
+LevelMesh roomWithBottomlessBlock(double height = 2.0) {
   LevelMesh level = boxRoom({0, 0, 0}, {10, 6, 3});
-  LevelMesh block = boxRoom({4, 0, 0}, {6, 6, 2}, "block");
+  LevelMesh block = boxRoom({4, 0, 0}, {6, 6, height}, "block");
   for (glm::uvec3& t : block.triangles) std::swap(t.y, t.z);
   std::erase_if(block.triangles, [&](const glm::uvec3& t) {
     return block.positionsMeters[t.x].z == 0.0f && block.positionsMeters[t.y].z == 0.0f &&
@@ -58,16 +59,19 @@ std::vector<ValidationFinding> weightJumps(const LevelMesh& mesh) {
   ValidateOptions options;
   options.weightGridMeters = 0.04;
   std::vector<ValidationFinding> out;
-  checkWeightJumps(scene, level, options, out);
+  checkWeightJumps(scene, level, walkedFloor(scene, level, options), options, out);
   return out;
 }
 
-TEST(WeightJumpRule, BandsMeetingOverFloorJumpAndInsideABottomlessBlockOrHighOverAPitDoNot) {
+TEST(WeightJumpRule, BandsMeetingOverWalkedFloorJumpAndElsewhereDoNot) {
   const std::vector<ValidationFinding> open = weightJumps(boxRoom({0, 0, 0}, {10, 6, 3}));
   ASSERT_EQ(open.size(), 1u);
   EXPECT_EQ(open[0].rule, "weight_jump");
   EXPECT_GT(open[0].value, 0.2);
-  EXPECT_TRUE(weightJumps(roomWithBottomlessBlock()).empty());
+  EXPECT_TRUE(weightJumps(roomWithBottomlessBlock()).empty()) << "inside a block";
+  // Over the top of a wall 0.8 m high (a floor, but no step reaches it), 0.2 m under the
+  // capture points' height: the old rule's "over a floor" counted it.
+  EXPECT_TRUE(weightJumps(roomWithBottomlessBlock(0.8)).empty()) << "over an unwalked top";
   // Nor in the air 5 m over the floor of a pit, where a camera only falls.
   EXPECT_TRUE(weightJumps(boxRoom({0, 0, -4}, {10, 6, 3})).empty());
 }
@@ -83,8 +87,9 @@ std::vector<ValidationFinding> overlaps(const LevelMesh& mesh, double xFrom) {
         boxProbe(std::string(1, static_cast<char>('a' + i)), {lo, 2, -0.5}, {lo + 0.4, 4, 1.5}));
   }
   const LevelRayCaster level(mesh);
+  const ValidateOptions options;
   std::vector<ValidationFinding> out;
-  checkOverlaps(scene, level, ValidateOptions{}, out);
+  checkOverlaps(scene, level, walkedFloor(scene, level, options), options, out);
   return out;
 }
 
