@@ -1,5 +1,6 @@
 #include "geometry/layout/uncovered_floor_fills.h"
 
+#include "core/blend/blend_weights.h"
 #include "core/blend/influence_factor.h"
 #include "geometry/layout/bands_in_sight.h"
 #include "geometry/layout/floor_rectangles.h"
@@ -17,6 +18,38 @@ namespace probeproxy {
 
 namespace {
 
+// Floor further out than this share of every band over it is served by bands' far ends alone:
+// their weights are all near 0 there, and where one more band begins its normalised share
+// jumps (validate's weight_jump, 0.1-0.3 per cm over such floor on basement and darkzone).
+// The selection keeps floor within a gap of a range (at most 5/6 of a band out); two thirds
+// keeps the steepest turn of the weights under validate's limit.
+constexpr double kFarBandShare = 0.67;
+
+// Where a camera stands over a floor cell (its eye), for the overlap count.
+constexpr double kEyeOverFloorMeters = 1.6;
+
+// Whether adding `fill` makes more volumes than the blend takes (Lagarde's 4) meet at a camera
+// over the floor under its outer range, outside every inner range (validate's
+// too_many_overlaps): a fill for floor already covered is worth less than that.
+bool crowdsTheBlend(const BoxInfluence& fill, std::span<const InfluenceVolume> others,
+                    const WalkableFloor& floor) {
+  for (const FloorCell& cell : floor.cells) {
+    for (double lift : {kBlendLiftMeters, kEyeOverFloorMeters}) {
+      const glm::dvec3 p = cell.pointMeters + glm::dvec3(0.0, 0.0, lift);
+      if (!insideInfluence(fill, p) || normalizedDistance(fill, p) == 0.0) continue;
+      int meeting = 1;
+      bool inner = false;
+      for (const InfluenceVolume& v : others) {
+        const double a = normalizedDistance(v, p);
+        inner = inner || a == 0.0;
+        meeting += a < 1.0;
+      }
+      if (!inner && meeting > kDefaultMaxBlendProbes) return true;
+    }
+  }
+  return false;
+}
+
 // Plan distance from a point to a rectangle (0 inside).
 double planDistance(glm::dvec3 p, glm::dvec3 lo, glm::dvec3 hi) {
   const double dx = std::max({0.0, lo.x - p.x, p.x - hi.x});
@@ -31,11 +64,13 @@ std::vector<FloorFill> fillsForUncoveredFloor(const LevelRayCaster& level,
                                               std::span<const InfluenceVolume> volumes,
                                               double gapMeters, double captureHeightMeters) {
   std::vector<std::size_t> uncovered;
+  std::vector<char> covered(floor.cells.size(), 0);
   for (std::size_t i = 0; i < floor.cells.size(); ++i) {
     const glm::dvec3 at = floor.cells[i].pointMeters + glm::dvec3(0.0, 0.0, kBlendLiftMeters);
-    if (std::none_of(volumes.begin(), volumes.end(),
-                     [&](const InfluenceVolume& v) { return insideInfluence(v, at); }))
-      uncovered.push_back(i);
+    double nearest = 1.0;
+    for (const InfluenceVolume& v : volumes) nearest = std::min(nearest, normalizedDistance(v, at));
+    covered[i] = nearest < 1.0;
+    if (nearest > kFarBandShare) uncovered.push_back(i);
   }
   const double half = 0.5 * floor.spacingMeters;
   std::vector<InfluenceVolume> others(volumes.begin(), volumes.end());
@@ -72,7 +107,11 @@ std::vector<FloorFill> fillsForUncoveredFloor(const LevelRayCaster& level,
     innerHi = glm::max(innerHi, capture + glm::dvec3(kCaptureMarginMeters));
     keepClearOfInnerRanges(innerLo, innerHi, capture, storeyFloor, others, gapMeters);
     pullBandsIntoSight(level, floor, capture, gapMeters, innerLo, innerHi);
-    fills.push_back({capture, influenceOfBounds(innerLo, innerHi, gapMeters)});
+    const BoxInfluence fill = influenceOfBounds(innerLo, innerHi, gapMeters);
+    const bool optional =
+        std::all_of(members.begin(), members.end(), [&](std::size_t c) { return covered[c] != 0; });
+    if (optional && crowdsTheBlend(fill, others, floor)) continue;
+    fills.push_back({capture, fill});
     others.push_back(fills.back().influence);
   }
   return fills;

@@ -120,5 +120,28 @@ TEST(FillsForUncoveredFloor, FloorBeyondEveryBandGetsOneProbeAndIsThenCovered) {
   }
 }
 
+TEST(FillsForUncoveredFloor,
+     FloorAtTheFarEndOfBandsThatOnlyTouchGetsAFillAndTheWeightsTurnSmoothly) {
+  // A 10 x 4 m room; ranges over x 0..3.5 and 6.5..10, their 1.5 m bands touching at x 5: over
+  // the floor there each probe's weight is whole on its side (alone in its band) and the
+  // lighting flips from one to the other.
+  const LevelRayCaster level(boxRoom({0, 0, 0}, {10, 4, 3.5f}));
+  const glm::dvec3 seed{2.0, 2.0, 1.6};
+  const WalkableFloor floor = walkableFloor(level, std::span(&seed, 1));
+  std::vector<InfluenceVolume> volumes{influenceOfBounds({0, 0, -0.5}, {3.5, 4, 2.5}, 1.0),
+                                       influenceOfBounds({6.5, 0, -0.5}, {10, 4, 2.5}, 1.0)};
+  const auto steepest = [&] {
+    const WeightGrid grid = gridOverVolumes(volumes, 1.6, 0.01);
+    return measureWeightContinuity(volumes, grid, BlendOptions{}).largestJump;  // 1 cm apart
+  };
+  EXPECT_GT(steepest(), 0.9) << "per cm, where the bands touch";
+  const std::vector<FloorFill> fills = fillsForUncoveredFloor(level, floor, volumes, 1.0, 1.6);
+  ASSERT_EQ(fills.size(), 1u) << "the floor around x 5";
+  EXPECT_FALSE(innerRangesOverlap(volumes[0], fills[0].influence));
+  EXPECT_FALSE(innerRangesOverlap(volumes[1], fills[0].influence));
+  volumes.push_back(fills[0].influence);
+  EXPECT_LE(steepest(), 0.02) << "validate's weight_jump limit, per cm";
+}
+
 }  // namespace
 }  // namespace probeproxy
