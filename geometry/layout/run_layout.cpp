@@ -8,6 +8,7 @@
 #include "geometry/layout/layout_candidates.h"
 #include "geometry/layout/layout_influence.h"
 #include "geometry/layout/select_probes.h"
+#include "geometry/layout/thin_ranges.h"
 #include "geometry/layout/uncovered_floor_fills.h"
 #include "geometry/survey/floor_samples.h"
 
@@ -189,6 +190,9 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
             .captureMeters,
         kRoomFitMeters);
   }
+  joinThinRanges(level, walked, o.blendBandMeters, {volumes.data(), kept.size()}, r.probes);
+  volumes.resize(kept.size());
+  for (const LayoutProbe& p : r.probes) volumes.push_back(p.influence);
   // What of the survey's floor no volume reaches.
   for (const FloorFill& f :
        fillsForUncoveredFloor(level, walked, volumes, o.blendBandMeters, o.captureHeightMeters))

@@ -5,13 +5,17 @@
 #include "core/blend/weight_continuity.h"
 #include "geometry/builtin/box_room.h"
 #include "geometry/floor/walkable_floor.h"
+#include "geometry/layout/candidate_service.h"
 #include "geometry/layout/layout_influence.h"
+#include "geometry/layout/thin_ranges.h"
 #include "geometry/layout/uncovered_floor_fills.h"
 #include "geometry/survey/blended_error.h"
 
 #include <gtest/gtest.h>
 #include <glm/common.hpp>
 
+#include <array>
+#include <initializer_list>
 #include <vector>
 
 namespace probeproxy {
@@ -141,6 +145,71 @@ TEST(FillsForUncoveredFloor,
   EXPECT_FALSE(innerRangesOverlap(volumes[1], fills[0].influence));
   volumes.push_back(fills[0].influence);
   EXPECT_LE(steepest(), 0.02) << "validate's weight_jump limit, per cm";
+}
+
+// Probes over a 10 x 6 m room, one a range x lo..hi, y ylo..yhi each (bands 1.5 m).
+struct RangesInARoom {
+  LevelRayCaster level{boxRoom({0, 0, 0}, {10, 6, 3.5f})};
+  WalkableFloor floor;
+  std::vector<LayoutProbe> probes;
+  explicit RangesInARoom(std::initializer_list<std::array<double, 4>> ranges) {
+    const glm::dvec3 seed{2.0, 2.0, 1.6};
+    floor = walkableFloor(level, std::span(&seed, 1));
+    for (const auto& [lo, hi, ylo, yhi] : ranges)
+      probes.push_back(LayoutProbe{glm::dvec3(0.5 * (lo + hi), 0.5 * (ylo + yhi), 1.6),
+                                   influenceOfBounds({lo, ylo, -0.5}, {hi, yhi, 2.5}, 1.0),
+                                   kRoomFitMeters});
+  }
+  std::vector<InfluenceVolume> volumes() const {
+    std::vector<InfluenceVolume> v;
+    for (const LayoutProbe& p : probes) v.push_back(p.influence);
+    return v;
+  }
+  // Most volumes over one point at eye height, outside every inner range (too_many_overlaps).
+  int mostMeeting() const {
+    int most = 0;
+    for (double x = 0.05; x < 10.0; x += 0.1) {
+      for (double y = 0.05; y < 6.0; y += 0.1) {
+        int meeting = 0;
+        bool inner = false;
+        for (const LayoutProbe& p : probes) {
+          const double a = normalizedDistance(p.influence, {x, y, 1.6});
+          meeting += a < 1.0, inner = inner || a == 0.0;
+        }
+        if (!inner) most = std::max(most, meeting);
+      }
+    }
+    return most;
+  }
+};
+
+TEST(JoinThinRanges, AStripInARowJoinsANeighbourAndNoMoreThanTheBlendTakesMeet) {
+  // South: 0..3, a 0.5 m strip at 4..4.5, 5.5..10; north, across a 1 m gap: 0..4.25 and
+  // 5.25..10. Over the gap by the strip five bands meet (basement's crossing, probe_068).
+  RangesInARoom room({{{0, 3, 0, 2.5}},
+                      {{4, 4.5, 0, 2.5}},
+                      {{5.5, 10, 0, 2.5}},
+                      {{0, 4.25, 3.5, 6}},
+                      {{5.25, 10, 3.5, 6}}});
+  EXPECT_EQ(room.mostMeeting(), 5);
+  joinThinRanges(room.level, room.floor, 1.0, {}, room.probes);
+  ASSERT_EQ(room.probes.size(), 4u);
+  EXPECT_DOUBLE_EQ(innerHi(room.probes[0].influence).x, 4.5) << "the first as near as any";
+  EXPECT_EQ(room.mostMeeting(), 4);
+  const std::vector<InfluenceVolume> volumes = room.volumes();
+  EXPECT_LE(measureWeightContinuity(volumes, gridOverVolumes(volumes, 1.6, 0.01)).largestJump, 0.02)
+      << "1 cm apart";
+}
+
+TEST(JoinThinRanges, NoJoinBringsRangesCloserThanTheGap) {
+  // Joined with the left range the strip at 4..4.5 (y 2..6) would reach over the small range
+  // at its foot (4..4.5, y 0..1), which joins the strip instead.
+  RangesInARoom room({{{0, 3, 0, 6}}, {{4, 4.5, 2, 6}}, {{4, 4.5, 0, 1}}});
+  joinThinRanges(room.level, room.floor, 1.0, {}, room.probes);
+  ASSERT_EQ(room.probes.size(), 2u);
+  EXPECT_DOUBLE_EQ(innerHi(room.probes[0].influence).x, 3.0);
+  EXPECT_DOUBLE_EQ(innerLo(room.probes[1].influence).y, 0.0);
+  EXPECT_DOUBLE_EQ(innerHi(room.probes[1].influence).y, 6.0);
 }
 
 }  // namespace
