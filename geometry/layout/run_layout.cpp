@@ -190,10 +190,11 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
             .captureMeters,
         kRoomFitMeters);
   }
+  // Strips narrower than the gap join a neighbour (five bands met over the gap beside them).
   joinThinRanges(level, walked, o.blendBandMeters, {volumes.data(), kept.size()}, r.probes);
   volumes.resize(kept.size());
   for (const LayoutProbe& p : r.probes) volumes.push_back(p.influence);
-  // What of the survey's floor no volume reaches.
+  // What of the survey's floor no volume reaches, or only the far ends of bands reach.
   for (const FloorFill& f :
        fillsForUncoveredFloor(level, walked, volumes, o.blendBandMeters, o.captureHeightMeters))
     r.probes.push_back({f.captureMeters, f.influence, kRoomFitMeters});

@@ -63,36 +63,36 @@ std::vector<FloorFill> fillsForUncoveredFloor(const LevelRayCaster& level,
                                               const WalkableFloor& floor,
                                               std::span<const InfluenceVolume> volumes,
                                               double gapMeters, double captureHeightMeters) {
-  std::vector<std::size_t> uncovered;
+  std::vector<std::size_t> toFill;
   std::vector<char> covered(floor.cells.size(), 0);
   for (std::size_t i = 0; i < floor.cells.size(); ++i) {
     const glm::dvec3 at = floor.cells[i].pointMeters + glm::dvec3(0.0, 0.0, kBlendLiftMeters);
     double nearest = 1.0;
     for (const InfluenceVolume& v : volumes) nearest = std::min(nearest, normalizedDistance(v, at));
     covered[i] = nearest < 1.0;
-    if (nearest > kFarBandShare) uncovered.push_back(i);
+    if (nearest > kFarBandShare) toFill.push_back(i);
   }
   const double half = 0.5 * floor.spacingMeters;
   std::vector<InfluenceVolume> others(volumes.begin(), volumes.end());
-  std::vector<char> grouped(uncovered.size(), 0);
+  std::vector<char> grouped(toFill.size(), 0);
   std::vector<FloorFill> fills;
-  for (std::size_t first = 0; first < uncovered.size(); ++first) {
+  for (std::size_t first = 0; first < toFill.size(); ++first) {
     if (grouped[first]) continue;
     grouped[first] = 1;
-    const glm::dvec3 start = floor.cells[uncovered[first]].pointMeters;
+    const glm::dvec3 start = floor.cells[toFill[first]].pointMeters;
     const double storeyFloor = start.z;
     glm::dvec3 lo = start, hi = start;
-    std::vector<std::size_t> members{uncovered[first]};
+    std::vector<std::size_t> members{toFill[first]};
     for (bool grew = true; grew;) {
       grew = false;
-      for (std::size_t k = first + 1; k < uncovered.size(); ++k) {
-        const glm::dvec3 p = floor.cells[uncovered[k]].pointMeters;
+      for (std::size_t k = first + 1; k < toFill.size(); ++k) {
+        const glm::dvec3 p = floor.cells[toFill[k]].pointMeters;
         if (grouped[k] || p.z < storeyFloor - kInfluenceBelowFloorMeters ||
             p.z > storeyFloor + kInfluenceHeadRoomMeters ||
             planDistance(p, lo, hi) > gapMeters + floor.spacingMeters)
           continue;
         grouped[k] = 1, grew = true;
-        members.push_back(uncovered[k]);
+        members.push_back(toFill[k]);
         lo = glm::min(lo, p), hi = glm::max(hi, p);
       }
     }
