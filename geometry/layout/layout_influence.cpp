@@ -31,7 +31,8 @@ BoxInfluence boxAround(glm::dvec3 lo, glm::dvec3 hi, double bandMeters) {
   return box;
 }
 
-// The inner range of one of the layout's own volumes (an axis-aligned box).
+}  // namespace
+
 bool axisAlignedInnerRange(const InfluenceVolume& volume, glm::dvec3& lo, glm::dvec3& hi) {
   const BoxInfluence* box = std::get_if<BoxInfluence>(&volume);
   if (box == nullptr || box->worldFromBox != glm::dquat(1, 0, 0, 0)) return false;
@@ -39,8 +40,6 @@ bool axisAlignedInnerRange(const InfluenceVolume& volume, glm::dvec3& lo, glm::d
   hi = box->centerMeters + box->innerHalfExtentsMeters;
   return true;
 }
-
-}  // namespace
 
 BoxInfluence influenceAroundFloor(const WalkableFloor& floor, std::span<const std::size_t> cells,
                                   glm::dvec3 captureMeters, double bandMeters) {

@@ -37,6 +37,10 @@ inline constexpr double kVerticalBandMeters = 0.25;
 BoxInfluence influenceAroundFloor(const WalkableFloor& floor, std::span<const std::size_t> cells,
                                   glm::dvec3 captureMeters, double bandMeters);
 
+// The inner range of one of the layout's own volumes (an axis-aligned box); false for any
+// other volume (a rotated box, a sphere: an authored one kept by --keep-authored).
+bool axisAlignedInnerRange(const InfluenceVolume& volume, glm::dvec3& lo, glm::dvec3& hi);
+
 // An inner range (lo, hi) over a floor at `floorMeters` that reaches into another volume's
 // inner range stops where that one begins, over or under its floor: a pit or a lower floor in
 // a range's plan, whose box spans the air over it, would otherwise be claimed 100% by both.

@@ -18,10 +18,9 @@ struct Range {
 };
 
 std::optional<Range> innerRange(const InfluenceVolume& volume) {
-  const BoxInfluence* box = std::get_if<BoxInfluence>(&volume);
-  if (box == nullptr || box->worldFromBox != glm::dquat(1, 0, 0, 0)) return std::nullopt;
-  return Range{box->centerMeters - box->innerHalfExtentsMeters,
-               box->centerMeters + box->innerHalfExtentsMeters};
+  Range r;
+  if (!axisAlignedInnerRange(volume, r.lo, r.hi)) return std::nullopt;
+  return r;
 }
 
 bool overlapInHeight(const Range& a, const Range& b) { return a.lo.z < b.hi.z && b.lo.z < a.hi.z; }
