@@ -53,15 +53,21 @@ void FloorColumns::forEachIn(const FloorRect& rect,
     for (int c = rect.column0; c <= rect.column1; ++c) forEachIn(rect, c, r, f);
 }
 
-void FloorColumns::forEachUnderInnerRange(const FloorRect& rect,
-                                          const std::function<void(std::size_t)>& f) const {
+void FloorColumns::forEachInPlan(const FloorRect& rect,
+                                 const std::function<void(std::size_t)>& f) const {
   for (int r = std::max(rect.row0, 0); r <= std::min(rect.row1, floor_->rows - 1); ++r) {
     for (int c = std::max(rect.column0, 0); c <= std::min(rect.column1, floor_->columns - 1); ++c) {
       const std::size_t k = static_cast<std::size_t>(r) * floor_->columns + c;
-      for (std::size_t i = first_[k]; i < first_[k] + count_[k]; ++i)
-        if (rect.underInnerRange(floor_->cells[i])) f(i);
+      for (std::size_t i = first_[k]; i < first_[k] + count_[k]; ++i) f(i);
     }
   }
+}
+
+void FloorColumns::forEachUnderInnerRange(const FloorRect& rect,
+                                          const std::function<void(std::size_t)>& f) const {
+  forEachInPlan(rect, [&](std::size_t i) {
+    if (rect.underInnerRange(floor_->cells[i])) f(i);
+  });
 }
 
 std::size_t middleCell(const FloorColumns& columns, const FloorRect& rect) {

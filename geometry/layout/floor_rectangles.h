@@ -47,6 +47,8 @@ class FloorColumns {
   void forEachIn(const FloorRect& rect, int column, int row,
                  const std::function<void(std::size_t)>& f) const;
   void forEachIn(const FloorRect& rect, const std::function<void(std::size_t)>& f) const;
+  // Calls f(cell index) for every cell of the rectangle's columns, at any height.
+  void forEachInPlan(const FloorRect& rect, const std::function<void(std::size_t)>& f) const;
   // Calls f(cell index) for every cell under the rectangle's inner range (underInnerRange).
   void forEachUnderInnerRange(const FloorRect& rect,
                               const std::function<void(std::size_t)>& f) const;

@@ -10,10 +10,6 @@ namespace probeproxy {
 
 namespace {
 
-// Ranges cut to meet stay this far apart, so that the scene file's rounding of centres and
-// extents cannot make them overlap (skyway: by 1e-9 m).
-constexpr double kInnerClearanceMeters = 1e-3;
-
 // A range cut closer than this over its floor keeps no room for its capture point (half way up
 // it, which a scene wants kMinCaptureClearanceMeters off every surface): a platform range that
 // starts 0.1 mm over this floor (warfare, with 4 samples a cell) spans the floor as much as one
@@ -39,6 +35,18 @@ bool axisAlignedInnerRange(const InfluenceVolume& volume, glm::dvec3& lo, glm::d
   lo = box->centerMeters - box->innerHalfExtentsMeters;
   hi = box->centerMeters + box->innerHalfExtentsMeters;
   return true;
+}
+
+std::optional<InnerRange> innerRangeOf(const InfluenceVolume& volume) {
+  InnerRange r;
+  if (!axisAlignedInnerRange(volume, r.lo, r.hi)) return std::nullopt;
+  return r;
+}
+
+double planApart(const InnerRange& a, const InnerRange& b) {
+  const glm::dvec2 apart =
+      glm::max(glm::dvec2(a.lo) - glm::dvec2(b.hi), glm::dvec2(b.lo) - glm::dvec2(a.hi));
+  return std::max(apart.x, apart.y);
 }
 
 BoxInfluence influenceAroundFloor(const WalkableFloor& floor, std::span<const std::size_t> cells,

@@ -13,6 +13,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <optional>
 #include <span>
 
 namespace probeproxy {
@@ -33,6 +34,10 @@ inline constexpr double kOuterBandOverGap = 1.5;
 // clear of the next.
 inline constexpr double kVerticalBandMeters = 0.25;
 
+// Ranges cut to meet stay this far apart, so that the scene file's rounding of centres and
+// extents cannot make them overlap (skyway: by 1e-9 m).
+inline constexpr double kInnerClearanceMeters = 1e-3;
+
 // `cells` index floor.cells; at least one.
 BoxInfluence influenceAroundFloor(const WalkableFloor& floor, std::span<const std::size_t> cells,
                                   glm::dvec3 captureMeters, double bandMeters);
@@ -40,6 +45,20 @@ BoxInfluence influenceAroundFloor(const WalkableFloor& floor, std::span<const st
 // The inner range of one of the layout's own volumes (an axis-aligned box); false for any
 // other volume (a rotated box, a sphere: an authored one kept by --keep-authored).
 bool axisAlignedInnerRange(const InfluenceVolume& volume, glm::dvec3& lo, glm::dvec3& hi);
+
+struct InnerRange {
+  glm::dvec3 lo{0.0}, hi{0.0};
+};
+
+// As axisAlignedInnerRange; none for any other volume.
+std::optional<InnerRange> innerRangeOf(const InfluenceVolume& volume);
+
+inline bool overlapInHeight(const InnerRange& a, const InnerRange& b) {
+  return a.lo.z < b.hi.z && b.lo.z < a.hi.z;
+}
+
+// How far apart in plan (the larger of the two axes' separations; negative when they overlap).
+double planApart(const InnerRange& a, const InnerRange& b);
 
 // An inner range (lo, hi) over a floor at `floorMeters` that reaches into another volume's
 // inner range stops where that one begins, over or under its floor: a pit or a lower floor in

@@ -13,25 +13,6 @@ namespace probeproxy {
 
 namespace {
 
-struct Range {
-  glm::dvec3 lo{0.0}, hi{0.0};
-};
-
-std::optional<Range> innerRange(const InfluenceVolume& volume) {
-  Range r;
-  if (!axisAlignedInnerRange(volume, r.lo, r.hi)) return std::nullopt;
-  return r;
-}
-
-bool overlapInHeight(const Range& a, const Range& b) { return a.lo.z < b.hi.z && b.lo.z < a.hi.z; }
-
-// How far apart in plan (the larger of the two axes' separations; negative when they overlap).
-double planApart(const Range& a, const Range& b) {
-  const glm::dvec2 apart =
-      glm::max(glm::dvec2(a.lo) - glm::dvec2(b.hi), glm::dvec2(b.lo) - glm::dvec2(a.hi));
-  return std::max(apart.x, apart.y);
-}
-
 // Ranges of one height window: a join across storeys would span the slab.
 constexpr double kSameWindowMeters = 0.5;
 
@@ -40,23 +21,23 @@ constexpr double kSameWindowMeters = 0.5;
 void joinThinRanges(const LevelRayCaster& level, const WalkableFloor& walked, double gapMeters,
                     std::span<const InfluenceVolume> kept, std::vector<LayoutProbe>& probes) {
   constexpr double kSlack = 1e-6;
-  std::vector<std::optional<Range>> ranges;
-  for (const LayoutProbe& p : probes) ranges.push_back(innerRange(p.influence));
-  std::vector<Range> fixed;
+  std::vector<std::optional<InnerRange>> ranges;
+  for (const LayoutProbe& p : probes) ranges.push_back(innerRangeOf(p.influence));
+  std::vector<InnerRange> fixed;
   for (const InfluenceVolume& v : kept)
-    if (const std::optional<Range> r = innerRange(v)) fixed.push_back(*r);
+    if (const std::optional<InnerRange> r = innerRangeOf(v)) fixed.push_back(*r);
   std::vector<char> gone(probes.size(), 0);
   for (std::size_t t = 0; t < probes.size(); ++t) {
     if (gone[t] || !ranges[t]) continue;
-    const Range thin = *ranges[t];
+    const InnerRange thin = *ranges[t];
     const glm::dvec3 size = thin.hi - thin.lo;
     if (std::min(size.x, size.y) >= gapMeters - kSlack) continue;
     std::optional<std::size_t> best;
-    Range bestUnion;
+    InnerRange bestUnion;
     double bestApart = 0.0;
     for (std::size_t n = 0; n < probes.size(); ++n) {
       if (n == t || gone[n] || !ranges[n]) continue;
-      const Range& wide = *ranges[n];
+      const InnerRange& wide = *ranges[n];
       if (std::abs(wide.lo.z - thin.lo.z) > kSameWindowMeters ||
           std::abs(wide.hi.z - thin.hi.z) > kSameWindowMeters)
         continue;
@@ -64,9 +45,9 @@ void joinThinRanges(const LevelRayCaster& level, const WalkableFloor& walked, do
       if (wideSize.x * wideSize.y <= size.x * size.y) continue;
       const double apart = planApart(thin, wide);
       if (apart < -kSlack || apart > gapMeters + kSlack) continue;
-      const Range joined{glm::min(thin.lo, wide.lo), glm::max(thin.hi, wide.hi)};
+      const InnerRange joined{glm::min(thin.lo, wide.lo), glm::max(thin.hi, wide.hi)};
       // The union keeps the gap that the two kept from every other range.
-      const auto keepsClear = [&](const Range& other) {
+      const auto keepsClear = [&](const InnerRange& other) {
         if (!overlapInHeight(joined, other)) return true;
         const double before = std::min({planApart(thin, other), planApart(wide, other), gapMeters});
         return planApart(joined, other) >= before - kSlack;
@@ -82,7 +63,7 @@ void joinThinRanges(const LevelRayCaster& level, const WalkableFloor& walked, do
     // Only where the joined band stays in sight of the wider probe whole: a thin range is often
     // a side pulled in from a wall, and its band, reaching on from the wider one's capture
     // point, would look through it (bloodprison: 5.5% behind a wall after the pull).
-    Range joined = bestUnion;
+    InnerRange joined = bestUnion;
     pullBandsIntoSight(level, walked, wide.captureMeters, gapMeters, joined.lo, joined.hi);
     if (joined.lo != bestUnion.lo || joined.hi != bestUnion.hi) continue;
     wide.influence = influenceOfBounds(joined.lo, joined.hi, gapMeters);

@@ -6,6 +6,7 @@
 #include "geometry/builtin/box_room.h"
 #include "geometry/floor/walkable_floor.h"
 #include "geometry/layout/candidate_service.h"
+#include "geometry/layout/head_room.h"
 #include "geometry/layout/layout_influence.h"
 #include "geometry/layout/thin_ranges.h"
 #include "geometry/layout/uncovered_floor_fills.h"
@@ -210,6 +211,67 @@ TEST(JoinThinRanges, NoJoinBringsRangesCloserThanTheGap) {
   EXPECT_DOUBLE_EQ(innerHi(room.probes[0].influence).x, 3.0);
   EXPECT_DOUBLE_EQ(innerLo(room.probes[1].influence).y, 0.0);
   EXPECT_DOUBLE_EQ(innerHi(room.probes[1].influence).y, 6.0);
+}
+
+// A 10 x 6 x 6 m room whose east part, x 6..10, is a ledge 1.5 m up (more than a step: a
+// seed of its own), with one range over both floors from the ground's storey.
+struct LedgeRoom {
+  LevelRayCaster level{[] {
+    LevelMesh mesh = boxRoom({0, 0, 0}, {10, 6, 6});
+    LevelMesh ledge = boxRoom({6, 0, 0}, {10, 6, 1.5f}, "ledge");
+    for (glm::uvec3& t : ledge.triangles) std::swap(t.y, t.z);  // faces outwards: a solid
+    appendLevelMesh(mesh, ledge);
+    return mesh;
+  }()};
+  WalkableFloor floor;
+  LedgeRoom() {
+    const std::array<glm::dvec3, 2> seeds{glm::dvec3{2, 3, 1.6}, glm::dvec3{8, 3, 3.1}};
+    floor = walkableFloor(level, seeds);
+  }
+};
+
+TEST(RaiseRangesOverRaisedFloor, ACameraOverALedgeInTheWindowStaysInTheInnerRange) {
+  const LedgeRoom room;
+  std::vector<LayoutProbe> probes{
+      {{3, 3, 1.6}, influenceOfBounds({0, 0, -0.5}, {10, 6, 2.5}, 1.0), kRoomFitMeters}};
+  const glm::dvec3 overLedge{8, 3, 1.5 + 2.2};  // 2.2 m over the ledge: a camera
+  EXPECT_EQ(normalizedDistance(probes[0].influence, overLedge), 1.0) << "over the band's top";
+  raiseRangesOverRaisedFloor(room.floor, 1.0, {}, probes);
+  EXPECT_NEAR(innerHi(probes[0].influence).z, 1.5 + kInfluenceHeadRoomMeters, 1e-4);
+  EXPECT_EQ(innerLo(probes[0].influence), glm::dvec3(0, 0, -0.5));
+  EXPECT_EQ(normalizedDistance(probes[0].influence, overLedge), 0.0);
+  EXPECT_EQ(probes[0].captureMeters, glm::dvec3(3, 3, 1.6));
+}
+
+TEST(RaiseRangesOverRaisedFloor, ARangeRisesOverFloorInItsGapUpToARangeAboveAndNoFurther) {
+  const LedgeRoom room;
+  // The ground's range ends at x 5.5; the ledge's begins a gap away, at 6.5. The ledge floor
+  // x 6..6.5 lies in the ground range's gap, in its height window: its top rises over it.
+  const InfluenceVolume ledge = influenceOfBounds({6.5, 0, 1.0}, {10, 6, 4.0}, 1.0);
+  std::vector<LayoutProbe> probes{
+      {{3, 3, 1.6}, influenceOfBounds({0, 0, -0.5}, {5.5, 6, 2.5}, 1.0), kRoomFitMeters}};
+  raiseRangesOverRaisedFloor(room.floor, 1.0, std::span(&ledge, 1), probes);
+  EXPECT_NEAR(innerHi(probes[0].influence).z, 4.0, 1e-4);
+  EXPECT_FALSE(innerRangesOverlap(probes[0].influence, ledge));
+
+  // A range over the ground, 3 m up (a gallery), stops the rise under it.
+  const InfluenceVolume gallery = influenceOfBounds({0, 0, 3.0}, {4, 6, 6.0}, 1.0);
+  probes[0].influence = influenceOfBounds({0, 0, -0.5}, {5.5, 6, 2.5}, 1.0);
+  raiseRangesOverRaisedFloor(room.floor, 1.0, std::array{ledge, gallery}, probes);
+  EXPECT_NEAR(innerHi(probes[0].influence).z, 3.0 - kInnerClearanceMeters, 1e-9);
+}
+
+TEST(RaiseRangesOverRaisedFloor, ARangeBesideItsHeightWithinTheGapDoesNotStopTheRise) {
+  const LedgeRoom room;
+  // The ledge's range reaches down to 2 m, 0.5 m from the ground's (cut back to its capture
+  // point): the rise brings the two no nearer in plan.
+  const InfluenceVolume beside = influenceOfBounds({6, 0, 2.0}, {10, 6, 5.0}, 1.0);
+  std::vector<LayoutProbe> probes{
+      {{3, 3, 1.6}, influenceOfBounds({0, 0, -0.5}, {5.5, 6, 2.5}, 1.0), kRoomFitMeters}};
+  raiseRangesOverRaisedFloor(room.floor, 1.0, std::span(&beside, 1), probes);
+  EXPECT_NEAR(innerHi(probes[0].influence).z, 4.0, 1e-4);
+  EXPECT_DOUBLE_EQ(innerHi(probes[0].influence).x, 5.5);
+  EXPECT_FALSE(innerRangesOverlap(probes[0].influence, beside));
 }
 
 }  // namespace
