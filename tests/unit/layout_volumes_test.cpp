@@ -228,19 +228,26 @@ struct LedgeRoom {
     const std::array<glm::dvec3, 2> seeds{glm::dvec3{2, 3, 1.6}, glm::dvec3{8, 3, 3.1}};
     floor = walkableFloor(level, seeds);
   }
+  // The ground storey's range over x 0..toX (head room over z 0), raised among `others`.
+  static InfluenceVolume ground(double toX) {
+    return influenceOfBounds({0, 0, -0.5}, {toX, 6, 2.5}, 1.0);
+  }
+  LayoutProbe raised(double toX, std::span<const InfluenceVolume> others) const {
+    std::vector<LayoutProbe> probes{{{3, 3, 1.6}, ground(toX), kRoomFitMeters}};
+    raiseRangesOverRaisedFloor(floor, 1.0, others, probes);
+    return probes[0];
+  }
 };
 
 TEST(RaiseRangesOverRaisedFloor, ACameraOverALedgeInTheWindowStaysInTheInnerRange) {
   const LedgeRoom room;
-  std::vector<LayoutProbe> probes{
-      {{3, 3, 1.6}, influenceOfBounds({0, 0, -0.5}, {10, 6, 2.5}, 1.0), kRoomFitMeters}};
   const glm::dvec3 overLedge{8, 3, 1.5 + 2.2};  // 2.2 m over the ledge: a camera
-  EXPECT_EQ(normalizedDistance(probes[0].influence, overLedge), 1.0) << "over the band's top";
-  raiseRangesOverRaisedFloor(room.floor, 1.0, {}, probes);
-  EXPECT_NEAR(innerHi(probes[0].influence).z, 1.5 + kInfluenceHeadRoomMeters, 1e-4);
-  EXPECT_EQ(innerLo(probes[0].influence), glm::dvec3(0, 0, -0.5));
-  EXPECT_EQ(normalizedDistance(probes[0].influence, overLedge), 0.0);
-  EXPECT_EQ(probes[0].captureMeters, glm::dvec3(3, 3, 1.6));
+  EXPECT_EQ(normalizedDistance(LedgeRoom::ground(10), overLedge), 1.0) << "over the band's top";
+  const LayoutProbe probe = room.raised(10, {});
+  EXPECT_NEAR(innerHi(probe.influence).z, 1.5 + kInfluenceHeadRoomMeters, 1e-4);
+  EXPECT_EQ(innerLo(probe.influence), glm::dvec3(0, 0, -0.5));
+  EXPECT_EQ(normalizedDistance(probe.influence, overLedge), 0.0);
+  EXPECT_EQ(probe.captureMeters, glm::dvec3(3, 3, 1.6));
 }
 
 TEST(RaiseRangesOverRaisedFloor, ARangeRisesOverFloorInItsGapUpToARangeAboveAndNoFurther) {
@@ -248,17 +255,14 @@ TEST(RaiseRangesOverRaisedFloor, ARangeRisesOverFloorInItsGapUpToARangeAboveAndN
   // The ground's range ends at x 5.5; the ledge's begins a gap away, at 6.5. The ledge floor
   // x 6..6.5 lies in the ground range's gap, in its height window: its top rises over it.
   const InfluenceVolume ledge = influenceOfBounds({6.5, 0, 1.0}, {10, 6, 4.0}, 1.0);
-  std::vector<LayoutProbe> probes{
-      {{3, 3, 1.6}, influenceOfBounds({0, 0, -0.5}, {5.5, 6, 2.5}, 1.0), kRoomFitMeters}};
-  raiseRangesOverRaisedFloor(room.floor, 1.0, std::span(&ledge, 1), probes);
-  EXPECT_NEAR(innerHi(probes[0].influence).z, 4.0, 1e-4);
-  EXPECT_FALSE(innerRangesOverlap(probes[0].influence, ledge));
+  const InfluenceVolume overGap = room.raised(5.5, std::span(&ledge, 1)).influence;
+  EXPECT_NEAR(innerHi(overGap).z, 4.0, 1e-4);
+  EXPECT_FALSE(innerRangesOverlap(overGap, ledge));
 
   // A range over the ground, 3 m up (a gallery), stops the rise under it.
   const InfluenceVolume gallery = influenceOfBounds({0, 0, 3.0}, {4, 6, 6.0}, 1.0);
-  probes[0].influence = influenceOfBounds({0, 0, -0.5}, {5.5, 6, 2.5}, 1.0);
-  raiseRangesOverRaisedFloor(room.floor, 1.0, std::array{ledge, gallery}, probes);
-  EXPECT_NEAR(innerHi(probes[0].influence).z, 3.0 - kInnerClearanceMeters, 1e-9);
+  EXPECT_NEAR(innerHi(room.raised(5.5, std::array{ledge, gallery}).influence).z,
+              3.0 - kInnerClearanceMeters, 1e-9);
 }
 
 TEST(RaiseRangesOverRaisedFloor, ARangeBesideItsHeightWithinTheGapDoesNotStopTheRise) {
@@ -266,12 +270,10 @@ TEST(RaiseRangesOverRaisedFloor, ARangeBesideItsHeightWithinTheGapDoesNotStopThe
   // The ledge's range reaches down to 2 m, 0.5 m from the ground's (cut back to its capture
   // point): the rise brings the two no nearer in plan.
   const InfluenceVolume beside = influenceOfBounds({6, 0, 2.0}, {10, 6, 5.0}, 1.0);
-  std::vector<LayoutProbe> probes{
-      {{3, 3, 1.6}, influenceOfBounds({0, 0, -0.5}, {5.5, 6, 2.5}, 1.0), kRoomFitMeters}};
-  raiseRangesOverRaisedFloor(room.floor, 1.0, std::span(&beside, 1), probes);
-  EXPECT_NEAR(innerHi(probes[0].influence).z, 4.0, 1e-4);
-  EXPECT_DOUBLE_EQ(innerHi(probes[0].influence).x, 5.5);
-  EXPECT_FALSE(innerRangesOverlap(probes[0].influence, beside));
+  const InfluenceVolume risen = room.raised(5.5, std::span(&beside, 1)).influence;
+  EXPECT_NEAR(innerHi(risen).z, 4.0, 1e-4);
+  EXPECT_DOUBLE_EQ(innerHi(risen).x, 5.5);
+  EXPECT_FALSE(innerRangesOverlap(risen, beside));
 }
 
 }  // namespace
