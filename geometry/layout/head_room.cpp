@@ -30,6 +30,12 @@ FloorRect columnsUnder(const WalkableFloor& floor, glm::dvec2 lo, glm::dvec2 hi)
   return r;
 }
 
+// The range widened by a gap in plan, over the same heights.
+InnerRange gapAround(const InnerRange& range, double gapMeters) {
+  const glm::dvec2 gap(gapMeters);
+  return {{glm::dvec2(range.lo) - gap, range.lo.z}, {glm::dvec2(range.hi) + gap, range.hi.z}};
+}
+
 // The ranges within a gap of `range` in plan (overlapping it in plan too).
 std::vector<const InnerRange*> neighboursOf(const std::vector<std::optional<InnerRange>>& ranges,
                                             std::size_t self, double gapMeters) {
@@ -45,9 +51,7 @@ std::vector<const InnerRange*> neighboursOf(const std::vector<std::optional<Inne
 double highestFloorAround(const FloorColumns& columns, const InnerRange& range,
                           std::span<const InnerRange* const> neighbours, double gapMeters) {
   const WalkableFloor& walked = columns.floor();
-  const glm::dvec2 gap(gapMeters);
-  const InnerRange around{{glm::dvec2(range.lo) - gap, range.lo.z},
-                          {glm::dvec2(range.hi) + gap, range.hi.z}};
+  const InnerRange around = gapAround(range, gapMeters);
   double highest = -INFINITY;
   columns.forEachInPlan(columnsUnder(walked, glm::dvec2(around.lo), glm::dvec2(around.hi)),
                         [&](std::size_t i) {
@@ -60,6 +64,63 @@ double highestFloorAround(const FloorColumns& columns, const InnerRange& range,
                           highest = p.z;
                         });
   return highest;
+}
+
+double planArea(const InnerRange& r) { return (r.hi.x - r.lo.x) * (r.hi.y - r.lo.y); }
+
+// A cut in plan gives floor to the bands; more than this and the floor given up wants ranges of
+// its own (warfare: fills over a range cut by half, overlapping it).
+constexpr double kKeptPlanShare = 0.8;
+
+// How far a floor point lies from a range in plan (0 inside).
+double planDistance(const InnerRange& r, glm::dvec3 p) {
+  const glm::dvec2 out =
+      glm::max(glm::max(glm::dvec2(r.lo) - glm::dvec2(p), glm::dvec2(p) - glm::dvec2(r.hi)),
+               glm::dvec2(0.0));
+  return std::max(out.x, out.y);
+}
+
+// Cuts `range` back in plan to a gap from `other`, on the side that keeps the most of it,
+// keeping the capture point inside and at least a gap across; false (and no cut) when no side
+// can.
+bool cutAwayInPlan(InnerRange& range, const InnerRange& other, glm::dvec3 captureMeters,
+                   double gapMeters) {
+  std::optional<InnerRange> best;
+  for (int axis = 0; axis < 2; ++axis) {
+    for (int side = 0; side < 2; ++side) {
+      InnerRange cut = range;
+      if (side == 0) {
+        cut.hi[axis] = std::min(cut.hi[axis], other.lo[axis] - gapMeters);
+        if (cut.hi[axis] < captureMeters[axis] + kCaptureMarginMeters) continue;
+      } else {
+        cut.lo[axis] = std::max(cut.lo[axis], other.hi[axis] + gapMeters);
+        if (cut.lo[axis] > captureMeters[axis] - kCaptureMarginMeters) continue;
+      }
+      if (cut.hi[axis] - cut.lo[axis] < gapMeters) continue;
+      if (!best || planArea(cut) > planArea(*best)) best = cut;
+    }
+  }
+  if (best) range = *best;
+  return best.has_value();
+}
+
+// Whether all floor in the old range's height window under it or a gap around it stays within
+// a gap of the cut range or of another range over its height: the selection keeps every floor
+// cell that near some range, and farther out only the far ends of bands reach it.
+bool keepsFloorNear(const FloorColumns& columns, const InnerRange& before, const InnerRange& cut,
+                    std::span<const InnerRange* const> neighbours, double gapMeters) {
+  const WalkableFloor& walked = columns.floor();
+  const InnerRange around = gapAround(before, gapMeters);
+  bool near = true;
+  columns.forEachInPlan(
+      columnsUnder(walked, glm::dvec2(around.lo), glm::dvec2(around.hi)), [&](std::size_t i) {
+        const glm::dvec3 p = walked.cells[i].pointMeters;
+        if (!near || !holds(around, p) || planDistance(cut, p) <= gapMeters) return;
+        near = std::any_of(neighbours.begin(), neighbours.end(), [&](const InnerRange* n) {
+          return p.z >= n->lo.z && p.z <= n->hi.z && planDistance(*n, p) <= gapMeters;
+        });
+      });
+  return near;
 }
 
 }  // namespace
@@ -75,19 +136,36 @@ void raiseRangesOverRaisedFloor(const WalkableFloor& walked, double gapMeters,
     const std::size_t self = kept.size() + t;
     if (!ranges[self]) continue;
     InnerRange& range = *ranges[self];
-    const std::vector<const InnerRange*> neighbours = neighboursOf(ranges, self, gapMeters);
+    std::vector<const InnerRange*> neighbours = neighboursOf(ranges, self, gapMeters);
     double top =
         highestFloorAround(columns, range, neighbours, gapMeters) + kInfluenceHeadRoomMeters;
     if (!(top > range.hi.z)) continue;
+    const InnerRange before = range;
+    // A range above within a gap that would stop the rise short of a camera's head (a ramp up
+    // to the floor that range holds): this one gives it the gap in plan instead, if it can from
+    // every such range, and the ramp's top lies in the blend between the two.
+    InnerRange cut = range;
+    bool cuts = false, uncut = false;
+    for (const InnerRange* n : neighbours) {
+      if (n->lo.z < range.hi.z || n->lo.z >= top - kVerticalBandMeters) continue;
+      cuts = true;
+      uncut = uncut || !cutAwayInPlan(cut, *n, probes[t].captureMeters, gapMeters);
+    }
+    if (cuts && !uncut && planArea(cut) >= kKeptPlanShare * planArea(range) &&
+        keepsFloorNear(columns, range, cut, neighbours, gapMeters)) {
+      range = cut;
+      neighbours = neighboursOf(ranges, self, gapMeters);
+      top = highestFloorAround(columns, range, neighbours, gapMeters) + kInfluenceHeadRoomMeters;
+    }
     // Up to the next range above within a gap: ranges that close hand the whole weight over. A
     // range beside its height already (a strip cut back only to its capture point) gets no
     // nearer in plan by the rise; stopping there left cameras over the raised floor in no
     // band but the far ends of others (toxic: 0.15 per cm instead of 0.05).
     for (const InnerRange* n : neighbours)
       if (n->lo.z >= range.hi.z) top = std::min(top, n->lo.z - kInnerClearanceMeters);
-    if (!(top > range.hi.z)) continue;
-    range.hi.z = top;
-    probes[t].influence = influenceOfBounds(range.lo, range.hi, gapMeters);
+    range.hi.z = std::max(range.hi.z, top);
+    if (range.lo != before.lo || range.hi != before.hi)
+      probes[t].influence = influenceOfBounds(range.lo, range.hi, gapMeters);
   }
 }
 

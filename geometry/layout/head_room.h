@@ -7,7 +7,9 @@
 // stormkeep, skyway, ruiner, downer, each over floor 1-2 m above its range's storey). So a
 // range's top rises to head room over the highest walked floor under it or in the gap around
 // it (floor no other range holds), no higher than the bottom of any range above it within a
-// gap in plan: inner ranges never meet, and stay a gap apart wherever they did.
+// gap in plan: inner ranges never meet, and stay a gap apart wherever they did. A range under
+// such a range (a ramp up to the floor that one holds: downer) first gives it the gap in plan
+// where that keeps most of its plan and all of its floor within a gap of some range.
 
 #include "geometry/floor/walkable_floor.h"
 #include "geometry/layout/run_layout.h"

@@ -216,15 +216,22 @@ TEST(JoinThinRanges, NoJoinBringsRangesCloserThanTheGap) {
 // A 10 x 6 x 6 m room whose east part, x 6..10, is a ledge 1.5 m up (more than a step: a
 // seed of its own), with one range over both floors from the ground's storey.
 struct LedgeRoom {
-  LevelRayCaster level{[] {
-    LevelMesh mesh = boxRoom({0, 0, 0}, {10, 6, 6});
-    LevelMesh ledge = boxRoom({6, 0, 0}, {10, 6, 1.5f}, "ledge");
-    for (glm::uvec3& t : ledge.triangles) std::swap(t.y, t.z);  // faces outwards: a solid
-    appendLevelMesh(mesh, ledge);
-    return mesh;
-  }()};
+  LevelRayCaster level;
   WalkableFloor floor;
-  LedgeRoom() {
+  // With `landing`, the ledge's last 0.5 m (x 9.5..10) is a block 3 m tall, not walked.
+  explicit LedgeRoom(bool landing = false)
+      : level([&] {
+          LevelMesh mesh = boxRoom({0, 0, 0}, {10, 6, 6});
+          for (auto [lo, hi] :
+               {std::pair{glm::vec3(6, 0, 0), glm::vec3(10, 6, 1.5f)},
+                std::pair{glm::vec3(9.5f, 0, 0), glm::vec3(10, 6, landing ? 3 : 0)}}) {
+            if (hi.z == 0) continue;
+            LevelMesh block = boxRoom(lo, hi, "block");
+            for (glm::uvec3& t : block.triangles) std::swap(t.y, t.z);  // faces outwards: a solid
+            appendLevelMesh(mesh, block);
+          }
+          return mesh;
+        }()) {
     const std::array<glm::dvec3, 2> seeds{glm::dvec3{2, 3, 1.6}, glm::dvec3{8, 3, 3.1}};
     floor = walkableFloor(level, seeds);
   }
@@ -232,8 +239,9 @@ struct LedgeRoom {
   static InfluenceVolume ground(double toX) {
     return influenceOfBounds({0, 0, -0.5}, {toX, 6, 2.5}, 1.0);
   }
-  LayoutProbe raised(double toX, std::span<const InfluenceVolume> others) const {
-    std::vector<LayoutProbe> probes{{{3, 3, 1.6}, ground(toX), kRoomFitMeters}};
+  LayoutProbe raised(double toX, std::span<const InfluenceVolume> others,
+                     glm::dvec3 capture = {3, 3, 1.6}) const {
+    std::vector<LayoutProbe> probes{{capture, ground(toX), kRoomFitMeters}};
     raiseRangesOverRaisedFloor(floor, 1.0, others, probes);
     return probes[0];
   }
@@ -274,6 +282,26 @@ TEST(RaiseRangesOverRaisedFloor, ARangeBesideItsHeightWithinTheGapDoesNotStopThe
   EXPECT_NEAR(innerHi(risen).z, 4.0, 1e-4);
   EXPECT_DOUBLE_EQ(innerHi(risen).x, 5.5);
   EXPECT_FALSE(innerRangesOverlap(risen, beside));
+}
+
+TEST(RaiseRangesOverRaisedFloor, UnderARangeAboveItGivesThatRangeTheGapInPlanAndRises) {
+  // A landing 3 m up at x 9.5..10, its range from 2.5 m (head room over the ground): the
+  // ground's range, holding the ledge, would stop at 2.5 m, 1 m over the ledge.
+  const LedgeRoom room(true);
+  const InfluenceVolume landing = influenceOfBounds({9.5, 0, 2.5}, {10, 6, 5.5}, 1.0);
+  const InfluenceVolume risen = room.raised(10, std::span(&landing, 1)).influence;
+  EXPECT_DOUBLE_EQ(innerHi(risen).x, 8.5) << "a gap from the landing's range";
+  EXPECT_NEAR(innerHi(risen).z, 4.0, 1e-4);
+  EXPECT_EQ(innerLo(risen), glm::dvec3(0, 0, -0.5));
+  EXPECT_FALSE(innerRangesOverlap(risen, landing));
+
+  // Its capture point at x 9 keeps the plan, and the range stops under the landing's.
+  EXPECT_EQ(innerHi(room.raised(10, std::span(&landing, 1), {9, 3, 1.6}).influence),
+            glm::dvec3(10, 6, 2.5));
+  // A landing range 3 m wide: the cut would give up more than a fifth of the plan, and leave
+  // ledge floor under the landing's range 3.5 m from every range over its height.
+  const InfluenceVolume wide = influenceOfBounds({7, 0, 2.5}, {10, 6, 5.5}, 1.0);
+  EXPECT_EQ(innerHi(room.raised(10, std::span(&wide, 1)).influence), glm::dvec3(10, 6, 2.5));
 }
 
 }  // namespace
