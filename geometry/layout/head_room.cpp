@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <optional>
 
 namespace probeproxy {
@@ -19,21 +20,25 @@ bool holds(const InnerRange& r, glm::dvec3 p) {
   return holdsInPlan(r, p) && p.z >= r.lo.z && p.z <= r.hi.z;
 }
 
-// The grid columns (as a FloorRect of `floor`) under a plan rectangle.
-FloorRect columnsUnder(const WalkableFloor& floor, glm::dvec2 lo, glm::dvec2 hi) {
-  const auto index = [&](double meters, double origin) {
-    return static_cast<int>(std::floor((meters - origin) / floor.spacingMeters));
-  };
-  FloorRect r;
-  r.column0 = index(lo.x, floor.originMeters.x), r.column1 = index(hi.x, floor.originMeters.x);
-  r.row0 = index(lo.y, floor.originMeters.y), r.row1 = index(hi.y, floor.originMeters.y);
-  return r;
-}
-
-// The range widened by a gap in plan, over the same heights.
-InnerRange gapAround(const InnerRange& range, double gapMeters) {
+// Calls f(point) for every walked floor cell in the range widened by a gap in plan, over the
+// range's heights.
+void forEachFloorAround(const FloorColumns& columns, const InnerRange& range, double gapMeters,
+                        const std::function<void(glm::dvec3)>& f) {
+  const WalkableFloor& walked = columns.floor();
   const glm::dvec2 gap(gapMeters);
-  return {{glm::dvec2(range.lo) - gap, range.lo.z}, {glm::dvec2(range.hi) + gap, range.hi.z}};
+  const InnerRange around{{glm::dvec2(range.lo) - gap, range.lo.z},
+                          {glm::dvec2(range.hi) + gap, range.hi.z}};
+  const auto index = [&](double meters, double origin) {
+    return static_cast<int>(std::floor((meters - origin) / walked.spacingMeters));
+  };
+  FloorRect under;  // the grid columns under `around`
+  under.column0 = index(around.lo.x, walked.originMeters.x);
+  under.column1 = index(around.hi.x, walked.originMeters.x);
+  under.row0 = index(around.lo.y, walked.originMeters.y);
+  under.row1 = index(around.hi.y, walked.originMeters.y);
+  columns.forEachInPlan(under, [&](std::size_t i) {
+    if (holds(around, walked.cells[i].pointMeters)) f(walked.cells[i].pointMeters);
+  });
 }
 
 // The ranges within a gap of `range` in plan (overlapping it in plan too).
@@ -50,19 +55,14 @@ std::vector<const InnerRange*> neighboursOf(const std::vector<std::optional<Inne
 // other range holds the floor.
 double highestFloorAround(const FloorColumns& columns, const InnerRange& range,
                           std::span<const InnerRange* const> neighbours, double gapMeters) {
-  const WalkableFloor& walked = columns.floor();
-  const InnerRange around = gapAround(range, gapMeters);
   double highest = -INFINITY;
-  columns.forEachInPlan(columnsUnder(walked, glm::dvec2(around.lo), glm::dvec2(around.hi)),
-                        [&](std::size_t i) {
-                          const glm::dvec3 p = walked.cells[i].pointMeters;
-                          if (p.z <= highest || !holds(around, p)) return;
-                          if (!holdsInPlan(range, p) &&
-                              std::any_of(neighbours.begin(), neighbours.end(),
-                                          [&](const InnerRange* n) { return holds(*n, p); }))
-                            return;
-                          highest = p.z;
-                        });
+  forEachFloorAround(columns, range, gapMeters, [&](glm::dvec3 p) {
+    if (p.z <= highest) return;
+    if (!holdsInPlan(range, p) && std::any_of(neighbours.begin(), neighbours.end(),
+                                              [&](const InnerRange* n) { return holds(*n, p); }))
+      return;
+    highest = p.z;
+  });
   return highest;
 }
 
@@ -72,13 +72,8 @@ double planArea(const InnerRange& r) { return (r.hi.x - r.lo.x) * (r.hi.y - r.lo
 // its own (warfare: fills over a range cut by half, overlapping it).
 constexpr double kKeptPlanShare = 0.8;
 
-// How far a floor point lies from a range in plan (0 inside).
-double planDistance(const InnerRange& r, glm::dvec3 p) {
-  const glm::dvec2 out =
-      glm::max(glm::max(glm::dvec2(r.lo) - glm::dvec2(p), glm::dvec2(p) - glm::dvec2(r.hi)),
-               glm::dvec2(0.0));
-  return std::max(out.x, out.y);
-}
+// How far a floor point lies outside a range in plan, as planApart measures ranges.
+double planApart(const InnerRange& r, glm::dvec3 p) { return planApart(r, InnerRange{p, p}); }
 
 // Cuts `range` back in plan to a gap from `other`, on the side that keeps the most of it,
 // keeping the capture point inside and at least a gap across; false (and no cut) when no side
@@ -109,17 +104,13 @@ bool cutAwayInPlan(InnerRange& range, const InnerRange& other, glm::dvec3 captur
 // cell that near some range, and farther out only the far ends of bands reach it.
 bool keepsFloorNear(const FloorColumns& columns, const InnerRange& before, const InnerRange& cut,
                     std::span<const InnerRange* const> neighbours, double gapMeters) {
-  const WalkableFloor& walked = columns.floor();
-  const InnerRange around = gapAround(before, gapMeters);
   bool near = true;
-  columns.forEachInPlan(
-      columnsUnder(walked, glm::dvec2(around.lo), glm::dvec2(around.hi)), [&](std::size_t i) {
-        const glm::dvec3 p = walked.cells[i].pointMeters;
-        if (!near || !holds(around, p) || planDistance(cut, p) <= gapMeters) return;
-        near = std::any_of(neighbours.begin(), neighbours.end(), [&](const InnerRange* n) {
-          return p.z >= n->lo.z && p.z <= n->hi.z && planDistance(*n, p) <= gapMeters;
-        });
-      });
+  forEachFloorAround(columns, before, gapMeters, [&](glm::dvec3 p) {
+    if (!near || planApart(cut, p) <= gapMeters) return;
+    near = std::any_of(neighbours.begin(), neighbours.end(), [&](const InnerRange* n) {
+      return p.z >= n->lo.z && p.z <= n->hi.z && planApart(*n, p) <= gapMeters;
+    });
+  });
   return near;
 }
 

@@ -195,16 +195,14 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
   joinThinRanges(level, walked, o.blendBandMeters, {volumes.data(), kept.size()}, r.probes);
   // Cameras over a ramp's or a ledge's floor stand over its range's top (head_room.h); the
   // fills' ranges too, once they are made.
-  const std::vector<InfluenceVolume> keptVolumes(volumes.begin(),
-                                                 volumes.begin() + std::ptrdiff_t(kept.size()));
-  raiseRangesOverRaisedFloor(walked, o.blendBandMeters, keptVolumes, r.probes);
+  raiseRangesOverRaisedFloor(walked, o.blendBandMeters, {volumes.data(), kept.size()}, r.probes);
   volumes.resize(kept.size());
   for (const LayoutProbe& p : r.probes) volumes.push_back(p.influence);
   // What of the survey's floor no volume reaches, or only the far ends of bands reach.
   for (const FloorFill& f :
        fillsForUncoveredFloor(level, walked, volumes, o.blendBandMeters, o.captureHeightMeters))
     r.probes.push_back({f.captureMeters, f.influence, kRoomFitMeters});
-  raiseRangesOverRaisedFloor(walked, o.blendBandMeters, keptVolumes, r.probes);
+  raiseRangesOverRaisedFloor(walked, o.blendBandMeters, {volumes.data(), kept.size()}, r.probes);
 }
 
 }  // namespace
