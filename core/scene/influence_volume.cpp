@@ -17,6 +17,15 @@ bool insideInfluence(const InfluenceVolume& influence, glm::dvec3 p) {
   return glm::distance(p, sphere.centerMeters) <= sphere.radiusMeters;
 }
 
+bool insideInnerRange(const InfluenceVolume& influence, glm::dvec3 p) {
+  if (const auto* box = std::get_if<BoxInfluence>(&influence)) {
+    const glm::dvec3 local = glm::conjugate(box->worldFromBox) * (p - box->centerMeters);
+    return glm::all(glm::lessThan(glm::abs(local), box->innerHalfExtentsMeters));
+  }
+  const auto& sphere = std::get<SphereInfluence>(influence);
+  return glm::distance(p, sphere.centerMeters) < sphere.innerRadiusMeters;
+}
+
 void influenceBounds(const InfluenceVolume& influence, glm::dvec3& lo, glm::dvec3& hi) {
   if (const auto* box = std::get_if<BoxInfluence>(&influence)) {
     const glm::dmat3 axes = glm::mat3_cast(box->worldFromBox);

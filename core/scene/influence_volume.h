@@ -32,6 +32,10 @@ namespace probeproxy {
 // Whether a point lies in the outer range of an influence volume.
 bool insideInfluence(const InfluenceVolume& influence, glm::dvec3 pointMeters);
 
+// Whether a point lies strictly inside the inner range: two ranges that only touch share no
+// volume.
+bool insideInnerRange(const InfluenceVolume& influence, glm::dvec3 pointMeters);
+
 // The axis-aligned bounds of the outer range, world frame.
 void influenceBounds(const InfluenceVolume& influence, glm::dvec3& minMeters,
                      glm::dvec3& maxMeters);

@@ -110,13 +110,12 @@ std::vector<FloorFill> fillsForUncoveredFloor(const LevelRayCaster& level,
     pullBandsIntoSight(level, floor, capture, gapMeters, innerLo, innerHi);
     const BoxInfluence fill = influenceOfBounds(innerLo, innerHi, gapMeters);
     // A fill over covered floor is worth less than a band through a wall (the pull leaves up
-    // to validate's limit behind it: downer, 6.4% measured at other heights) or a crowd.
+    // to validate's limit behind it: downer, 6.4% measured at other heights), and than a crowd
+    // the bands' trim cannot free (run_layout drops it then).
     const bool optional =
         std::all_of(members.begin(), members.end(), [&](std::size_t c) { return covered[c] != 0; });
-    if (optional &&
-        (innerLo != clearLo || innerHi != clearHi || crowdsTheBlend(fill, others, floor)))
-      continue;
-    fills.push_back({capture, fill});
+    if (optional && (innerLo != clearLo || innerHi != clearHi)) continue;
+    fills.push_back({capture, fill, optional && crowdsTheBlend(fill, others, floor)});
     others.push_back(fills.back().influence);
   }
   return fills;

@@ -3,7 +3,7 @@
 // ledges narrower than the candidates' 0.5 m grid (darkzone: 0.1% of its floor, three strips of
 // grating, in no volume). And floor the volumes reach only with the far ends of their bands,
 // where the blend pops (basement, darkzone: validate's weight_jump 0.03-0.3 per cm over such
-// floor); a fill there is dropped when it would make more bands meet than the blend takes.
+// floor); a fill there is marked when it would make more bands meet than the blend takes.
 // Each group of such cells gets a probe of its own: the cells within a gap of one another on
 // one storey, its inner range over them, its band as every range's (kept to the floor in its
 // probe's sight, bands_in_sight.h).
@@ -22,6 +22,9 @@ namespace probeproxy {
 struct FloorFill {
   glm::dvec3 captureMeters{0.0};
   BoxInfluence influence;
+  // Over floor some volume covers, it makes more bands meet than the blend takes: it stays only
+  // if trimming bands frees that crowd (overlap_trim.h).
+  bool crowdsTheBlend = false;
 };
 
 // `floor` is the floor every point of which must lie in some volume (the survey's); a cell

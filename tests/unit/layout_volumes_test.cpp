@@ -8,9 +8,11 @@
 #include "geometry/layout/candidate_service.h"
 #include "geometry/layout/head_room.h"
 #include "geometry/layout/layout_influence.h"
+#include "geometry/layout/overlap_trim.h"
 #include "geometry/layout/thin_ranges.h"
 #include "geometry/layout/uncovered_floor_fills.h"
 #include "geometry/survey/blended_error.h"
+#include "geometry/validate/camera_space.h"
 
 #include <gtest/gtest.h>
 #include <glm/common.hpp>
@@ -148,6 +150,24 @@ TEST(FillsForUncoveredFloor,
   EXPECT_LE(steepest(), 0.02) << "validate's weight_jump limit, per cm";
 }
 
+TEST(FillsForUncoveredFloor, AFillOverCoveredFloorWhereFiveBandsWouldMeetIsMarked) {
+  // The touching bands of the test before, and three volumes from beyond the room's north wall
+  // (y 4) whose bands reach 0.5 m into it over x 5: a fill there makes six meet.
+  const LevelRayCaster level(boxRoom({0, 0, 0}, {10, 4, 3.5f}));
+  const glm::dvec3 seed{2.0, 2.0, 1.6};
+  const WalkableFloor floor = walkableFloor(level, std::span(&seed, 1));
+  std::vector<InfluenceVolume> volumes{influenceOfBounds({0, 0, -0.5}, {3.5, 4, 2.5}, 1.0),
+                                       influenceOfBounds({6.5, 0, -0.5}, {10, 4, 2.5}, 1.0)};
+  std::vector<FloorFill> fills = fillsForUncoveredFloor(level, floor, volumes, 1.0, 1.6);
+  ASSERT_EQ(fills.size(), 1u);
+  EXPECT_FALSE(fills[0].crowdsTheBlend) << "two bands and the fill";
+  for (double half : {1.0, 2.0, 0.5})
+    volumes.push_back(influenceOfBounds({5 - half, 5, -0.5}, {5 + half, 8, 2.5}, 1.0));
+  fills = fillsForUncoveredFloor(level, floor, volumes, 1.0, 1.6);
+  ASSERT_EQ(fills.size(), 1u);
+  EXPECT_TRUE(fills[0].crowdsTheBlend) << "over floor the bands cover: kept only if trimmed";
+}
+
 // Probes over a 10 x 6 m room, one a range x lo..hi, y ylo..yhi each (bands 1.5 m).
 struct RangesInARoom {
   LevelRayCaster level{boxRoom({0, 0, 0}, {10, 6, 3.5f})};
@@ -211,6 +231,46 @@ TEST(JoinThinRanges, NoJoinBringsRangesCloserThanTheGap) {
   EXPECT_DOUBLE_EQ(innerHi(room.probes[0].influence).x, 3.0);
   EXPECT_DOUBLE_EQ(innerLo(room.probes[1].influence).y, 0.0);
   EXPECT_DOUBLE_EQ(innerHi(room.probes[1].influence).y, 6.0);
+}
+
+TEST(TrimBandsOverOverlapLimit, FiveBandsOverTheGapBesideAStripComeDownToFourAndStaySmooth) {
+  // The crossing of JoinThinRanges' first test, left as it is: five bands meet over the gap by
+  // the strip (eggandbacon's probe_106).
+  RangesInARoom room({{{0, 3, 0, 2.5}},
+                      {{4, 4.5, 0, 2.5}},
+                      {{5.5, 10, 0, 2.5}},
+                      {{0, 4.25, 3.5, 6}},
+                      {{5.25, 10, 3.5, 6}}});
+  ASSERT_EQ(room.mostMeeting(), 5);
+  const std::vector<InfluenceVolume> before = room.volumes();
+  // Where a camera can be, as validate measures: the bands reach past the room's walls.
+  const ReachableMask cameras = [&](std::span<const glm::dvec3> points, std::span<char> out) {
+    markCameraSpace(room.level, room.floor, 2.5, points, out);
+  };
+  trimBandsOverOverlapLimit(room.level, room.floor, 1.0, ValidateOptions{}, {}, room.probes);
+  EXPECT_EQ(room.mostMeeting(), 4);
+  int trimmed = 0;
+  for (std::size_t p = 0; p < before.size(); ++p) {
+    const BoxInfluence& was = std::get<BoxInfluence>(before[p]);
+    const BoxInfluence& is = std::get<BoxInfluence>(room.probes[p].influence);
+    EXPECT_EQ(is.innerHalfExtentsMeters, was.innerHalfExtentsMeters) << "inner ranges stay";
+    EXPECT_EQ(is.halfExtentsMeters.z, was.halfExtentsMeters.z) << "storeys' bands stay";
+    for (int axis : {0, 1})
+      EXPECT_GE(is.halfExtentsMeters[axis] - is.innerHalfExtentsMeters[axis], 1.0) << "a gap";
+    trimmed += is.halfExtentsMeters != was.halfExtentsMeters;
+  }
+  EXPECT_GE(trimmed, 1);
+  const std::vector<InfluenceVolume> volumes = room.volumes();
+  EXPECT_LE(measureWeightContinuity(volumes, gridOverVolumes(volumes, 1.6, 0.01), {}, cameras)
+                .largestJump,
+            0.02)
+      << "1 cm apart, where a camera can be (0.0207 before)";
+  for (const FloorCell& cell : room.floor.cells) {
+    bool covered = false;
+    for (const InfluenceVolume& v : volumes)
+      covered = covered || insideInfluence(v, cell.pointMeters);
+    EXPECT_TRUE(covered) << cell.pointMeters.x << ", " << cell.pointMeters.y;
+  }
 }
 
 // A 10 x 6 x 6 m room whose east part, x 6..10, is a ledge 1.5 m up (more than a step: a

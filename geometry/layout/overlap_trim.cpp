@@ -1,0 +1,214 @@
+#include "geometry/layout/overlap_trim.h"
+
+#include "core/blend/weight_continuity.h"
+#include "geometry/layout/layout_influence.h"
+#include "geometry/survey/blended_error.h"
+#include "geometry/validate/camera_space.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <tuple>
+#include <utility>
+
+namespace probeproxy {
+
+namespace {
+
+// A trimmed band keeps this many gaps: walked floor lies within a gap of some range, so the
+// band still reaches it; and across a gap of g between two ranges a band of b >= g keeps the
+// steepest change at 1 / (g (1 - g / 2b)) <= 2 per metre, validate's limit (layout_influence.h).
+constexpr double kLeastTrimmedBandOverGap = 1.0;
+
+// A grid point stands for its cell (the rule's sample): the face stops short of the whole cell,
+// and this much more, so the scene file's rounding cannot bring the point back in.
+constexpr double kFaceClearanceMeters = 1e-3;
+
+// The blend's steepest change near a trim is compared on this grid: validate's is 1 cm on a
+// small level and 5-7 cm on a corpus map (its budget of points per height).
+constexpr double kBlendCheckGridMeters = 0.05;
+
+struct Cut {
+  std::size_t volume = 0;  // index into the volumes, kept first
+  int axis = 0;            // 0 (x) or 1 (y): storeys meet through a short band already
+  double halfExtentMeters = 0.0;
+  auto key() const { return std::tie(volume, axis, halfExtentMeters); }
+  bool operator<(const Cut& o) const { return key() < o.key(); }
+};
+
+// The half extent along `axis` that leaves the cell of `p` out of the box, if the band keeps
+// its least width.
+std::optional<double> halfExtentLeaving(const BoxInfluence& box, int axis, glm::dvec3 p,
+                                        glm::dvec3 cellMeters, double gapMeters) {
+  const double half =
+      std::abs(p[axis] - box.centerMeters[axis]) - 0.5 * cellMeters[axis] - kFaceClearanceMeters;
+  const double band = half - box.innerHalfExtentsMeters[axis];
+  if (band < kLeastTrimmedBandOverGap * gapMeters) return std::nullopt;
+  return half;
+}
+
+// Every walked cell the trim gives up (its point lifted as the survey lifts it) in some other
+// volume.
+bool floorStaysCovered(const WalkableFloor& walked, std::span<const InfluenceVolume> volumes,
+                       std::size_t trimmed, const BoxInfluence& after) {
+  for (const FloorCell& cell : walked.cells) {
+    const glm::dvec3 p = cell.pointMeters + glm::dvec3(0.0, 0.0, kBlendLiftMeters);
+    if (!insideInfluence(volumes[trimmed], p) || insideInfluence(after, p)) continue;
+    bool covered = false;
+    for (std::size_t v = 0; v < volumes.size() && !covered; ++v)
+      covered = v != trimmed && insideInfluence(volumes[v], p);
+    if (!covered) return false;
+  }
+  return true;
+}
+
+// Where a camera can be on the rows of the blend's grids, remembered: a trim's blend is
+// compared before and after on the same rows, and a refused trim's rows come up again.
+class CameraRows {
+ public:
+  CameraRows(const LevelRayCaster& level, const WalkableFloor& walked, double headRoomMeters)
+      : level_(level), walked_(walked), headRoomMeters_(headRoomMeters) {}
+  void mark(std::span<const glm::dvec3> points, std::span<char> reachable) {
+    const glm::dvec3 first = points.empty() ? glm::dvec3(0.0) : points.front();
+    std::vector<char>& row = rows_[{first.x, first.y, first.z, points.size()}];
+    if (row.empty()) {
+      row.assign(points.size(), 0);
+      markCameraSpace(level_, walked_, headRoomMeters_, points, row);
+    }
+    std::copy(row.begin(), row.end(), reachable.begin());
+  }
+
+ private:
+  const LevelRayCaster& level_;
+  const WalkableFloor& walked_;
+  double headRoomMeters_;
+  std::map<std::tuple<double, double, double, std::size_t>, std::vector<char>> rows_;
+};
+
+// The steepest change of any weight per centimetre over the trimmed volume's bands along the
+// trimmed axis (where its weight changes), at the capture heights its box spans, where a camera
+// can be. Only volumes near there take part: the others weigh nothing there.
+double steepestChangeAlong(std::span<const InfluenceVolume> volumes, const BoxInfluence& box,
+                           int axis, std::span<const double> heights, CameraRows& rows) {
+  const glm::dvec3 lo = box.centerMeters - box.halfExtentsMeters;
+  const glm::dvec3 hi = box.centerMeters + box.halfExtentsMeters;
+  std::vector<InfluenceVolume> near;
+  for (const InfluenceVolume& v : volumes) {
+    glm::dvec3 vlo, vhi;
+    influenceBounds(v, vlo, vhi);
+    if (glm::all(glm::lessThan(vlo, hi)) && glm::all(glm::lessThan(lo, vhi))) near.push_back(v);
+  }
+  const ReachableMask cameras = [&](std::span<const glm::dvec3> points, std::span<char> out) {
+    rows.mark(points, out);
+  };
+  const double innerLo = box.centerMeters[axis] - box.innerHalfExtentsMeters[axis];
+  const double innerHi = box.centerMeters[axis] + box.innerHalfExtentsMeters[axis];
+  double steepest = 0.0;
+  for (double z : heights) {
+    if (z <= lo.z || z >= hi.z) continue;
+    for (auto [from, to] : {std::pair{lo[axis], innerLo}, std::pair{innerHi, hi[axis]}}) {
+      WeightGrid grid{glm::dvec2(lo), glm::dvec2(hi), z, kBlendCheckGridMeters};
+      grid.minMeters[axis] = from, grid.maxMeters[axis] = to;
+      const WeightContinuity c = measureWeightContinuity(near, grid, {}, cameras);
+      steepest = std::max(steepest, c.largestJump / (100.0 * kBlendCheckGridMeters));
+    }
+  }
+  return steepest;
+}
+
+// Whether the blend over the volume's bands along `axis` turns, with its box `trimmed`, no
+// steeper than validate's limit, or than it did.
+bool blendStaysSmooth(std::vector<InfluenceVolume>& volumes, std::size_t v,
+                      const BoxInfluence& trimmed, int axis, std::span<const double> heights,
+                      CameraRows& rows, double limitPerCentimeter) {
+  const BoxInfluence old = std::get<BoxInfluence>(volumes[v]);
+  const double before = steepestChangeAlong(volumes, old, axis, heights, rows);
+  volumes[v] = trimmed;
+  const double after = steepestChangeAlong(volumes, old, axis, heights, rows);
+  volumes[v] = old;
+  return after <= std::max(before, limitPerCentimeter);
+}
+
+// The trim that frees the most points for the least band, none refused before. Per volume and
+// axis each point asks for a half extent; a cut to one of them frees every point asking for as
+// much or less.
+std::optional<Cut> nextCut(std::span<const OverlapPoint> points,
+                           std::span<const InfluenceVolume> volumes, std::size_t keptCount,
+                           glm::dvec3 cellMeters, double gapMeters, const std::set<Cut>& refused) {
+  std::map<std::pair<std::size_t, int>, std::vector<double>> asked;
+  for (const OverlapPoint& p : points) {
+    for (int index : p.volumes) {
+      const std::size_t v = static_cast<std::size_t>(index);
+      if (v < keptCount || !innerRangeOf(volumes[v])) continue;  // the layout's own boxes only
+      for (int axis : {0, 1})
+        if (auto half = halfExtentLeaving(std::get<BoxInfluence>(volumes[v]), axis, p.pointMeters,
+                                          cellMeters, gapMeters))
+          asked[{v, axis}].push_back(*half);
+    }
+  }
+  std::optional<Cut> best;
+  std::size_t bestFreed = 0;
+  double bestCut = 0.0;
+  for (auto& [which, halves] : asked) {
+    std::sort(halves.begin(), halves.end(), std::greater<>());
+    const double now = std::get<BoxInfluence>(volumes[which.first]).halfExtentsMeters[which.second];
+    for (std::size_t j = 0; j < halves.size(); ++j) {
+      if (j + 1 < halves.size() && halves[j + 1] == halves[j]) continue;  // frees those too
+      const Cut cut{which.first, which.second, halves[j]};
+      const std::size_t freed = j + 1;
+      if (refused.count(cut)) continue;
+      if (!best || freed > bestFreed || (freed == bestFreed && now - halves[j] < bestCut))
+        best = cut, bestFreed = freed, bestCut = now - halves[j];
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+std::vector<OverlapPoint> trimBandsOverOverlapLimit(const LevelRayCaster& level,
+                                                    const WalkableFloor& walked, double gapMeters,
+                                                    const ValidateOptions& limits,
+                                                    std::span<const InfluenceVolume> kept,
+                                                    std::vector<LayoutProbe>& probes) {
+  std::vector<InfluenceVolume> volumes(kept.begin(), kept.end());
+  // validate's weight_jump planes: the capture heights.
+  std::vector<double> heights;
+  for (const LayoutProbe& p : probes) {
+    volumes.push_back(p.influence);
+    heights.push_back(p.captureMeters.z);
+  }
+  std::sort(heights.begin(), heights.end());
+  heights.erase(std::unique(heights.begin(), heights.end()), heights.end());
+  OverlapPoints over = overlapsOverLimit(volumes, level, walked, limits);
+  std::set<Cut> refused;
+  CameraRows rows(level, walked, limits.cameraHeadRoomMeters);
+  std::vector<OverlapPoint>& points = over.points;
+  while (!points.empty()) {
+    const std::optional<Cut> cut =
+        nextCut(points, volumes, kept.size(), over.grid.cellMeters, gapMeters, refused);
+    if (!cut) break;
+    BoxInfluence trimmed = std::get<BoxInfluence>(volumes[cut->volume]);
+    trimmed.halfExtentsMeters[cut->axis] = cut->halfExtentMeters;
+    if (!floorStaysCovered(walked, volumes, cut->volume, trimmed) ||
+        !blendStaysSmooth(volumes, cut->volume, trimmed, cut->axis, heights, rows,
+                          limits.maxWeightJumpPerCentimeter)) {
+      refused.insert(*cut);
+      continue;
+    }
+    volumes[cut->volume] = trimmed;
+    probes[cut->volume - kept.size()].influence = trimmed;
+    // The points the trim freed lose the volume; those still over the limit stay.
+    std::vector<OverlapPoint> left;
+    for (OverlapPoint& p : points) {
+      auto it = std::find(p.volumes.begin(), p.volumes.end(), static_cast<int>(cut->volume));
+      if (it != p.volumes.end() && !insideInfluence(trimmed, p.pointMeters)) p.volumes.erase(it);
+      if (static_cast<int>(p.volumes.size()) > limits.maxOverlap) left.push_back(std::move(p));
+    }
+    points = std::move(left);
+  }
+  return points;
+}
+
+}  // namespace probeproxy

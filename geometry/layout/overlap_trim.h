@@ -1,0 +1,35 @@
+#pragma once
+// Where three ranges meet at a T across their gaps and a fourth's corner or a thin strip is
+// near, four or five bands 1.5 gaps deep cross over the gap: more outer ranges than the blend
+// takes meet outside every inner range, where a camera stands (validate's too_many_overlaps:
+// eggandbacon's five over 1.25 m^3 beside a 0.5 m strip, skyway, stormkeep, toxic,
+// bloodprison). A probe drops out of the blend there and its lighting pops. So the band of a
+// volume that reaches such a point is trimmed back off it: the trim that frees the most such
+// points for the least band first. A box keeps one centre, so its band shrinks on both sides of
+// that axis; it keeps at least a gap (a floor cell lies within a gap of some range), the floor
+// it gives up stays in another volume, and near the volume the blend's steepest change stays
+// under validate's limit (or no steeper than before): otherwise the trim is not made.
+
+#include "geometry/floor/walkable_floor.h"
+#include "geometry/layout/run_layout.h"
+#include "geometry/raycast/level_ray_caster.h"
+#include "geometry/validate/overlap_points.h"
+#include "geometry/validate/validate_scene.h"
+
+#include <span>
+#include <vector>
+
+namespace probeproxy {
+
+// `probes`: the layout's own (axis-aligned boxes from influenceOfBounds), trimmed in place;
+// `kept`: volumes counted but never trimmed (an artist's, kept by --keep-authored). `limits`:
+// the validate options the layout must pass (maxOverlap, maxWeightJumpPerCentimeter,
+// cameraHeadRoomMeters, the grid). Deterministic: one trim at a time, ties by index. Returns
+// the points still over the limit (their volumes: indices into kept, then probes).
+std::vector<OverlapPoint> trimBandsOverOverlapLimit(const LevelRayCaster& level,
+                                                    const WalkableFloor& walked, double gapMeters,
+                                                    const ValidateOptions& limits,
+                                                    std::span<const InfluenceVolume> kept,
+                                                    std::vector<LayoutProbe>& probes);
+
+}  // namespace probeproxy
