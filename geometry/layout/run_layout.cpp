@@ -201,22 +201,23 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
   volumes.resize(kept.size());
   for (const LayoutProbe& p : r.probes) volumes.push_back(p.influence);
   // What of the survey's floor no volume reaches, or only the far ends of bands reach.
-  std::set<std::size_t> crowding;  // of r.probes
+  std::set<std::size_t> optional;  // of r.probes
   for (const FloorFill& f :
        fillsForUncoveredFloor(level, walked, volumes, o.blendBandMeters, o.captureHeightMeters)) {
-    if (f.crowdsTheBlend) crowding.insert(r.probes.size());
+    if (f.optional) optional.insert(r.probes.size());
     r.probes.push_back({f.captureMeters, f.influence, kRoomFitMeters});
   }
   raiseRangesOverRaisedFloor(walked, o.blendBandMeters, {volumes.data(), kept.size()}, r.probes);
-  // Where more bands cross than the blend takes (overlap_trim.h), to validate's defaults. A fill
-  // in a crowd the trim could not free goes, and the rest rise and are trimmed again without it.
+  // Where more bands cross than the blend takes (overlap_trim.h), to validate's defaults. An
+  // optional fill in a crowd the trim could not free goes, and the rest rise and are trimmed
+  // again without it.
   const std::span<const InfluenceVolume> keptVolumes(volumes.data(), kept.size());
   const std::vector<LayoutProbe> untrimmed = r.probes;
   std::set<std::size_t> dropped;
   for (const OverlapPoint& p : trimBandsOverOverlapLimit(level, walked, o.blendBandMeters,
                                                          ValidateOptions{}, keptVolumes, r.probes))
     for (int v : p.volumes)
-      if (static_cast<std::size_t>(v) >= kept.size() && crowding.count(v - kept.size()))
+      if (static_cast<std::size_t>(v) >= kept.size() && optional.count(v - kept.size()))
         dropped.insert(v - kept.size());
   if (dropped.empty()) return;
   r.probes.clear();

@@ -3,10 +3,15 @@
 // ledges narrower than the candidates' 0.5 m grid (darkzone: 0.1% of its floor, three strips of
 // grating, in no volume). And floor the volumes reach only with the far ends of their bands,
 // where the blend pops (basement, darkzone: validate's weight_jump 0.03-0.3 per cm over such
-// floor); a fill there is marked when it would make more bands meet than the blend takes.
+// floor). Then floor whose cameras (an eye 1.6 m over it, a head just under 2.5 m) only the far
+// ends of bands reach: over a ramp whose range stops under a range above it (head_room.h;
+// warfare, stormkeep, bloodprison), where the camera stands over that range's top; a fill there
+// starts over that top, its capture point half way up the head room left.
 // Each group of such cells gets a probe of its own: the cells within a gap of one another on
 // one storey, its inner range over them, its band as every range's (kept to the floor in its
-// probe's sight, bands_in_sight.h).
+// probe's sight, bands_in_sight.h). A fill over floor a volume covers already is optional: it
+// is not made when its band must be pulled into sight, and run_layout drops it when it is in a
+// crowd of bands the trim cannot free (overlap_trim.h).
 
 #include "core/scene/influence_volume.h"
 #include "geometry/floor/walkable_floor.h"
@@ -22,9 +27,7 @@ namespace probeproxy {
 struct FloorFill {
   glm::dvec3 captureMeters{0.0};
   BoxInfluence influence;
-  // Over floor some volume covers, it makes more bands meet than the blend takes: it stays only
-  // if trimming bands frees that crowd (overlap_trim.h).
-  bool crowdsTheBlend = false;
+  bool optional = false;  // over floor some volume covers already
 };
 
 // `floor` is the floor every point of which must lie in some volume (the survey's); a cell

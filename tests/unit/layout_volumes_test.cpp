@@ -150,24 +150,6 @@ TEST(FillsForUncoveredFloor,
   EXPECT_LE(steepest(), 0.02) << "validate's weight_jump limit, per cm";
 }
 
-TEST(FillsForUncoveredFloor, AFillOverCoveredFloorWhereFiveBandsWouldMeetIsMarked) {
-  // The touching bands of the test before, and three volumes from beyond the room's north wall
-  // (y 4) whose bands reach 0.5 m into it over x 5: a fill there makes six meet.
-  const LevelRayCaster level(boxRoom({0, 0, 0}, {10, 4, 3.5f}));
-  const glm::dvec3 seed{2.0, 2.0, 1.6};
-  const WalkableFloor floor = walkableFloor(level, std::span(&seed, 1));
-  std::vector<InfluenceVolume> volumes{influenceOfBounds({0, 0, -0.5}, {3.5, 4, 2.5}, 1.0),
-                                       influenceOfBounds({6.5, 0, -0.5}, {10, 4, 2.5}, 1.0)};
-  std::vector<FloorFill> fills = fillsForUncoveredFloor(level, floor, volumes, 1.0, 1.6);
-  ASSERT_EQ(fills.size(), 1u);
-  EXPECT_FALSE(fills[0].crowdsTheBlend) << "two bands and the fill";
-  for (double half : {1.0, 2.0, 0.5})
-    volumes.push_back(influenceOfBounds({5 - half, 5, -0.5}, {5 + half, 8, 2.5}, 1.0));
-  fills = fillsForUncoveredFloor(level, floor, volumes, 1.0, 1.6);
-  ASSERT_EQ(fills.size(), 1u);
-  EXPECT_TRUE(fills[0].crowdsTheBlend) << "over floor the bands cover: kept only if trimmed";
-}
-
 // Probes over a 10 x 6 m room, one a range x lo..hi, y ylo..yhi each (bands 1.5 m).
 struct RangesInARoom {
   LevelRayCaster level{boxRoom({0, 0, 0}, {10, 6, 3.5f})};
@@ -362,6 +344,25 @@ TEST(RaiseRangesOverRaisedFloor, UnderARangeAboveItGivesThatRangeTheGapInPlanAnd
   // ledge floor under the landing's range 3.5 m from every range over its height.
   const InfluenceVolume wide = influenceOfBounds({7, 0, 2.5}, {10, 6, 5.5}, 1.0);
   EXPECT_EQ(innerHi(room.raised(10, std::span(&wide, 1)).influence), glm::dvec3(10, 6, 2.5));
+}
+
+TEST(FillsForUncoveredFloor, EyesOverALedgeOverTheirRangesTopGetAFillStartingOverThatTop) {
+  // The ground's range stops at 2.5 m (as under a gallery range above it, head_room.h): an eye
+  // 1.6 m over the ledge (z 3.1) is over its band too, in no volume; its floor is covered.
+  const LedgeRoom room;
+  const std::vector<InfluenceVolume> volumes{LedgeRoom::ground(10)};
+  const std::vector<FloorFill> fills =
+      fillsForUncoveredFloor(room.level, room.floor, volumes, 1.0, 1.6);
+  ASSERT_EQ(fills.size(), 1u) << "the ledge's eyes, one group";
+  EXPECT_TRUE(fills[0].optional) << "its floor is in the ground's range";
+  EXPECT_DOUBLE_EQ(innerLo(fills[0].influence).z, 2.5 + kInnerClearanceMeters) << "over its top";
+  EXPECT_DOUBLE_EQ(innerHi(fills[0].influence).z, 1.5 + 2.5) << "head room over the ledge";
+  EXPECT_FALSE(innerRangesOverlap(volumes[0], fills[0].influence));
+  for (const FloorCell& c : room.floor.cells) {
+    if (c.pointMeters.z < 1.0) continue;
+    const glm::dvec3 eye = c.pointMeters + glm::dvec3(0, 0, 1.6);
+    EXPECT_LE(normalizedDistance(fills[0].influence, eye), 0.67) << eye.x << ", " << eye.y;
+  }
 }
 
 }  // namespace
