@@ -155,7 +155,9 @@ struct RangesInARoom {
   LevelRayCaster level{boxRoom({0, 0, 0}, {10, 6, 3.5f})};
   WalkableFloor floor;
   std::vector<LayoutProbe> probes;
-  explicit RangesInARoom(std::initializer_list<std::array<double, 4>> ranges) {
+  explicit RangesInARoom(std::initializer_list<std::array<double, 4>> ranges)
+      : RangesInARoom(std::span(ranges.begin(), ranges.size())) {}
+  explicit RangesInARoom(std::span<const std::array<double, 4>> ranges) {
     const glm::dvec3 seed{2.0, 2.0, 1.6};
     floor = walkableFloor(level, std::span(&seed, 1));
     for (const auto& [lo, hi, ylo, yhi] : ranges)
@@ -186,14 +188,14 @@ struct RangesInARoom {
   }
 };
 
+// South: 0..3, a 0.5 m strip at 4..4.5, 5.5..10; north, across a 1 m gap: 0..4.25 and
+// 5.25..10. Over the gap by the strip five bands meet (basement's crossing, probe_068;
+// eggandbacon's probe_106).
+constexpr std::array<std::array<double, 4>, 5> kCrossingByAStrip{
+    {{0, 3, 0, 2.5}, {4, 4.5, 0, 2.5}, {5.5, 10, 0, 2.5}, {0, 4.25, 3.5, 6}, {5.25, 10, 3.5, 6}}};
+
 TEST(JoinThinRanges, AStripInARowJoinsANeighbourAndNoMoreThanTheBlendTakesMeet) {
-  // South: 0..3, a 0.5 m strip at 4..4.5, 5.5..10; north, across a 1 m gap: 0..4.25 and
-  // 5.25..10. Over the gap by the strip five bands meet (basement's crossing, probe_068).
-  RangesInARoom room({{{0, 3, 0, 2.5}},
-                      {{4, 4.5, 0, 2.5}},
-                      {{5.5, 10, 0, 2.5}},
-                      {{0, 4.25, 3.5, 6}},
-                      {{5.25, 10, 3.5, 6}}});
+  RangesInARoom room(kCrossingByAStrip);
   EXPECT_EQ(room.mostMeeting(), 5);
   joinThinRanges(room.level, room.floor, 1.0, {}, room.probes);
   ASSERT_EQ(room.probes.size(), 4u);
@@ -216,13 +218,8 @@ TEST(JoinThinRanges, NoJoinBringsRangesCloserThanTheGap) {
 }
 
 TEST(TrimBandsOverOverlapLimit, FiveBandsOverTheGapBesideAStripComeDownToFourAndStaySmooth) {
-  // The crossing of JoinThinRanges' first test, left as it is: five bands meet over the gap by
-  // the strip (eggandbacon's probe_106).
-  RangesInARoom room({{{0, 3, 0, 2.5}},
-                      {{4, 4.5, 0, 2.5}},
-                      {{5.5, 10, 0, 2.5}},
-                      {{0, 4.25, 3.5, 6}},
-                      {{5.25, 10, 3.5, 6}}});
+  // The crossing left as it is (no join).
+  RangesInARoom room(kCrossingByAStrip);
   ASSERT_EQ(room.mostMeeting(), 5);
   const std::vector<InfluenceVolume> before = room.volumes();
   // Where a camera can be, as validate measures: the bands reach past the room's walls.
