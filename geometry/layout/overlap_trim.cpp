@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 #include <tuple>
 #include <utility>
@@ -21,8 +22,9 @@ namespace {
 // steepest change at 1 / (g (1 - g / 2b)) <= 2 per metre, validate's limit (layout_influence.h).
 constexpr double kLeastTrimmedBandOverGap = 1.0;
 
-// A grid point stands for its cell (the rule's sample): the face stops short of the whole cell,
-// and this much more, so the scene file's rounding cannot bring the point back in.
+// A grid point stands for its cell (the rule's sample, and validate's grid moves when a trim
+// moves the volumes' bounds): the face stops short of the whole cell, and this much more, so
+// the scene file's rounding cannot bring the point back in.
 constexpr double kFaceClearanceMeters = 1e-3;
 
 // The blend's steepest change near a trim is compared on this grid: validate's is 1 cm on a
