@@ -16,10 +16,6 @@ bool holdsInPlan(const InnerRange& r, glm::dvec3 p) {
   return p.x >= r.lo.x && p.x <= r.hi.x && p.y >= r.lo.y && p.y <= r.hi.y;
 }
 
-bool holds(const InnerRange& r, glm::dvec3 p) {
-  return holdsInPlan(r, p) && p.z >= r.lo.z && p.z <= r.hi.z;
-}
-
 // Calls f(point) for every walked floor cell in the range widened by a gap in plan, over the
 // range's heights.
 void forEachFloorAround(const FloorColumns& columns, const InnerRange& range, double gapMeters,

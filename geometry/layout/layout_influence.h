@@ -53,6 +53,12 @@ struct InnerRange {
 // As axisAlignedInnerRange; none for any other volume.
 std::optional<InnerRange> innerRangeOf(const InfluenceVolume& volume);
 
+// Whether the range holds the point, faces included.
+inline bool holds(const InnerRange& r, glm::dvec3 p) {
+  return p.x >= r.lo.x && p.x <= r.hi.x && p.y >= r.lo.y && p.y <= r.hi.y && p.z >= r.lo.z &&
+         p.z <= r.hi.z;
+}
+
 inline bool overlapInHeight(const InnerRange& a, const InnerRange& b) {
   return a.lo.z < b.hi.z && b.lo.z < a.hi.z;
 }

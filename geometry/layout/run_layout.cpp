@@ -168,6 +168,7 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
   // (a ledge over a lower floor) put one range's box in the air over the other's floor.
   std::vector<InfluenceVolume> volumes;
   for (const SurveyProbe& k : kept) volumes.push_back(k.influence);
+  const std::vector<InfluenceVolume> keptVolumes = volumes;  // never cut, trimmed or moved
   // The survey walks a finer floor than the candidates (validate's leak rule too).
   const WalkableFloor walked = walkableFloor(level, seedsMeters, o.coverFloor);
   const auto add = [&](const FloorRect& rect, glm::dvec3 capture, double fitMeters) {
@@ -194,10 +195,10 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
         kRoomFitMeters);
   }
   // Strips narrower than the gap join a neighbour (five bands met over the gap beside them).
-  joinThinRanges(level, walked, o.blendBandMeters, {volumes.data(), kept.size()}, r.probes);
+  joinThinRanges(level, walked, o.blendBandMeters, keptVolumes, r.probes);
   // Cameras over a ramp's or a ledge's floor stand over its range's top (head_room.h); the
   // fills' ranges too, once they are made.
-  raiseRangesOverRaisedFloor(walked, o.blendBandMeters, {volumes.data(), kept.size()}, r.probes);
+  raiseRangesOverRaisedFloor(walked, o.blendBandMeters, keptVolumes, r.probes);
   volumes.resize(kept.size());
   for (const LayoutProbe& p : r.probes) volumes.push_back(p.influence);
   // What of the survey's floor no volume reaches, or only the far ends of bands reach.
@@ -207,11 +208,10 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
     if (f.optional) optional.insert(r.probes.size());
     r.probes.push_back({f.captureMeters, f.influence, kRoomFitMeters});
   }
-  raiseRangesOverRaisedFloor(walked, o.blendBandMeters, {volumes.data(), kept.size()}, r.probes);
+  raiseRangesOverRaisedFloor(walked, o.blendBandMeters, keptVolumes, r.probes);
   // Where more bands cross than the blend takes (overlap_trim.h), to validate's defaults. An
   // optional fill in a crowd the trim could not free goes, and the rest rise and are trimmed
   // again without it.
-  const std::span<const InfluenceVolume> keptVolumes(volumes.data(), kept.size());
   const std::vector<LayoutProbe> untrimmed = r.probes;
   std::set<std::size_t> dropped;
   for (const OverlapPoint& p : trimBandsOverOverlapLimit(level, walked, o.blendBandMeters,

@@ -64,8 +64,7 @@ double nearestBand(std::span<const InfluenceVolume> volumes, glm::dvec3 p) {
 double topOfRangesHolding(std::span<const InfluenceVolume> volumes, glm::dvec3 p) {
   double top = -INFINITY;
   for (const InfluenceVolume& v : volumes)
-    if (const std::optional<InnerRange> r = innerRangeOf(v);
-        r && glm::all(glm::greaterThanEqual(p, r->lo)) && glm::all(glm::lessThanEqual(p, r->hi)))
+    if (const std::optional<InnerRange> r = innerRangeOf(v); r && holds(*r, p))
       top = std::max(top, r->hi.z);
   return top;
 }
