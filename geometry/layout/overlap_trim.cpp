@@ -31,13 +31,27 @@ constexpr double kFaceClearanceMeters = 1e-3;
 // small level and 5-7 cm on a corpus map (its budget of points per height).
 constexpr double kBlendCheckGridMeters = 0.05;
 
+// A band trim (side 0: the half extent becomes `meters`) or, for a fill whose faces may move,
+// one face moved in by `meters` with its band (side -1 low, +1 high).
 struct Cut {
   std::size_t volume = 0;  // index into the volumes, kept first
   int axis = 0;            // 0 (x) or 1 (y): storeys meet through a short band already
-  double halfExtentMeters = 0.0;
-  auto key() const { return std::tie(volume, axis, halfExtentMeters); }
+  int side = 0;
+  double meters = 0.0;
+  auto key() const { return std::tie(volume, axis, side, meters); }
   bool operator<(const Cut& o) const { return key() < o.key(); }
 };
+
+BoxInfluence cutBox(BoxInfluence box, const Cut& cut) {
+  if (cut.side == 0) {
+    box.halfExtentsMeters[cut.axis] = cut.meters;
+    return box;
+  }
+  box.centerMeters[cut.axis] -= cut.side * 0.5 * cut.meters;
+  box.halfExtentsMeters[cut.axis] -= 0.5 * cut.meters;
+  box.innerHalfExtentsMeters[cut.axis] -= 0.5 * cut.meters;
+  return box;
+}
 
 // The half extent along `axis` that leaves the cell of `p` out of the box, if the band keeps
 // its least width.
@@ -48,6 +62,19 @@ std::optional<double> halfExtentLeaving(const BoxInfluence& box, int axis, glm::
   const double band = half - box.innerHalfExtentsMeters[axis];
   if (band < kLeastTrimmedBandOverGap * gapMeters) return std::nullopt;
   return half;
+}
+
+// How far the `side` face along `axis` moves in to leave the cell of `p` out of the box, if the
+// inner range keeps some width and the box its capture point.
+std::optional<double> faceCutLeaving(const BoxInfluence& box, int axis, int side, glm::dvec3 p,
+                                     glm::dvec3 cellMeters, glm::dvec3 captureMeters) {
+  const double face = box.centerMeters[axis] + side * box.halfExtentsMeters[axis];
+  const double inside = side * (face - p[axis]);
+  const Cut cut{0, axis, side, inside + 0.5 * cellMeters[axis] + kFaceClearanceMeters};
+  const BoxInfluence moved = cutBox(box, cut);
+  if (moved.innerHalfExtentsMeters[axis] <= 0.0 || !insideInfluence(moved, captureMeters))
+    return std::nullopt;
+  return cut.meters;
 }
 
 // Every walked cell the trim gives up (its point lifted as the survey lifts it) in some other
@@ -89,12 +116,14 @@ class CameraRows {
 };
 
 // The steepest change of any weight per centimetre over the trimmed volume's bands along the
-// trimmed axis (where its weight changes), at the capture heights its box spans, where a camera
-// can be. Only volumes near there take part: the others weigh nothing there.
-double steepestChangeAlong(std::span<const InfluenceVolume> volumes, const BoxInfluence& box,
-                           int axis, std::span<const double> heights, CameraRows& rows) {
-  const glm::dvec3 lo = box.centerMeters - box.halfExtentsMeters;
-  const glm::dvec3 hi = box.centerMeters + box.halfExtentsMeters;
+// trimmed axis (where its weight changes), before and after the cut (a moved face brings its
+// band in), at the capture heights its box spans, where a camera can be. Only volumes near
+// there take part: the others weigh nothing there.
+double steepestChangeAlong(std::span<const InfluenceVolume> volumes, const BoxInfluence& before,
+                           const BoxInfluence& after, int axis, std::span<const double> heights,
+                           CameraRows& rows) {
+  const glm::dvec3 lo = before.centerMeters - before.halfExtentsMeters;
+  const glm::dvec3 hi = before.centerMeters + before.halfExtentsMeters;
   std::vector<InfluenceVolume> near;
   for (const InfluenceVolume& v : volumes) {
     glm::dvec3 vlo, vhi;
@@ -104,12 +133,20 @@ double steepestChangeAlong(std::span<const InfluenceVolume> volumes, const BoxIn
   const ReachableMask cameras = [&](std::span<const glm::dvec3> points, std::span<char> out) {
     rows.mark(points, out);
   };
-  const double innerLo = box.centerMeters[axis] - box.innerHalfExtentsMeters[axis];
-  const double innerHi = box.centerMeters[axis] + box.innerHalfExtentsMeters[axis];
+  const auto side = [&](const BoxInfluence& b, double sign, double extent) {
+    return b.centerMeters[axis] + sign * extent;
+  };
+  const std::pair<double, double> bands[] = {
+      {side(before, -1, before.halfExtentsMeters[axis]),
+       std::max(side(before, -1, before.innerHalfExtentsMeters[axis]),
+                side(after, -1, after.innerHalfExtentsMeters[axis]))},
+      {std::min(side(before, 1, before.innerHalfExtentsMeters[axis]),
+                side(after, 1, after.innerHalfExtentsMeters[axis])),
+       side(before, 1, before.halfExtentsMeters[axis])}};
   double steepest = 0.0;
   for (double z : heights) {
     if (z <= lo.z || z >= hi.z) continue;
-    for (auto [from, to] : {std::pair{lo[axis], innerLo}, std::pair{innerHi, hi[axis]}}) {
+    for (auto [from, to] : bands) {
       WeightGrid grid{glm::dvec2(lo), glm::dvec2(hi), z, kBlendCheckGridMeters};
       grid.minMeters[axis] = from, grid.maxMeters[axis] = to;
       const WeightContinuity c = measureWeightContinuity(near, grid, {}, cameras);
@@ -125,43 +162,57 @@ bool blendStaysSmooth(std::vector<InfluenceVolume>& volumes, std::size_t v,
                       const BoxInfluence& trimmed, int axis, std::span<const double> heights,
                       CameraRows& rows, double limitPerCentimeter) {
   const BoxInfluence old = std::get<BoxInfluence>(volumes[v]);
-  const double before = steepestChangeAlong(volumes, old, axis, heights, rows);
+  const double before = steepestChangeAlong(volumes, old, trimmed, axis, heights, rows);
   volumes[v] = trimmed;
-  const double after = steepestChangeAlong(volumes, old, axis, heights, rows);
+  const double after = steepestChangeAlong(volumes, old, trimmed, axis, heights, rows);
   volumes[v] = old;
   return after <= std::max(before, limitPerCentimeter);
 }
 
-// The trim that frees the most points for the least band, none refused before. Per volume and
-// axis each point asks for a half extent; a cut to one of them frees every point asking for as
-// much or less.
+// The trim that frees the most points for the least band, none refused before. Per volume, axis
+// and side each point asks for a half extent (or a face's cut); a cut to one of them frees
+// every point asking for as much or less.
 std::optional<Cut> nextCut(std::span<const OverlapPoint> points,
                            std::span<const InfluenceVolume> volumes, std::size_t keptCount,
-                           glm::dvec3 cellMeters, double gapMeters, const std::set<Cut>& refused) {
-  std::map<std::pair<std::size_t, int>, std::vector<double>> asked;
+                           std::span<const LayoutProbe> probes,
+                           const std::set<std::size_t>& facesMove, glm::dvec3 cellMeters,
+                           double gapMeters, const std::set<Cut>& refused) {
+  std::map<std::tuple<std::size_t, int, int>, std::vector<double>> asked;
   for (const OverlapPoint& p : points) {
     for (int index : p.volumes) {
       const std::size_t v = static_cast<std::size_t>(index);
       if (v < keptCount || !innerRangeOf(volumes[v])) continue;  // the layout's own boxes only
-      for (int axis : {0, 1})
-        if (auto half = halfExtentLeaving(std::get<BoxInfluence>(volumes[v]), axis, p.pointMeters,
-                                          cellMeters, gapMeters))
-          asked[{v, axis}].push_back(*half);
+      const BoxInfluence& box = std::get<BoxInfluence>(volumes[v]);
+      for (int axis : {0, 1}) {
+        if (auto half = halfExtentLeaving(box, axis, p.pointMeters, cellMeters, gapMeters))
+          asked[{v, axis, 0}].push_back(*half);
+        if (!facesMove.count(v - keptCount)) continue;
+        for (int side : {-1, 1})
+          if (auto cut = faceCutLeaving(box, axis, side, p.pointMeters, cellMeters,
+                                        probes[v - keptCount].captureMeters))
+            asked[{v, axis, side}].push_back(*cut);
+      }
     }
   }
   std::optional<Cut> best;
   std::size_t bestFreed = 0;
   double bestCut = 0.0;
-  for (auto& [which, halves] : asked) {
-    std::sort(halves.begin(), halves.end(), std::greater<>());
-    const double now = std::get<BoxInfluence>(volumes[which.first]).halfExtentsMeters[which.second];
-    for (std::size_t j = 0; j < halves.size(); ++j) {
-      if (j + 1 < halves.size() && halves[j + 1] == halves[j]) continue;  // frees those too
-      const Cut cut{which.first, which.second, halves[j]};
+  for (auto& [which, values] : asked) {
+    const auto [v, axis, side] = which;
+    // Band trims ask for half extents (less is more cut), faces for cuts.
+    if (side == 0)
+      std::sort(values.begin(), values.end(), std::greater<>());
+    else
+      std::sort(values.begin(), values.end());
+    const double now = std::get<BoxInfluence>(volumes[v]).halfExtentsMeters[axis];
+    for (std::size_t j = 0; j < values.size(); ++j) {
+      if (j + 1 < values.size() && values[j + 1] == values[j]) continue;  // frees those too
+      const Cut cut{v, axis, side, values[j]};
       const std::size_t freed = j + 1;
+      const double band = side == 0 ? now - values[j] : values[j];
       if (refused.count(cut)) continue;
-      if (!best || freed > bestFreed || (freed == bestFreed && now - halves[j] < bestCut))
-        best = cut, bestFreed = freed, bestCut = now - halves[j];
+      if (!best || freed > bestFreed || (freed == bestFreed && band < bestCut))
+        best = cut, bestFreed = freed, bestCut = band;
     }
   }
   return best;
@@ -169,11 +220,11 @@ std::optional<Cut> nextCut(std::span<const OverlapPoint> points,
 
 }  // namespace
 
-std::vector<OverlapPoint> trimBandsOverOverlapLimit(const LevelRayCaster& level,
-                                                    const WalkableFloor& walked, double gapMeters,
-                                                    const ValidateOptions& limits,
-                                                    std::span<const InfluenceVolume> kept,
-                                                    std::vector<LayoutProbe>& probes) {
+OverlapPoints trimBandsOverOverlapLimit(const LevelRayCaster& level, const WalkableFloor& walked,
+                                        double gapMeters, const ValidateOptions& limits,
+                                        std::span<const InfluenceVolume> kept,
+                                        std::vector<LayoutProbe>& probes,
+                                        const std::set<std::size_t>& facesMove) {
   std::vector<InfluenceVolume> volumes(kept.begin(), kept.end());
   // validate's weight_jump planes: the capture heights.
   std::vector<double> heights;
@@ -188,11 +239,10 @@ std::vector<OverlapPoint> trimBandsOverOverlapLimit(const LevelRayCaster& level,
   CameraRows rows(level, walked, limits.cameraHeadRoomMeters);
   std::vector<OverlapPoint>& points = over.points;
   while (!points.empty()) {
-    const std::optional<Cut> cut =
-        nextCut(points, volumes, kept.size(), over.grid.cellMeters, gapMeters, refused);
+    const std::optional<Cut> cut = nextCut(points, volumes, kept.size(), probes, facesMove,
+                                           over.grid.cellMeters, gapMeters, refused);
     if (!cut) break;
-    BoxInfluence trimmed = std::get<BoxInfluence>(volumes[cut->volume]);
-    trimmed.halfExtentsMeters[cut->axis] = cut->halfExtentMeters;
+    const BoxInfluence trimmed = cutBox(std::get<BoxInfluence>(volumes[cut->volume]), *cut);
     if (!floorStaysCovered(walked, volumes, cut->volume, trimmed) ||
         !blendStaysSmooth(volumes, cut->volume, trimmed, cut->axis, heights, rows,
                           limits.maxWeightJumpPerCentimeter)) {
@@ -210,7 +260,7 @@ std::vector<OverlapPoint> trimBandsOverOverlapLimit(const LevelRayCaster& level,
     }
     points = std::move(left);
   }
-  return points;
+  return over;
 }
 
 }  // namespace probeproxy

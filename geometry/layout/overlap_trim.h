@@ -9,6 +9,13 @@
 // that axis; it keeps at least a gap (a floor cell lies within a gap of some range), the floor
 // it gives up stays in another volume, and near the volume the blend's steepest change stays
 // under validate's limit (or no steeper than before): otherwise the trim is not made.
+//
+// An optional fill (uncovered_floor_fills.h) serves floor whose cameras only band ends reach, a
+// group wider than the pop it closes, and its band is one gap: no trim takes it out of a crowd.
+// Its faces may move instead: one side of its box, inner range and band together, moves in off
+// the points (bloodprison's fill over a capped ramp met four bands below its end; dropped, its
+// pop came back: 0.205 per cm), under the same floor and blend checks, the box keeping its
+// capture point.
 
 #include "geometry/floor/walkable_floor.h"
 #include "geometry/layout/run_layout.h"
@@ -16,6 +23,7 @@
 #include "geometry/validate/overlap_points.h"
 #include "geometry/validate/validate_scene.h"
 
+#include <set>
 #include <span>
 #include <vector>
 
@@ -25,11 +33,12 @@ namespace probeproxy {
 // `kept`: volumes counted but never trimmed (an artist's, kept by --keep-authored). `limits`:
 // the validate options the layout must pass (maxOverlap, maxWeightJumpPerCentimeter,
 // cameraHeadRoomMeters, the grid). Deterministic: one trim at a time, ties by index. Returns
-// the points still over the limit (their volumes: indices into kept, then probes).
-std::vector<OverlapPoint> trimBandsOverOverlapLimit(const LevelRayCaster& level,
-                                                    const WalkableFloor& walked, double gapMeters,
-                                                    const ValidateOptions& limits,
-                                                    std::span<const InfluenceVolume> kept,
-                                                    std::vector<LayoutProbe>& probes);
+// the points still over the limit (their volumes: indices into kept, then probes) on
+// validate's grid. `facesMove`: the probes (indices into `probes`) whose faces may move in.
+OverlapPoints trimBandsOverOverlapLimit(const LevelRayCaster& level, const WalkableFloor& walked,
+                                        double gapMeters, const ValidateOptions& limits,
+                                        std::span<const InfluenceVolume> kept,
+                                        std::vector<LayoutProbe>& probes,
+                                        const std::set<std::size_t>& facesMove = {});
 
 }  // namespace probeproxy

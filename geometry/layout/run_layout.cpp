@@ -210,22 +210,28 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
   }
   raiseRangesOverRaisedFloor(walked, o.blendBandMeters, keptVolumes, r.probes);
   // Where more bands cross than the blend takes (overlap_trim.h), to validate's defaults. An
-  // optional fill in a crowd the trim could not free goes, and the rest rise and are trimmed
-  // again without it.
+  // optional fill in a crowd the trim could not free, its faces moved or not, goes, and the rest
+  // rise and are trimmed again without it.
   const std::vector<LayoutProbe> untrimmed = r.probes;
   std::set<std::size_t> dropped;
-  for (const OverlapPoint& p : trimBandsOverOverlapLimit(level, walked, o.blendBandMeters,
-                                                         ValidateOptions{}, keptVolumes, r.probes))
+  for (const OverlapPoint& p :
+       trimBandsOverOverlapLimit(level, walked, o.blendBandMeters, ValidateOptions{}, keptVolumes,
+                                 r.probes, optional)
+           .points)
     for (int v : p.volumes)
       if (static_cast<std::size_t>(v) >= kept.size() && optional.count(v - kept.size()))
         dropped.insert(v - kept.size());
   if (dropped.empty()) return;
   r.probes.clear();
-  for (std::size_t p = 0; p < untrimmed.size(); ++p)
-    if (!dropped.count(p)) r.probes.push_back(untrimmed[p]);
+  std::set<std::size_t> optionalLeft;
+  for (std::size_t p = 0; p < untrimmed.size(); ++p) {
+    if (dropped.count(p)) continue;
+    if (optional.count(p)) optionalLeft.insert(r.probes.size());
+    r.probes.push_back(untrimmed[p]);
+  }
   raiseRangesOverRaisedFloor(walked, o.blendBandMeters, keptVolumes, r.probes);
   trimBandsOverOverlapLimit(level, walked, o.blendBandMeters, ValidateOptions{}, keptVolumes,
-                            r.probes);
+                            r.probes, optionalLeft);
 }
 
 }  // namespace

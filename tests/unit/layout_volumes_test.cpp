@@ -19,6 +19,7 @@
 
 #include <array>
 #include <initializer_list>
+#include <set>
 #include <vector>
 
 namespace probeproxy {
@@ -250,6 +251,46 @@ TEST(TrimBandsOverOverlapLimit, FiveBandsOverTheGapBesideAStripComeDownToFourAnd
       covered = covered || insideInfluence(v, cell.pointMeters);
     EXPECT_TRUE(covered) << cell.pointMeters.x << ", " << cell.pointMeters.y;
   }
+}
+
+TEST(TrimBandsOverOverlapLimit, AFillWhoseBandsCannotBeTrimmedMovesAFaceOffTheCrowd) {
+  // Trimmed to keep 1.5 m, bands 1.5 m deep cannot be trimmed: an optional fill's case.
+  RangesInARoom trimmedOnly(kCrossingByAStrip), facesMoved(kCrossingByAStrip);
+  trimBandsOverOverlapLimit(trimmedOnly.level, trimmedOnly.floor, 1.5, ValidateOptions{}, {},
+                            trimmedOnly.probes);
+  EXPECT_EQ(trimmedOnly.mostMeeting(), 5);
+  // Taken as an optional fill: the south-west range (0..3).
+  const std::set<std::size_t> fill{0};
+  trimBandsOverOverlapLimit(facesMoved.level, facesMoved.floor, 1.5, ValidateOptions{}, {},
+                            facesMoved.probes, fill);
+  EXPECT_EQ(facesMoved.mostMeeting(), 4);
+  const std::vector<InfluenceVolume> before = RangesInARoom(kCrossingByAStrip).volumes();
+  for (std::size_t p = 0; p < before.size(); ++p) {
+    const BoxInfluence& was = std::get<BoxInfluence>(before[p]);
+    const BoxInfluence& is = std::get<BoxInfluence>(facesMoved.probes[p].influence);
+    if (p != 0) {
+      EXPECT_EQ(is.centerMeters, was.centerMeters) << p;
+      EXPECT_EQ(is.halfExtentsMeters, was.halfExtentsMeters) << p;
+      continue;
+    }
+    for (int axis : {0, 1, 2})
+      EXPECT_NEAR(is.halfExtentsMeters[axis] - is.innerHalfExtentsMeters[axis],
+                  was.halfExtentsMeters[axis] - was.innerHalfExtentsMeters[axis], 1e-12)
+          << "its bands keep their width";
+    EXPECT_NEAR(innerLo(is).x, 0.0, 1e-12) << "the west face stays";
+    EXPECT_LT(innerHi(is).x, 3.0) << "the east face, beside the strip's crossing, moves in";
+    EXPECT_EQ(innerLo(is).y, 0.0);
+    EXPECT_EQ(innerHi(is).y, 2.5);
+    EXPECT_TRUE(insideInfluence(is, facesMoved.probes[p].captureMeters));
+  }
+  const ReachableMask cameras = [&](std::span<const glm::dvec3> points, std::span<char> out) {
+    markCameraSpace(facesMoved.level, facesMoved.floor, 2.5, points, out);
+  };
+  const std::vector<InfluenceVolume> volumes = facesMoved.volumes();
+  EXPECT_LE(measureWeightContinuity(volumes, gridOverVolumes(volumes, 1.6, 0.01), {}, cameras)
+                .largestJump,
+            0.02)
+      << "1 cm apart, where a camera can be";
 }
 
 // A 10 x 6 x 6 m room whose east part, x 6..10, is a ledge 1.5 m up (more than a step: a
