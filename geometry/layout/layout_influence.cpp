@@ -43,6 +43,13 @@ std::optional<InnerRange> innerRangeOf(const InfluenceVolume& volume) {
   return r;
 }
 
+BoxInfluence withFaceMovedIn(BoxInfluence box, int axis, int side, double meters) {
+  box.centerMeters[axis] -= side * 0.5 * meters;
+  box.halfExtentsMeters[axis] -= 0.5 * meters;
+  box.innerHalfExtentsMeters[axis] -= 0.5 * meters;
+  return box;
+}
+
 double planApart(const InnerRange& a, const InnerRange& b) {
   const glm::dvec2 apart =
       glm::max(glm::dvec2(a.lo) - glm::dvec2(b.hi), glm::dvec2(b.lo) - glm::dvec2(a.hi));

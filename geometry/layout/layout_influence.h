@@ -63,6 +63,10 @@ inline bool overlapInHeight(const InnerRange& a, const InnerRange& b) {
   return a.lo.z < b.hi.z && b.lo.z < a.hi.z;
 }
 
+// The box with its `side` (-1 low, +1 high) face along `axis` moved in by `meters`, inner range
+// and band together: the band keeps its width, so the blend across it stays as smooth.
+BoxInfluence withFaceMovedIn(BoxInfluence box, int axis, int side, double meters);
+
 // How far apart in plan (the larger of the two axes' separations; negative when they overlap).
 double planApart(const InnerRange& a, const InnerRange& b);
 

@@ -43,13 +43,8 @@ struct Cut {
 };
 
 BoxInfluence cutBox(BoxInfluence box, const Cut& cut) {
-  if (cut.side == 0) {
-    box.halfExtentsMeters[cut.axis] = cut.meters;
-    return box;
-  }
-  box.centerMeters[cut.axis] -= cut.side * 0.5 * cut.meters;
-  box.halfExtentsMeters[cut.axis] -= 0.5 * cut.meters;
-  box.innerHalfExtentsMeters[cut.axis] -= 0.5 * cut.meters;
+  if (cut.side != 0) return withFaceMovedIn(box, cut.axis, cut.side, cut.meters);
+  box.halfExtentsMeters[cut.axis] = cut.meters;
   return box;
 }
 

@@ -8,6 +8,7 @@
 #include "geometry/layout/head_room.h"
 #include "geometry/layout/layout_candidates.h"
 #include "geometry/layout/layout_influence.h"
+#include "geometry/layout/near_ranges.h"
 #include "geometry/layout/overlap_trim.h"
 #include "geometry/layout/select_probes.h"
 #include "geometry/layout/thin_ranges.h"
@@ -209,6 +210,9 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
     r.probes.push_back({f.captureMeters, f.influence, kRoomFitMeters});
   }
   raiseRangesOverRaisedFloor(walked, o.blendBandMeters, keptVolumes, r.probes);
+  // Ranges a capture point held too near their neighbours for a smooth blend part
+  // (near_ranges.h).
+  partNearRanges(o.blendBandMeters, keptVolumes, r.probes);
   // Where more bands cross than the blend takes (overlap_trim.h), to validate's defaults. An
   // optional fill in a crowd the trim could not free, its faces moved or not, goes, and the rest
   // rise and are trimmed again without it.

@@ -8,6 +8,7 @@
 #include "geometry/layout/candidate_service.h"
 #include "geometry/layout/head_room.h"
 #include "geometry/layout/layout_influence.h"
+#include "geometry/layout/near_ranges.h"
 #include "geometry/layout/overlap_trim.h"
 #include "geometry/layout/thin_ranges.h"
 #include "geometry/layout/uncovered_floor_fills.h"
@@ -291,6 +292,43 @@ TEST(TrimBandsOverOverlapLimit, AFillWhoseBandsCannotBeTrimmedMovesAFaceOffTheCr
                 .largestJump,
             0.02)
       << "1 cm apart, where a camera can be";
+}
+
+TEST(PartNearRanges, ARangeHeldNearItsNeighbourByItsCapturePartsFromItTheOtherWay) {
+  // 0.2 m apart across the room (toxic's probe_080 and probe_130); the narrow one's capture
+  // point, at its middle, leaves it no room to give.
+  RangesInARoom room({{{0, 4, 0, 6}}, {{4.2, 4.5, 0, 6}}, {{5.5, 10, 0, 6}}});
+  const std::vector<InfluenceVolume> before = room.volumes();
+  const auto steepest = [&](std::span<const InfluenceVolume> volumes) {
+    return measureWeightContinuity(volumes, gridOverVolumes(volumes, 1.6, 0.01)).largestJump;
+  };
+  EXPECT_GT(steepest(before), 0.04) << "1 cm apart";
+  partNearRanges(1.0, {}, room.probes);
+  const std::vector<InfluenceVolume> after = room.volumes();
+  EXPECT_NEAR(innerHi(after[0]).x, 4.2 - 0.7, 1e-12) << "the wide one gives what is missing";
+  EXPECT_EQ(innerLo(after[0]).x, 0.0);
+  const BoxInfluence& wide = std::get<BoxInfluence>(after[0]);
+  EXPECT_NEAR(wide.halfExtentsMeters.x - wide.innerHalfExtentsMeters.x, 1.5, 1e-12) << "its band";
+  // The narrow one and the wide one east of it: 1 m apart already.
+  EXPECT_EQ(innerLo(after[1]), innerLo(before[1]));
+  EXPECT_EQ(innerHi(after[1]), innerHi(before[1]));
+  EXPECT_EQ(innerLo(after[2]), innerLo(before[2]));
+  EXPECT_LE(steepest(after), 0.02) << "1 cm apart";
+  for (const FloorCell& cell : room.floor.cells) {
+    bool covered = false;
+    for (const InfluenceVolume& v : after)
+      covered = covered || insideInfluence(v, cell.pointMeters);
+    EXPECT_TRUE(covered) << cell.pointMeters.x << ", " << cell.pointMeters.y;
+  }
+}
+
+TEST(PartNearRanges, TwoRangesWithLittleRoomEachGiveWhatTheyHave) {
+  // Captures at their middles: 0.2 m to give on the left one's east side, 0.15 m on the right
+  // one's west side; 0.1 m apart, 0.6 m missing: 0.45 m apart after.
+  RangesInARoom room({{{3.5, 4, 0, 6}}, {{4.1, 4.5, 0, 6}}});
+  partNearRanges(1.0, {}, room.probes);
+  EXPECT_NEAR(innerHi(room.probes[0].influence).x, 4.0 - 0.2, 1e-12);
+  EXPECT_NEAR(innerLo(room.probes[1].influence).x, 4.1 + 0.15, 1e-12);
 }
 
 // A 10 x 6 x 6 m room whose east part, x 6..10, is a ledge 1.5 m up (more than a step: a
