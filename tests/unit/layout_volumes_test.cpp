@@ -153,6 +153,16 @@ TEST(FillsForUncoveredFloor,
 }
 
 // Probes over a 10 x 6 m room, one a range x lo..hi, y ylo..yhi each (bands 1.5 m).
+// Every floor cell in some volume.
+void expectEveryCellCovered(const WalkableFloor& floor, std::span<const InfluenceVolume> volumes) {
+  for (const FloorCell& cell : floor.cells) {
+    bool covered = false;
+    for (const InfluenceVolume& v : volumes)
+      covered = covered || insideInfluence(v, cell.pointMeters);
+    EXPECT_TRUE(covered) << cell.pointMeters.x << ", " << cell.pointMeters.y;
+  }
+}
+
 struct RangesInARoom {
   LevelRayCaster level{boxRoom({0, 0, 0}, {10, 6, 3.5f})};
   WalkableFloor floor;
@@ -246,12 +256,7 @@ TEST(TrimBandsOverOverlapLimit, FiveBandsOverTheGapBesideAStripComeDownToFourAnd
                 .largestJump,
             0.02)
       << "1 cm apart, where a camera can be (0.0207 before)";
-  for (const FloorCell& cell : room.floor.cells) {
-    bool covered = false;
-    for (const InfluenceVolume& v : volumes)
-      covered = covered || insideInfluence(v, cell.pointMeters);
-    EXPECT_TRUE(covered) << cell.pointMeters.x << ", " << cell.pointMeters.y;
-  }
+  expectEveryCellCovered(room.floor, volumes);
 }
 
 TEST(TrimBandsOverOverlapLimit, AFillWhoseBandsCannotBeTrimmedMovesAFaceOffTheCrowd) {
@@ -292,6 +297,7 @@ TEST(TrimBandsOverOverlapLimit, AFillWhoseBandsCannotBeTrimmedMovesAFaceOffTheCr
                 .largestJump,
             0.02)
       << "1 cm apart, where a camera can be";
+  expectEveryCellCovered(facesMoved.floor, volumes);
 }
 
 TEST(PartNearRanges, ARangeHeldNearItsNeighbourByItsCapturePartsFromItTheOtherWay) {
@@ -314,12 +320,7 @@ TEST(PartNearRanges, ARangeHeldNearItsNeighbourByItsCapturePartsFromItTheOtherWa
   EXPECT_EQ(innerHi(after[1]), innerHi(before[1]));
   EXPECT_EQ(innerLo(after[2]), innerLo(before[2]));
   EXPECT_LE(steepest(after), 0.02) << "1 cm apart";
-  for (const FloorCell& cell : room.floor.cells) {
-    bool covered = false;
-    for (const InfluenceVolume& v : after)
-      covered = covered || insideInfluence(v, cell.pointMeters);
-    EXPECT_TRUE(covered) << cell.pointMeters.x << ", " << cell.pointMeters.y;
-  }
+  expectEveryCellCovered(room.floor, after);
 }
 
 TEST(PartNearRanges, TwoRangesWithLittleRoomEachGiveWhatTheyHave) {
