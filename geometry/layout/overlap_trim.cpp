@@ -110,6 +110,18 @@ class CameraRows {
   std::map<std::tuple<double, double, double, std::size_t>, std::vector<char>> rows_;
 };
 
+// The volumes reaching into the box (lo, hi): the others weigh nothing there.
+std::vector<InfluenceVolume> volumesNear(std::span<const InfluenceVolume> volumes, glm::dvec3 lo,
+                                         glm::dvec3 hi) {
+  std::vector<InfluenceVolume> near;
+  for (const InfluenceVolume& v : volumes) {
+    glm::dvec3 vlo, vhi;
+    influenceBounds(v, vlo, vhi);
+    if (glm::all(glm::lessThan(vlo, hi)) && glm::all(glm::lessThan(lo, vhi))) near.push_back(v);
+  }
+  return near;
+}
+
 // The steepest change of any weight per centimetre over the trimmed volume's bands along the
 // trimmed axis (where its weight changes), before and after the cut (a moved face brings its
 // band in), at the capture heights its box spans, where a camera can be. Only volumes near
@@ -119,12 +131,7 @@ double steepestChangeAlong(std::span<const InfluenceVolume> volumes, const BoxIn
                            CameraRows& rows) {
   const glm::dvec3 lo = before.centerMeters - before.halfExtentsMeters;
   const glm::dvec3 hi = before.centerMeters + before.halfExtentsMeters;
-  std::vector<InfluenceVolume> near;
-  for (const InfluenceVolume& v : volumes) {
-    glm::dvec3 vlo, vhi;
-    influenceBounds(v, vlo, vhi);
-    if (glm::all(glm::lessThan(vlo, hi)) && glm::all(glm::lessThan(lo, vhi))) near.push_back(v);
-  }
+  const std::vector<InfluenceVolume> near = volumesNear(volumes, lo, hi);
   const ReachableMask cameras = [&](std::span<const glm::dvec3> points, std::span<char> out) {
     rows.mark(points, out);
   };
@@ -164,9 +171,45 @@ bool blendStaysSmooth(std::vector<InfluenceVolume>& volumes, std::size_t v,
   return after <= std::max(before, limitPerCentimeter);
 }
 
-// The trim that frees the most points for the least band, none refused before. Per volume, axis
-// and side each point asks for a half extent (or a face's cut); a cut to one of them frees
-// every point asking for as much or less.
+// The steepest change of any weight per centimetre over the box, at the capture heights it
+// spans, where a camera can be, with the volumes near it.
+double steepestChangeOver(std::span<const InfluenceVolume> volumes, const BoxInfluence& box,
+                          std::span<const double> heights, CameraRows& rows) {
+  const glm::dvec3 lo = box.centerMeters - box.halfExtentsMeters;
+  const glm::dvec3 hi = box.centerMeters + box.halfExtentsMeters;
+  const ReachableMask cameras = [&](std::span<const glm::dvec3> points, std::span<char> out) {
+    rows.mark(points, out);
+  };
+  const std::vector<InfluenceVolume> near = volumesNear(volumes, lo, hi);
+  double steepest = 0.0;
+  for (double z : heights) {
+    if (z <= lo.z || z >= hi.z) continue;
+    const WeightGrid grid{glm::dvec2(lo), glm::dvec2(hi), z, kBlendCheckGridMeters};
+    const WeightContinuity c = measureWeightContinuity(near, grid, {}, cameras);
+    steepest = std::max(steepest, c.largestJump / (100.0 * kBlendCheckGridMeters));
+  }
+  return steepest;
+}
+
+// A fill's face moves instead of the fill going (run_layout drops a fill still in a crowd):
+// whether over its box the blend turns no steeper than validate's limit, or than it would
+// without the fill (bloodprison's fill over a ramp's range turns at 0.025 per cm once its face
+// moves 2 m; without it two bands' ends touch there: 0.2 per cm).
+bool blendBetterThanWithout(std::vector<InfluenceVolume>& volumes, std::size_t v,
+                            const BoxInfluence& moved, std::span<const double> heights,
+                            CameraRows& rows, double limitPerCentimeter) {
+  const BoxInfluence old = std::get<BoxInfluence>(volumes[v]);
+  volumes[v] = moved;
+  const double after = steepestChangeOver(volumes, old, heights, rows);
+  volumes.erase(volumes.begin() + static_cast<std::ptrdiff_t>(v));
+  const double without = steepestChangeOver(volumes, old, heights, rows);
+  volumes.insert(volumes.begin() + static_cast<std::ptrdiff_t>(v), old);
+  return after <= std::max(without, limitPerCentimeter);
+}
+
+// The trim that frees the most points for the least band, none refused before, or when none is
+// left the face move that does. Per volume, axis and side each point asks for a half extent (or
+// a face's cut); a cut to one of them frees every point asking for as much or less.
 std::optional<Cut> nextCut(std::span<const OverlapPoint> points,
                            std::span<const InfluenceVolume> volumes, std::size_t keptCount,
                            std::span<const LayoutProbe> probes,
@@ -206,7 +249,11 @@ std::optional<Cut> nextCut(std::span<const OverlapPoint> points,
       const std::size_t freed = j + 1;
       const double band = side == 0 ? now - values[j] : values[j];
       if (refused.count(cut)) continue;
-      if (!best || freed > bestFreed || (freed == bestFreed && band < bestCut))
+      // A face moves only where no band trim is left to try: a fill's face moved first kept
+      // bloodprison's trims of the bands around it from passing the blend check.
+      const bool trimFirst = best && (best->side == 0) != (side == 0);
+      if (trimFirst ? side == 0
+                    : !best || freed > bestFreed || (freed == bestFreed && band < bestCut))
         best = cut, bestFreed = freed, bestCut = band;
     }
   }
@@ -238,9 +285,11 @@ OverlapPoints trimBandsOverOverlapLimit(const LevelRayCaster& level, const Walka
                                            over.grid.cellMeters, gapMeters, refused);
     if (!cut) break;
     const BoxInfluence trimmed = cutBox(std::get<BoxInfluence>(volumes[cut->volume]), *cut);
+    const double limit = limits.maxWeightJumpPerCentimeter;
     if (!floorStaysCovered(walked, volumes, cut->volume, trimmed) ||
-        !blendStaysSmooth(volumes, cut->volume, trimmed, cut->axis, heights, rows,
-                          limits.maxWeightJumpPerCentimeter)) {
+        !(cut->side == 0
+              ? blendStaysSmooth(volumes, cut->volume, trimmed, cut->axis, heights, rows, limit)
+              : blendBetterThanWithout(volumes, cut->volume, trimmed, heights, rows, limit))) {
       refused.insert(*cut);
       continue;
     }

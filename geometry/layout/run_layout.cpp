@@ -120,6 +120,21 @@ KeptFloor keptFloor(const LevelRayCaster& level, const WalkableFloor& floor,
   return k;
 }
 
+// Keeps the probes not `gone`; `optional` (indices of probes) follows them.
+void dropProbes(const std::set<std::size_t>& gone, std::vector<LayoutProbe>& probes,
+                std::set<std::size_t>& optional) {
+  if (gone.empty()) return;
+  std::vector<LayoutProbe> left;
+  std::set<std::size_t> optionalLeft;
+  for (std::size_t p = 0; p < probes.size(); ++p) {
+    if (gone.count(p)) continue;
+    if (optional.count(p)) optionalLeft.insert(left.size());
+    left.push_back(std::move(probes[p]));
+  }
+  probes = std::move(left);
+  optional = std::move(optionalLeft);
+}
+
 void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3> seedsMeters,
                         const WalkableFloor& floor, const LayoutOptions& o,
                         const std::function<void(std::size_t, std::size_t)>& onDone,
@@ -226,16 +241,11 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
       if (static_cast<std::size_t>(v) >= kept.size() && optional.count(v - kept.size()))
         dropped.insert(v - kept.size());
   if (dropped.empty()) return;
-  r.probes.clear();
-  std::set<std::size_t> optionalLeft;
-  for (std::size_t p = 0; p < untrimmed.size(); ++p) {
-    if (dropped.count(p)) continue;
-    if (optional.count(p)) optionalLeft.insert(r.probes.size());
-    r.probes.push_back(untrimmed[p]);
-  }
+  r.probes = untrimmed;
+  dropProbes(dropped, r.probes, optional);
   raiseRangesOverRaisedFloor(walked, o.blendBandMeters, keptVolumes, r.probes);
   trimBandsOverOverlapLimit(level, walked, o.blendBandMeters, ValidateOptions{}, keptVolumes,
-                            r.probes, optionalLeft);
+                            r.probes, optional);
 }
 
 }  // namespace

@@ -120,6 +120,12 @@ void fillGroups(const LevelRayCaster& level, const WalkableFloor& floor,
     innerLo = glm::min(innerLo, capture - glm::dvec3(kCaptureMarginMeters));
     innerHi = glm::max(innerHi, capture + glm::dvec3(kCaptureMarginMeters));
     keepClearOfInnerRanges(innerLo, innerHi, capture, storeyFloor, others, gapMeters);
+    // A range above came down to the fill's bottom (over a range's top) or under its capture
+    // point: nothing left to fill (stormkeep: 0 m and -1 mm tall).
+    if (!glm::all(glm::lessThan(innerLo, innerHi)) ||
+        !glm::all(glm::lessThanEqual(innerLo, capture)) ||
+        !glm::all(glm::lessThanEqual(capture, innerHi)))
+      continue;
     const glm::dvec3 clearLo = innerLo, clearHi = innerHi;
     pullBandsIntoSight(level, floor, capture, gapMeters, innerLo, innerHi);
     const BoxInfluence fill = influenceOfBounds(innerLo, innerHi, gapMeters);
