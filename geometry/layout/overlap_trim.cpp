@@ -102,6 +102,9 @@ class CameraRows {
     }
     std::copy(row.begin(), row.end(), reachable.begin());
   }
+  ReachableMask mask() {
+    return [this](std::span<const glm::dvec3> points, std::span<char> out) { mark(points, out); };
+  }
 
  private:
   const LevelRayCaster& level_;
@@ -123,35 +126,22 @@ std::vector<InfluenceVolume> volumesNear(std::span<const InfluenceVolume> volume
 }
 
 // The steepest change of any weight per centimetre over the trimmed volume's bands along the
-// trimmed axis (where its weight changes), before and after the cut (a moved face brings its
-// band in), at the capture heights its box spans, where a camera can be. Only volumes near
-// there take part: the others weigh nothing there.
-double steepestChangeAlong(std::span<const InfluenceVolume> volumes, const BoxInfluence& before,
-                           const BoxInfluence& after, int axis, std::span<const double> heights,
-                           CameraRows& rows) {
-  const glm::dvec3 lo = before.centerMeters - before.halfExtentsMeters;
-  const glm::dvec3 hi = before.centerMeters + before.halfExtentsMeters;
+// trimmed axis (where its weight changes), at the capture heights its box spans, where a camera
+// can be. Only volumes near there take part.
+double steepestChangeAlong(std::span<const InfluenceVolume> volumes, const BoxInfluence& box,
+                           int axis, std::span<const double> heights, CameraRows& rows) {
+  const glm::dvec3 lo = box.centerMeters - box.halfExtentsMeters;
+  const glm::dvec3 hi = box.centerMeters + box.halfExtentsMeters;
   const std::vector<InfluenceVolume> near = volumesNear(volumes, lo, hi);
-  const ReachableMask cameras = [&](std::span<const glm::dvec3> points, std::span<char> out) {
-    rows.mark(points, out);
-  };
-  const auto side = [&](const BoxInfluence& b, double sign, double extent) {
-    return b.centerMeters[axis] + sign * extent;
-  };
-  const std::pair<double, double> bands[] = {
-      {side(before, -1, before.halfExtentsMeters[axis]),
-       std::max(side(before, -1, before.innerHalfExtentsMeters[axis]),
-                side(after, -1, after.innerHalfExtentsMeters[axis]))},
-      {std::min(side(before, 1, before.innerHalfExtentsMeters[axis]),
-                side(after, 1, after.innerHalfExtentsMeters[axis])),
-       side(before, 1, before.halfExtentsMeters[axis])}};
+  const double innerLo = box.centerMeters[axis] - box.innerHalfExtentsMeters[axis];
+  const double innerHi = box.centerMeters[axis] + box.innerHalfExtentsMeters[axis];
   double steepest = 0.0;
   for (double z : heights) {
     if (z <= lo.z || z >= hi.z) continue;
-    for (auto [from, to] : bands) {
+    for (auto [from, to] : {std::pair{lo[axis], innerLo}, std::pair{innerHi, hi[axis]}}) {
       WeightGrid grid{glm::dvec2(lo), glm::dvec2(hi), z, kBlendCheckGridMeters};
       grid.minMeters[axis] = from, grid.maxMeters[axis] = to;
-      const WeightContinuity c = measureWeightContinuity(near, grid, {}, cameras);
+      const WeightContinuity c = measureWeightContinuity(near, grid, {}, rows.mask());
       steepest = std::max(steepest, c.largestJump / (100.0 * kBlendCheckGridMeters));
     }
   }
@@ -164,9 +154,9 @@ bool blendStaysSmooth(std::vector<InfluenceVolume>& volumes, std::size_t v,
                       const BoxInfluence& trimmed, int axis, std::span<const double> heights,
                       CameraRows& rows, double limitPerCentimeter) {
   const BoxInfluence old = std::get<BoxInfluence>(volumes[v]);
-  const double before = steepestChangeAlong(volumes, old, trimmed, axis, heights, rows);
+  const double before = steepestChangeAlong(volumes, old, axis, heights, rows);
   volumes[v] = trimmed;
-  const double after = steepestChangeAlong(volumes, old, trimmed, axis, heights, rows);
+  const double after = steepestChangeAlong(volumes, old, axis, heights, rows);
   volumes[v] = old;
   return after <= std::max(before, limitPerCentimeter);
 }
@@ -177,15 +167,12 @@ double steepestChangeOver(std::span<const InfluenceVolume> volumes, const BoxInf
                           std::span<const double> heights, CameraRows& rows) {
   const glm::dvec3 lo = box.centerMeters - box.halfExtentsMeters;
   const glm::dvec3 hi = box.centerMeters + box.halfExtentsMeters;
-  const ReachableMask cameras = [&](std::span<const glm::dvec3> points, std::span<char> out) {
-    rows.mark(points, out);
-  };
   const std::vector<InfluenceVolume> near = volumesNear(volumes, lo, hi);
   double steepest = 0.0;
   for (double z : heights) {
     if (z <= lo.z || z >= hi.z) continue;
     const WeightGrid grid{glm::dvec2(lo), glm::dvec2(hi), z, kBlendCheckGridMeters};
-    const WeightContinuity c = measureWeightContinuity(near, grid, {}, cameras);
+    const WeightContinuity c = measureWeightContinuity(near, grid, {}, rows.mask());
     steepest = std::max(steepest, c.largestJump / (100.0 * kBlendCheckGridMeters));
   }
   return steepest;
@@ -262,11 +249,12 @@ std::optional<Cut> nextCut(std::span<const OverlapPoint> points,
 
 }  // namespace
 
-OverlapPoints trimBandsOverOverlapLimit(const LevelRayCaster& level, const WalkableFloor& walked,
-                                        double gapMeters, const ValidateOptions& limits,
-                                        std::span<const InfluenceVolume> kept,
-                                        std::vector<LayoutProbe>& probes,
-                                        const std::set<std::size_t>& facesMove) {
+std::vector<OverlapPoint> trimBandsOverOverlapLimit(const LevelRayCaster& level,
+                                                    const WalkableFloor& walked, double gapMeters,
+                                                    const ValidateOptions& limits,
+                                                    std::span<const InfluenceVolume> kept,
+                                                    std::vector<LayoutProbe>& probes,
+                                                    const std::set<std::size_t>& facesMove) {
   std::vector<InfluenceVolume> volumes(kept.begin(), kept.end());
   // validate's weight_jump planes: the capture heights.
   std::vector<double> heights;
@@ -304,7 +292,7 @@ OverlapPoints trimBandsOverOverlapLimit(const LevelRayCaster& level, const Walka
     }
     points = std::move(left);
   }
-  return over;
+  return points;
 }
 
 }  // namespace probeproxy

@@ -33,12 +33,13 @@ namespace probeproxy {
 // `kept`: volumes counted but never trimmed (an artist's, kept by --keep-authored). `limits`:
 // the validate options the layout must pass (maxOverlap, maxWeightJumpPerCentimeter,
 // cameraHeadRoomMeters, the grid). Deterministic: one trim at a time, ties by index. Returns
-// the points still over the limit (their volumes: indices into kept, then probes) on
-// validate's grid. `facesMove`: the probes (indices into `probes`) whose faces may move in.
-OverlapPoints trimBandsOverOverlapLimit(const LevelRayCaster& level, const WalkableFloor& walked,
-                                        double gapMeters, const ValidateOptions& limits,
-                                        std::span<const InfluenceVolume> kept,
-                                        std::vector<LayoutProbe>& probes,
-                                        const std::set<std::size_t>& facesMove = {});
+// the points still over the limit (their volumes: indices into kept, then probes).
+// `facesMove`: the probes (indices into `probes`) whose faces may move in.
+std::vector<OverlapPoint> trimBandsOverOverlapLimit(const LevelRayCaster& level,
+                                                    const WalkableFloor& walked, double gapMeters,
+                                                    const ValidateOptions& limits,
+                                                    std::span<const InfluenceVolume> kept,
+                                                    std::vector<LayoutProbe>& probes,
+                                                    const std::set<std::size_t>& facesMove = {});
 
 }  // namespace probeproxy

@@ -233,10 +233,8 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
   // rise and are trimmed again without it.
   const std::vector<LayoutProbe> untrimmed = r.probes;
   std::set<std::size_t> dropped;
-  for (const OverlapPoint& p :
-       trimBandsOverOverlapLimit(level, walked, o.blendBandMeters, ValidateOptions{}, keptVolumes,
-                                 r.probes, optional)
-           .points)
+  for (const OverlapPoint& p : trimBandsOverOverlapLimit(
+           level, walked, o.blendBandMeters, ValidateOptions{}, keptVolumes, r.probes, optional))
     for (int v : p.volumes)
       if (static_cast<std::size_t>(v) >= kept.size() && optional.count(v - kept.size()))
         dropped.insert(v - kept.size());

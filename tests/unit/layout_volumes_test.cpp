@@ -182,6 +182,15 @@ struct RangesInARoom {
     for (const LayoutProbe& p : probes) v.push_back(p.influence);
     return v;
   }
+  // The steepest change of a weight between points 1 cm apart at eye height, where a camera can
+  // be, as validate measures: the bands reach past the room's walls.
+  double steepestWhereCamerasAre() const {
+    const ReachableMask cameras = [&](std::span<const glm::dvec3> points, std::span<char> out) {
+      markCameraSpace(level, floor, 2.5, points, out);
+    };
+    const std::vector<InfluenceVolume> v = volumes();
+    return measureWeightContinuity(v, gridOverVolumes(v, 1.6, 0.01), {}, cameras).largestJump;
+  }
   // Most volumes over one point at eye height, outside every inner range (too_many_overlaps).
   int mostMeeting() const {
     int most = 0;
@@ -234,10 +243,6 @@ TEST(TrimBandsOverOverlapLimit, FiveBandsOverTheGapBesideAStripComeDownToFourAnd
   RangesInARoom room(kCrossingByAStrip);
   ASSERT_EQ(room.mostMeeting(), 5);
   const std::vector<InfluenceVolume> before = room.volumes();
-  // Where a camera can be, as validate measures: the bands reach past the room's walls.
-  const ReachableMask cameras = [&](std::span<const glm::dvec3> points, std::span<char> out) {
-    markCameraSpace(room.level, room.floor, 2.5, points, out);
-  };
   trimBandsOverOverlapLimit(room.level, room.floor, 1.0, ValidateOptions{}, {}, room.probes);
   EXPECT_EQ(room.mostMeeting(), 4);
   int trimmed = 0;
@@ -251,12 +256,8 @@ TEST(TrimBandsOverOverlapLimit, FiveBandsOverTheGapBesideAStripComeDownToFourAnd
     trimmed += is.halfExtentsMeters != was.halfExtentsMeters;
   }
   EXPECT_GE(trimmed, 1);
-  const std::vector<InfluenceVolume> volumes = room.volumes();
-  EXPECT_LE(measureWeightContinuity(volumes, gridOverVolumes(volumes, 1.6, 0.01), {}, cameras)
-                .largestJump,
-            0.02)
-      << "1 cm apart, where a camera can be (0.0207 before)";
-  expectEveryCellCovered(room.floor, volumes);
+  EXPECT_LE(room.steepestWhereCamerasAre(), 0.02) << "0.0207 before";
+  expectEveryCellCovered(room.floor, room.volumes());
 }
 
 TEST(TrimBandsOverOverlapLimit, AFillWhoseBandsCannotBeTrimmedMovesAFaceOffTheCrowd) {
@@ -289,15 +290,8 @@ TEST(TrimBandsOverOverlapLimit, AFillWhoseBandsCannotBeTrimmedMovesAFaceOffTheCr
     EXPECT_EQ(innerHi(is).y, 2.5);
     EXPECT_TRUE(insideInfluence(is, facesMoved.probes[p].captureMeters));
   }
-  const ReachableMask cameras = [&](std::span<const glm::dvec3> points, std::span<char> out) {
-    markCameraSpace(facesMoved.level, facesMoved.floor, 2.5, points, out);
-  };
-  const std::vector<InfluenceVolume> volumes = facesMoved.volumes();
-  EXPECT_LE(measureWeightContinuity(volumes, gridOverVolumes(volumes, 1.6, 0.01), {}, cameras)
-                .largestJump,
-            0.02)
-      << "1 cm apart, where a camera can be";
-  expectEveryCellCovered(facesMoved.floor, volumes);
+  EXPECT_LE(facesMoved.steepestWhereCamerasAre(), 0.02);
+  expectEveryCellCovered(facesMoved.floor, facesMoved.volumes());
 }
 
 TEST(PartNearRanges, ARangeHeldNearItsNeighbourByItsCapturePartsFromItTheOtherWay) {
