@@ -50,11 +50,15 @@ BoxInfluence withFaceMovedIn(BoxInfluence box, int axis, int side, double meters
   return box;
 }
 
-double planApart(const InnerRange& a, const InnerRange& b) {
-  const glm::dvec2 apart =
-      glm::max(glm::dvec2(a.lo) - glm::dvec2(b.hi), glm::dvec2(b.lo) - glm::dvec2(a.hi));
-  return std::max(apart.x, apart.y);
+PlanGap planGap(const InnerRange& a, const InnerRange& b) {
+  const glm::dvec2 below = glm::dvec2(a.lo) - glm::dvec2(b.hi);
+  const glm::dvec2 above = glm::dvec2(b.lo) - glm::dvec2(a.hi);
+  const glm::dvec2 apart = glm::max(below, above);
+  const int axis = apart.x >= apart.y ? 0 : 1;
+  return {axis, apart[axis], above[axis] >= below[axis] ? 1 : -1};
 }
+
+double planApart(const InnerRange& a, const InnerRange& b) { return planGap(a, b).meters; }
 
 BoxInfluence influenceAroundFloor(const WalkableFloor& floor, std::span<const std::size_t> cells,
                                   glm::dvec3 captureMeters, double bandMeters) {
@@ -97,15 +101,12 @@ void keepClearOfInnerRanges(glm::dvec3& lo, glm::dvec3& hi, glm::dvec3& captureM
     glm::dvec3 otherLo, otherHi;
     if (!axisAlignedInnerRange(other, otherLo, otherHi) || lo.z >= otherHi.z || hi.z <= otherLo.z)
       continue;
-    // How far apart in plan, per axis, and on which side of this range the other lies.
-    const glm::dvec2 below = glm::dvec2(lo) - glm::dvec2(otherHi);
-    const glm::dvec2 above = glm::dvec2(otherLo) - glm::dvec2(hi);
-    const glm::dvec2 apart = glm::max(below, above);
-    const int axis = apart.x >= apart.y ? 0 : 1;
+    const PlanGap apart = planGap({lo, hi}, {otherLo, otherHi});
+    const int axis = apart.axis;
     // Overlapping in plan (one spans the other's floor) or already a gap apart on some axis.
-    if (apart[axis] < 0.0 || apart[axis] >= gapMeters) continue;
-    const double missing = gapMeters - apart[axis];
-    if (above[axis] >= below[axis])
+    if (apart.meters < 0.0 || apart.meters >= gapMeters) continue;
+    const double missing = gapMeters - apart.meters;
+    if (apart.side > 0)
       hi[axis] = std::max(hi[axis] - missing, captureMeters[axis] + kCaptureMarginMeters);
     else
       lo[axis] = std::min(lo[axis] + missing, captureMeters[axis] - kCaptureMarginMeters);

@@ -67,6 +67,15 @@ inline bool overlapInHeight(const InnerRange& a, const InnerRange& b) {
 // and band together: the band keeps its width, so the blend across it stays as smooth.
 BoxInfluence withFaceMovedIn(BoxInfluence box, int axis, int side, double meters);
 
+// How `b` stands from `a` in plan: along the axis they are furthest apart, by how much
+// (negative when they overlap in plan), and on which side of `a` (+1 high, -1 low).
+struct PlanGap {
+  int axis = 0;
+  double meters = 0.0;
+  int side = 1;
+};
+PlanGap planGap(const InnerRange& a, const InnerRange& b);
+
 // How far apart in plan (the larger of the two axes' separations; negative when they overlap).
 double planApart(const InnerRange& a, const InnerRange& b);
 

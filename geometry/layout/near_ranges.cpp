@@ -25,18 +25,15 @@ double roomToGive(const InnerRange& range, glm::dvec3 captureMeters, int axis, i
 }
 
 // Parts `a` (one of the layout's own) from `other` (its own too, or kept when null) that much.
-void partToTheGap(double gapMeters, LayoutProbe& a, const InnerRange& otherRange,
-                  LayoutProbe* other) {
+void partToSmoothGap(double gapMeters, LayoutProbe& a, const InnerRange& otherRange,
+                     LayoutProbe* other) {
   const std::optional<InnerRange> range = innerRangeOf(a.influence);
   if (!range || !overlapInHeight(*range, otherRange)) return;
-  const glm::dvec2 below = glm::dvec2(range->lo) - glm::dvec2(otherRange.hi);
-  const glm::dvec2 above = glm::dvec2(otherRange.lo) - glm::dvec2(range->hi);
-  const glm::dvec2 apart = glm::max(below, above);
-  const int axis = apart.x >= apart.y ? 0 : 1;
+  const PlanGap apart = planGap(*range, otherRange);
   const double smoothGap = kSmoothGapOverGap * gapMeters;
-  if (apart[axis] < 0.0 || apart[axis] >= smoothGap) return;
-  const int side = above[axis] >= below[axis] ? 1 : -1;  // a's side facing the other
-  const double missing = smoothGap - apart[axis];
+  if (apart.meters < 0.0 || apart.meters >= smoothGap) return;
+  const int axis = apart.axis, side = apart.side;  // a's side facing the other
+  const double missing = smoothGap - apart.meters;
   const double roomA = roomToGive(*range, a.captureMeters, axis, side);
   const double roomOther = other ? roomToGive(otherRange, other->captureMeters, axis, -side) : 0.0;
   // The one with more room gives first (the other on a tie): a thin range stays as it is.
@@ -58,11 +55,11 @@ void partNearRanges(double gapMeters, std::span<const InfluenceVolume> kept,
   for (LayoutProbe& probe : probes)
     for (const InfluenceVolume& k : kept)
       if (const std::optional<InnerRange> range = innerRangeOf(k))
-        partToTheGap(gapMeters, probe, *range, nullptr);
+        partToSmoothGap(gapMeters, probe, *range, nullptr);
   for (std::size_t i = 0; i < probes.size(); ++i)
     for (std::size_t j = i + 1; j < probes.size(); ++j)
       if (const std::optional<InnerRange> range = innerRangeOf(probes[j].influence))
-        partToTheGap(gapMeters, probes[i], *range, &probes[j]);
+        partToSmoothGap(gapMeters, probes[i], *range, &probes[j]);
 }
 
 }  // namespace probeproxy

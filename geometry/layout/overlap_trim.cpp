@@ -125,9 +125,22 @@ std::vector<InfluenceVolume> volumesNear(std::span<const InfluenceVolume> volume
   return near;
 }
 
-// The steepest change of any weight per centimetre over the trimmed volume's bands along the
-// trimmed axis (where its weight changes), at the capture heights its box spans, where a camera
-// can be. Only volumes near there take part.
+// The steepest change of any weight per centimetre on a grid over the plan rectangle (lo, hi),
+// at the capture heights strictly inside (zLo, zHi), where a camera can be.
+double steepestChangeOn(std::span<const InfluenceVolume> near, glm::dvec2 lo, glm::dvec2 hi,
+                        double zLo, double zHi, std::span<const double> heights, CameraRows& rows) {
+  double steepest = 0.0;
+  for (double z : heights) {
+    if (z <= zLo || z >= zHi) continue;
+    const WeightGrid grid{lo, hi, z, kBlendCheckGridMeters};
+    const WeightContinuity c = measureWeightContinuity(near, grid, {}, rows.mask());
+    steepest = std::max(steepest, c.largestJump / (100.0 * kBlendCheckGridMeters));
+  }
+  return steepest;
+}
+
+// The steepest change over the trimmed volume's bands along the trimmed axis (where its weight
+// changes), at the capture heights its box spans. Only volumes near there take part.
 double steepestChangeAlong(std::span<const InfluenceVolume> volumes, const BoxInfluence& box,
                            int axis, std::span<const double> heights, CameraRows& rows) {
   const glm::dvec3 lo = box.centerMeters - box.halfExtentsMeters;
@@ -136,14 +149,11 @@ double steepestChangeAlong(std::span<const InfluenceVolume> volumes, const BoxIn
   const double innerLo = box.centerMeters[axis] - box.innerHalfExtentsMeters[axis];
   const double innerHi = box.centerMeters[axis] + box.innerHalfExtentsMeters[axis];
   double steepest = 0.0;
-  for (double z : heights) {
-    if (z <= lo.z || z >= hi.z) continue;
-    for (auto [from, to] : {std::pair{lo[axis], innerLo}, std::pair{innerHi, hi[axis]}}) {
-      WeightGrid grid{glm::dvec2(lo), glm::dvec2(hi), z, kBlendCheckGridMeters};
-      grid.minMeters[axis] = from, grid.maxMeters[axis] = to;
-      const WeightContinuity c = measureWeightContinuity(near, grid, {}, rows.mask());
-      steepest = std::max(steepest, c.largestJump / (100.0 * kBlendCheckGridMeters));
-    }
+  for (auto [from, to] : {std::pair{lo[axis], innerLo}, std::pair{innerHi, hi[axis]}}) {
+    glm::dvec2 bandLo(lo), bandHi(hi);
+    bandLo[axis] = from, bandHi[axis] = to;
+    steepest =
+        std::max(steepest, steepestChangeOn(near, bandLo, bandHi, lo.z, hi.z, heights, rows));
   }
   return steepest;
 }
@@ -161,21 +171,13 @@ bool blendStaysSmooth(std::vector<InfluenceVolume>& volumes, std::size_t v,
   return after <= std::max(before, limitPerCentimeter);
 }
 
-// The steepest change of any weight per centimetre over the box, at the capture heights it
-// spans, where a camera can be, with the volumes near it.
+// The steepest change over the box, at the capture heights it spans, with the volumes near it.
 double steepestChangeOver(std::span<const InfluenceVolume> volumes, const BoxInfluence& box,
                           std::span<const double> heights, CameraRows& rows) {
   const glm::dvec3 lo = box.centerMeters - box.halfExtentsMeters;
   const glm::dvec3 hi = box.centerMeters + box.halfExtentsMeters;
-  const std::vector<InfluenceVolume> near = volumesNear(volumes, lo, hi);
-  double steepest = 0.0;
-  for (double z : heights) {
-    if (z <= lo.z || z >= hi.z) continue;
-    const WeightGrid grid{glm::dvec2(lo), glm::dvec2(hi), z, kBlendCheckGridMeters};
-    const WeightContinuity c = measureWeightContinuity(near, grid, {}, rows.mask());
-    steepest = std::max(steepest, c.largestJump / (100.0 * kBlendCheckGridMeters));
-  }
-  return steepest;
+  return steepestChangeOn(volumesNear(volumes, lo, hi), glm::dvec2(lo), glm::dvec2(hi), lo.z, hi.z,
+                          heights, rows);
 }
 
 // A fill's face moves instead of the fill going (run_layout drops a fill still in a crowd):
@@ -219,9 +221,11 @@ std::optional<Cut> nextCut(std::span<const OverlapPoint> points,
       }
     }
   }
+  // Band trims before face moves (a fill's face moved first kept bloodprison's trims of the
+  // bands around it from passing the blend check), then the most points freed, then the least
+  // cut; the first of equals.
   std::optional<Cut> best;
-  std::size_t bestFreed = 0;
-  double bestCut = 0.0;
+  std::tuple<bool, std::ptrdiff_t, double> bestRank;
   for (auto& [which, values] : asked) {
     const auto [v, axis, side] = which;
     // Band trims ask for half extents (less is more cut), faces for cuts.
@@ -233,15 +237,10 @@ std::optional<Cut> nextCut(std::span<const OverlapPoint> points,
     for (std::size_t j = 0; j < values.size(); ++j) {
       if (j + 1 < values.size() && values[j + 1] == values[j]) continue;  // frees those too
       const Cut cut{v, axis, side, values[j]};
-      const std::size_t freed = j + 1;
-      const double band = side == 0 ? now - values[j] : values[j];
       if (refused.count(cut)) continue;
-      // A face moves only where no band trim is left to try: a fill's face moved first kept
-      // bloodprison's trims of the bands around it from passing the blend check.
-      const bool trimFirst = best && (best->side == 0) != (side == 0);
-      if (trimFirst ? side == 0
-                    : !best || freed > bestFreed || (freed == bestFreed && band < bestCut))
-        best = cut, bestFreed = freed, bestCut = band;
+      const auto freed = static_cast<std::ptrdiff_t>(j + 1);
+      const std::tuple rank{side != 0, -freed, side == 0 ? now - values[j] : values[j]};
+      if (!best || rank < bestRank) best = cut, bestRank = rank;
     }
   }
   return best;

@@ -14,8 +14,9 @@
 // group wider than the pop it closes, and its band is one gap: no trim takes it out of a crowd.
 // Its faces may move instead: one side of its box, inner range and band together, moves in off
 // the points (bloodprison's fill over a capped ramp met four bands below its end; dropped, its
-// pop came back: 0.205 per cm), under the same floor and blend checks, the box keeping its
-// capture point.
+// pop came back: 0.205 per cm), the box keeping its capture point: only where no band trim is
+// left to try, the floor it gives up staying in another volume, and the blend over its box no
+// steeper than validate's limit or than without the fill, the alternative.
 
 #include "geometry/floor/walkable_floor.h"
 #include "geometry/layout/run_layout.h"
