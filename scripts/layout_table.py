@@ -10,7 +10,8 @@ At the layout's default tolerance (5 degrees) "over tolerance" is the share of t
 floor over 5 degrees.
 
   /usr/bin/python3 scripts/layout_table.py build/plugin/cli/probeproxy build/corpus/scenes \
-      [--maps docs/images/layout --pictures downer toxic skyway] [--levels downer toxic]
+      [--maps docs/images/layout --pictures downer toxic skyway] [--levels downer toxic] \
+      [--work DIR]
 """
 import argparse
 import glob
@@ -42,6 +43,7 @@ def main():
     parser.add_argument("--levels", nargs="*", default=[])
     parser.add_argument("--maps")
     parser.add_argument("--pictures", nargs="*", default=[])
+    parser.add_argument("--work", help="keep every run's output here (to validate the layouts)")
     args = parser.parse_args()
 
     scenes = sorted(glob.glob(os.path.join(args.scenes, "*", "*.scene.json")))
@@ -51,7 +53,9 @@ def main():
           "| grid probes | grid p95 | grid over 5 deg | p95 ratio | grid probes to reach "
           "layout's p95 |")
     print("|---|---|---|---|---|---|---|---|---|---|")
-    with tempfile.TemporaryDirectory() as work:
+    with tempfile.TemporaryDirectory() as scratch:
+        work = args.work or scratch
+        os.makedirs(work, exist_ok=True)
         for scene in scenes:
             level = os.path.basename(os.path.dirname(scene))
             out = os.path.join(work, level)

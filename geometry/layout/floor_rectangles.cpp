@@ -89,7 +89,7 @@ FloorRect widened(const FloorRect& rect, int cells) {
 }
 
 FloorRect growFloorRect(const FloorColumns& columns, std::size_t startCell,
-                        const std::function<bool(std::size_t)>& acceptable,
+                        const std::function<double(std::size_t)>& acceptable,
                         const std::function<bool(std::size_t)>& claimed, double acceptedShare) {
   const FloorCell& start = columns.floor().cells[startCell];
   if (claimed(startCell)) return FloorRect{};
@@ -99,7 +99,7 @@ FloorRect growFloorRect(const FloorColumns& columns, std::size_t startCell,
 }
 
 FloorRect grownFloorRect(const FloorColumns& columns, FloorRect rect,
-                         const std::function<bool(std::size_t)>& acceptable,
+                         const std::function<double(std::size_t)>& acceptable,
                          const std::function<bool(std::size_t)>& claimed, double acceptedShare) {
   // The strip one past a side: the new rectangle minus the old one.
   const auto tryGrow = [&](int side) {
@@ -119,7 +119,7 @@ FloorRect grownFloorRect(const FloorColumns& columns, FloorRect rect,
       if (claimed(i)) blocked = true;
       const double a = columns.floor().cells[i].areaSquareMeters;
       area += a;
-      if (acceptable(i)) acceptedArea += a;
+      acceptedArea += a * acceptable(i);
     });
     if (blocked || area <= 0.0 || acceptedArea < acceptedShare * area) return false;
     rect = next;

@@ -58,17 +58,17 @@ class FloorColumns {
   std::vector<std::size_t> first_, count_;  // per grid column (row * columns + column)
 };
 
-// `acceptable(cell)`: the probe may shade it (in the share `acceptedShare` of a strip's area at
-// least); `claimed(cell)`: another range's. A strip holding no floor at all ends the growth
-// that way (a room's edge), as does one holding a claimed cell. Sides grow in turn (-x, +x,
-// -y, +y) until none can. Empty when the start cell is claimed.
+// `acceptable(cell)`: how far the probe may shade it, 0 to 1 (a strip grows the rectangle when
+// its area-weighted mean is at least `acceptedShare`); `claimed(cell)`: another range's. A strip
+// holding no floor at all ends the growth that way (a room's edge), as does one holding a claimed
+// cell. Sides grow in turn (-x, +x, -y, +y) until none can. Empty when the start cell is claimed.
 FloorRect growFloorRect(const FloorColumns& columns, std::size_t startCell,
-                        const std::function<bool(std::size_t)>& acceptable,
+                        const std::function<double(std::size_t)>& acceptable,
                         const std::function<bool(std::size_t)>& claimed, double acceptedShare);
 
 // The same growth from a rectangle already grown.
 FloorRect grownFloorRect(const FloorColumns& columns, FloorRect rect,
-                         const std::function<bool(std::size_t)>& acceptable,
+                         const std::function<double(std::size_t)>& acceptable,
                          const std::function<bool(std::size_t)>& claimed, double acceptedShare);
 
 // The rectangle's cell nearest its middle (in plan). The rectangle must hold a cell.

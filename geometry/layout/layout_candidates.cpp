@@ -3,6 +3,8 @@
 #include "geometry/layout/floor_rectangles.h"
 #include "geometry/probe_proxies/build_scene_proxies.h"
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -18,14 +20,41 @@ glm::dvec3 captureAbove(const LevelRayCaster& level, glm::dvec3 floorMeters, dou
   return floorMeters + glm::dvec3(0.0, 0.0, std::min(heightMeters, 0.5 * freeHeight));
 }
 
+namespace {
+
+// Whether a capture point moved `offset` off its cell's centre stands on the open side of
+// whatever lies between: a ray back to the centre's column that first meets a face from behind
+// starts inside a solid (a wall a cell's centre lies in the face of, entered a quarter cell).
+bool onOpenSide(const LevelRayCaster& level, glm::dvec3 capture, glm::dvec3 offset) {
+  const double length = glm::length(offset);
+  if (length <= 0.0) return true;
+  Ray back;
+  back.originMeters = capture;
+  back.direction = glm::vec3(-offset / length);
+  back.tMax = static_cast<float>(length);
+  const RayHit hit = level.firstHit(back);
+  return !hit.hit() || glm::dot(back.direction, hit.geometricNormal) < 0.0f;
+}
+
+}  // namespace
+
 ClearCapture clearCaptureAbove(const LevelRayCaster& level, const WalkableFloor& floor,
                                std::span<const std::size_t> cells, double heightMeters) {
   ClearCapture best;
-  for (std::size_t c : cells) {
-    const glm::dvec3 capture = captureAbove(level, floor.cells[c].pointMeters, heightMeters);
-    const double clearance = nearestSurface(level, capture).distanceMeters;
-    if (clearance > best.clearanceMeters) best = {capture, clearance};
-    if (clearance >= kLayoutCaptureClearanceMeters) break;
+  // Over the cell's centre first, then a quarter cell off it each way: one cell of floor
+  // between a wall and a pillar (warfare's fills) has its centre in a face.
+  const double q = 0.25 * floor.spacingMeters;
+  const glm::dvec3 offsets[] = {{0, 0, 0}, {q, 0, 0},  {-q, 0, 0}, {0, q, 0},  {0, -q, 0},
+                                {q, q, 0}, {-q, q, 0}, {q, -q, 0}, {-q, -q, 0}};
+  for (const glm::dvec3& offset : offsets) {
+    for (std::size_t c : cells) {
+      const glm::dvec3 capture =
+          captureAbove(level, floor.cells[c].pointMeters + offset, heightMeters);
+      if (!onOpenSide(level, capture, offset)) continue;
+      const double clearance = nearestSurface(level, capture).distanceMeters;
+      if (clearance > best.clearanceMeters) best = {capture, clearance};
+      if (clearance >= kLayoutCaptureClearanceMeters) return best;
+    }
   }
   return best;
 }

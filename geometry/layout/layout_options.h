@@ -39,7 +39,10 @@ struct LayoutOptions {
   WalkableFloorOptions floor{0.5};
   // The floor every point of which must lie in some volume: the survey's.
   WalkableFloorOptions coverFloor;
-  int samplesPerCell = 2;
+  // A candidate's share of a cell's samples decides its range (select_probes.h): with 2, a
+  // cell one serves at 80% showed as half served as often as not (warfare, one pass at 0.8: p95
+  // 32.3 degrees against 35.6 with 2 samples, the layout 10% slower).
+  int samplesPerCell = 4;
   std::uint32_t seed = 1;
   // Each candidate's proxy: a small depth cube and few samples (a few thousand candidates per
   // level); the chosen probes are built again with `finalProxy`.

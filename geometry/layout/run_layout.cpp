@@ -13,6 +13,7 @@
 #include "geometry/layout/select_probes.h"
 #include "geometry/layout/thin_ranges.h"
 #include "geometry/layout/uncovered_floor_fills.h"
+#include "geometry/probe_proxies/build_scene_proxies.h"
 #include "geometry/survey/floor_samples.h"
 
 #include <tbb/parallel_for.h>
@@ -204,11 +205,12 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
     std::vector<std::size_t> cells;
     columns.forEachIn(fill, [&](std::size_t cell) { cells.push_back(cell); });
     const glm::dvec3 middle = floor.cells[middleCell(columns, fill)].pointMeters;
-    add(fill,
-        clearCaptureAbove(level, floor, nearestFirst(floor, std::move(cells), middle),
-                          o.captureHeightMeters)
-            .captureMeters,
-        kRoomFitMeters);
+    const ClearCapture clear = clearCaptureAbove(
+        level, floor, nearestFirst(floor, std::move(cells), middle), o.captureHeightMeters);
+    // A scene may not hold a probe in a surface: its floor is left to the uncovered floor's
+    // fills.
+    if (clear.clearanceMeters < kMinCaptureClearanceMeters) continue;
+    add(fill, clear.captureMeters, kRoomFitMeters);
   }
   // Strips narrower than the gap join a neighbour (five bands met over the gap beside them).
   joinThinRanges(level, walked, o.blendBandMeters, keptVolumes, r.probes);

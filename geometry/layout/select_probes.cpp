@@ -11,11 +11,21 @@ namespace probeproxy {
 
 namespace {
 
-// Per candidate, the floor cells it serves whole and those it sees a sample of, of the floor
-// it holds in sight.
+// Per candidate, the share of each floor cell's samples it serves within the tolerance (0 out of
+// its sight) and the cells it sees a sample of, of the floor it holds in sight; per cell, the
+// best share any candidate serves.
 struct CellSets {
-  std::vector<std::vector<char>> served, seen;
-  std::vector<char> servable;  // some candidate serves the cell whole
+  std::vector<std::vector<char>> seen;
+  std::vector<std::vector<float>> share;
+  std::vector<float> best;
+
+  // How well candidate c serves a cell against the best any candidate does there: a strip of a
+  // range is judged by this (floor_rectangles.h), and floor nobody serves is anybody's who sees
+  // it.
+  double score(std::size_t c, std::size_t cell) const {
+    if (!seen[c][cell]) return 0.0;
+    return best[cell] > 0.0f ? share[c][cell] / best[cell] : 1.0;
+  }
 };
 
 CellSets cellSets(std::span<const CandidateService> services, std::span<const CaptureSight> sights,
@@ -24,24 +34,25 @@ CellSets cellSets(std::span<const CandidateService> services, std::span<const Ca
   std::vector<int> perCell(cellCount, 0);
   for (const FloorSample& s : samples) ++perCell[s.cell];
   CellSets sets;
-  sets.served.resize(services.size());
   sets.seen.resize(services.size());
+  sets.share.resize(services.size());
   tbb::parallel_for(std::size_t{0}, services.size(), [&](std::size_t c) {
     const std::size_t capture = services[c].capture;
     std::vector<int> count(cellCount, 0);
     for (std::uint32_t i : services[c].served) ++count[samples[i].cell];
     sets.seen[c].assign(cellCount, 0);
     for (std::uint32_t i : sights[capture].seen) sets.seen[c][samples[i].cell] = 1;
-    sets.served[c].assign(cellCount, 0);
+    sets.share[c].assign(cellCount, 0.0f);
     for (std::size_t cell = 0; cell < cellCount; ++cell) {
       if (sets.seen[c][cell]) sets.seen[c][cell] = inSight.inSight(capture, cell);
-      sets.served[c][cell] =
-          sets.seen[c][cell] && perCell[cell] > 0 && count[cell] == perCell[cell];
+      if (!sets.seen[c][cell] || perCell[cell] == 0) continue;
+      sets.share[c][cell] = static_cast<float>(count[cell]) / static_cast<float>(perCell[cell]);
     }
   });
-  sets.servable.assign(cellCount, 0);
-  for (const std::vector<char>& served : sets.served)
-    for (std::size_t cell = 0; cell < cellCount; ++cell) sets.servable[cell] |= served[cell];
+  sets.best.assign(cellCount, 0.0f);
+  for (const std::vector<float>& share : sets.share)
+    for (std::size_t cell = 0; cell < cellCount; ++cell)
+      sets.best[cell] = std::max(sets.best[cell], share[cell]);
   return sets;
 }
 
@@ -52,13 +63,14 @@ struct Cover {
   const SelectionOptions& options;
   std::vector<char> claimed;  // inside a chosen range or its gap
   ProbeSelection selection;
+  double acceptedShare = options.acceptedShare;  // of a strip, in the pass under way
 
   // Floor out of the candidate's sight is not acceptable (cellSets): a strip may hold a tenth
   // of it at most. Ending the growth there too gave the same layouts within a probe a map.
-  FloorRect rectOf(std::size_t c, const std::function<bool(std::size_t)>& acceptable) const {
+  FloorRect rectOf(std::size_t c, const std::function<double(std::size_t)>& acceptable) const {
     return growFloorRect(
         columns, captureCells[services[c].capture], acceptable,
-        [&](std::size_t cell) { return claimed[cell] != 0; }, options.acceptedShare);
+        [&](std::size_t cell) { return claimed[cell] != 0; }, acceptedShare);
   }
 
   double gainOf(const FloorRect& rect, const std::function<double(std::size_t)>& worth) const {
@@ -79,7 +91,7 @@ struct Cover {
 
   // Greedy with lazy gains: claims only grow, so a candidate's rectangle and gain only shrink,
   // and one whose recomputed gain still tops the queue is the best.
-  void greedy(const std::function<bool(std::size_t, std::size_t)>& acceptable,
+  void greedy(const std::function<double(std::size_t, std::size_t)>& acceptable,
               const std::function<double(std::size_t, std::size_t)>& worth, double minGain) {
     const auto evaluate = [&](std::size_t c, FloorRect& rect) {
       rect = rectOf(c, [&](std::size_t cell) { return acceptable(c, cell); });
@@ -181,12 +193,12 @@ void dropAbsorbed(const FloorColumns& columns, const CellSets& sets,
         clear = j == p || j == q || keepsGap(merged, selection.ranges[j], gapCells);
       if (!clear) continue;
       double gained = 0.0, served = 0.0;
-      const std::vector<char>& servedByQ = sets.served[selection.chosen[q]];
+      const std::vector<float>& servedByQ = sets.share[selection.chosen[q]];
       columns.forEachIn(merged, [&](std::size_t cell) {
         if (selection.ranges[q].holds(columns.floor().cells[cell])) return;
         const double area = columns.floor().cells[cell].areaSquareMeters;
         gained += area;
-        if (servedByQ[cell]) served += area;
+        served += servedByQ[cell] * area;
       });
       if (served < acceptedShare * gained ||
           !gainsOnlyFloorInSight(columns, services, inSight, selection, q, merged))
@@ -224,19 +236,19 @@ std::optional<ProbeSelection> oneProbeServesAsMuch(
     if (!all.holds(floor.cells[cell])) return std::nullopt;  // more than one storey
     const double a = floor.cells[cell].areaSquareMeters;
     area += a;
-    if (std::any_of(cover.chosen.begin(), cover.chosen.end(),
-                    [&](std::size_t c) { return sets.served[c][cell] != 0; }))
-      coverServed += a;
+    float coverShare = 0.0f;
+    for (std::size_t c : cover.chosen) coverShare = std::max(coverShare, sets.share[c][cell]);
+    coverServed += coverShare * a;
   }
-  std::size_t best = sets.served.size();
+  std::size_t best = sets.share.size();
   double bestServed = 0.0;
-  for (std::size_t c = 0; c < sets.served.size(); ++c) {
+  for (std::size_t c = 0; c < sets.share.size(); ++c) {
     double served = 0.0;
     for (std::size_t cell = 0; cell < floor.cells.size(); ++cell)
-      if (sets.served[c][cell]) served += floor.cells[cell].areaSquareMeters;
+      served += sets.share[c][cell] * floor.cells[cell].areaSquareMeters;
     if (served > bestServed) best = c, bestServed = served;
   }
-  if (best == sets.served.size() || bestServed < coverServed - slack * area ||
+  if (best == sets.share.size() || bestServed < coverServed - slack * area ||
       bestServed < acceptedShare * area)
     return std::nullopt;
   for (std::size_t cell = 0; cell < floor.cells.size(); ++cell)
@@ -349,20 +361,25 @@ ProbeSelection selectProbes(std::span<const CandidateService> services,
     return !kept.served.empty() && kept.served[cell] ? 0.0 : floor.cells[cell].areaSquareMeters;
   };
   const double minGain = std::max(o.minGainSquareMeters, o.minGainShare * floor.areaSquareMeters());
-  // Served floor first; floor nobody serves goes to those who see it, worth a quarter as much.
-  cover.greedy(
-      [&](std::size_t c, std::size_t cell) {
-        return sets.served[c][cell] || (!sets.servable[cell] && sets.seen[c][cell]);
-      },
-      [&](std::size_t c, std::size_t cell) {
-        return sets.served[c][cell] ? area(cell) : sets.seen[c][cell] ? 0.25 * area(cell) : 0.0;
-      },
-      minGain);
-  // What is left outside every range and band: the candidates that see it.
-  cover.greedy(
-      [&](std::size_t c, std::size_t cell) { return sets.seen[c][cell] != 0; },
-      [&](std::size_t c, std::size_t cell) { return sets.seen[c][cell] ? area(cell) : 0.0; },
-      minGain);
+  // Served floor first, in ranges that serve it as well as any candidate can, then in looser
+  // ones; floor nobody serves goes to those who see it, worth a quarter as much.
+  for (const SelectionOptions::CoverPass& pass : o.passes) {
+    cover.acceptedShare = pass.acceptedShare;
+    cover.greedy([&](std::size_t c, std::size_t cell) { return sets.score(c, cell); },
+                 [&](std::size_t c, std::size_t cell) {
+                   const double unserved = sets.best[cell] == 0.0f && sets.seen[c][cell];
+                   return (sets.share[c][cell] + 0.25 * unserved) * area(cell);
+                 },
+                 std::max(minGain, pass.minGainSquareMeters));
+  }
+  // What is left outside every range and band: the candidates that see it, the ones that serve
+  // it first.
+  cover.acceptedShare = o.acceptedShare;
+  cover.greedy([&](std::size_t c, std::size_t cell) { return sets.seen[c][cell] != 0; },
+               [&](std::size_t c, std::size_t cell) {
+                 return sets.seen[c][cell] ? (0.25 + sets.share[c][cell]) * area(cell) : 0.0;
+               },
+               minGain);
   dropAbsorbed(columns, sets, services, inSight, o.acceptedShare, o.gapCells, cover.selection);
   if (kept.served.empty()) {
     if (const auto one = oneProbeServesAsMuch(columns, sets, services, inSight, cover.selection,

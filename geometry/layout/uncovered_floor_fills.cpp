@@ -6,6 +6,7 @@
 #include "geometry/layout/floor_rectangles.h"
 #include "geometry/layout/layout_candidates.h"
 #include "geometry/layout/layout_influence.h"
+#include "geometry/probe_proxies/build_scene_proxies.h"
 #include "geometry/survey/blended_error.h"
 #include "geometry/validate/camera_space.h"
 
@@ -111,11 +112,13 @@ void fillGroups(const LevelRayCaster& level, const WalkableFloor& floor,
       captureHeight =
           std::max(captureHeight, 0.5 * (innerLo.z + hi.z + kInfluenceHeadRoomMeters) - lo.z);
     }
-    glm::dvec3 capture =
-        clearCaptureAbove(level, floor, nearestFirst(floor, members, 0.5 * (lo + hi)),
-                          captureHeight)
-            .captureMeters;
-    if (capture.z < innerLo.z + kCaptureMarginMeters) continue;  // no room over that top
+    const ClearCapture clear = clearCaptureAbove(
+        level, floor, nearestFirst(floor, members, 0.5 * (lo + hi)), captureHeight);
+    // A scene may not hold a probe in a surface (checkCapturePoints); no room over that top.
+    glm::dvec3 capture = clear.captureMeters;
+    if (clear.clearanceMeters < kMinCaptureClearanceMeters ||
+        capture.z < innerLo.z + kCaptureMarginMeters)
+      continue;
     glm::dvec3 innerHi(hi.x + half, hi.y + half, hi.z + kInfluenceHeadRoomMeters);
     innerLo = glm::min(innerLo, capture - glm::dvec3(kCaptureMarginMeters));
     innerHi = glm::max(innerHi, capture + glm::dvec3(kCaptureMarginMeters));

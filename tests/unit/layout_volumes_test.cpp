@@ -7,11 +7,13 @@
 #include "geometry/floor/walkable_floor.h"
 #include "geometry/layout/candidate_service.h"
 #include "geometry/layout/head_room.h"
+#include "geometry/layout/layout_candidates.h"
 #include "geometry/layout/layout_influence.h"
 #include "geometry/layout/near_ranges.h"
 #include "geometry/layout/overlap_trim.h"
 #include "geometry/layout/thin_ranges.h"
 #include "geometry/layout/uncovered_floor_fills.h"
+#include "geometry/probe_proxies/build_scene_proxies.h"
 #include "geometry/survey/blended_error.h"
 #include "geometry/validate/camera_space.h"
 
@@ -108,6 +110,36 @@ TEST(KeepClearOfInnerRanges, ARangeACaptureMarginFromTheOtherComesBackOnlyToItsC
   glm::dvec3 lo{5.2, 0, -0.5}, hi{9, 10, 2.5}, capture{5.6, 5, 1.6};
   keepClearOfInnerRanges(lo, hi, capture, 0.0, std::span(&other, 1), 1.0);
   EXPECT_DOUBLE_EQ(lo.x, 5.6 - kCaptureMarginMeters) << "its capture point stays inside";
+}
+
+TEST(ClearCaptureAbove, ACellWhoseCentreLiesInAWallsFaceCapturesAQuarterCellOffItOnTheRoomsSide) {
+  // The layout's floor of a 4 x 4 m room; then a wall 0.3 m thick whose face passes through the
+  // centre of the cell nearest (2, 2) (warfare's one-cell fills: their capture points lay in a
+  // face and the layout could not be written).
+  const glm::dvec3 seed{1.0, 1.0, 1.6};
+  const WalkableFloor floor = walkableFloor(LevelRayCaster(boxRoom({0, 0, 0}, {4, 4, 3})),
+                                            std::span(&seed, 1), WalkableFloorOptions{0.5});
+  std::size_t cell = 0;
+  for (std::size_t c = 0; c < floor.cells.size(); ++c)
+    if (glm::distance(floor.cells[c].pointMeters, glm::dvec3(2, 2, 0)) <
+        glm::distance(floor.cells[cell].pointMeters, glm::dvec3(2, 2, 0)))
+      cell = c;
+  const glm::dvec3 centre = floor.cells[cell].pointMeters;
+  LevelMesh mesh = boxRoom({0, 0, 0}, {4, 4, 3});
+  LevelMesh wall = boxRoom(glm::vec3(centre.x, centre.y - 1.0, 0),
+                           glm::vec3(centre.x + 0.3, centre.y + 1.0, 3), "wall");
+  for (glm::uvec3& t : wall.triangles) std::swap(t.y, t.z);  // faces outwards: a solid
+  appendLevelMesh(mesh, wall);
+  const LevelRayCaster walled(mesh);
+  const std::array<std::size_t, 1> cells{cell};
+  EXPECT_LT(nearestSurface(walled, captureAbove(walled, centre, 1.6)).distanceMeters,
+            kMinCaptureClearanceMeters)
+      << "over the centre, the capture point lies in the wall's face";
+  const ClearCapture clear = clearCaptureAbove(walled, floor, cells, 1.6);
+  EXPECT_GE(clear.clearanceMeters, kLayoutCaptureClearanceMeters);
+  EXPECT_NEAR(clear.captureMeters.x, centre.x - 0.25 * floor.spacingMeters, 1e-9)
+      << "a quarter cell off, in the room, not inside the wall";
+  EXPECT_NEAR(clear.captureMeters.z, centre.z + 1.6, 1e-9);
 }
 
 TEST(FillsForUncoveredFloor, FloorBeyondEveryBandGetsOneProbeAndIsThenCovered) {
