@@ -41,12 +41,14 @@ bool onOpenSide(const LevelRayCaster& level, glm::dvec3 capture, glm::dvec3 offs
 ClearCapture clearCaptureAbove(const LevelRayCaster& level, const WalkableFloor& floor,
                                std::span<const std::size_t> cells, double heightMeters) {
   ClearCapture best;
-  // Over the cell's centre first, then a quarter cell off it each way: one cell of floor
-  // between a wall and a pillar (warfare's fills) has its centre in a face.
+  // Over the cells' centres first, then, only when none may hold a probe, a quarter cell off
+  // them each way: one cell of floor between a wall and a pillar (warfare's fills) has its
+  // centre in a face.
   const double q = 0.25 * floor.spacingMeters;
   const glm::dvec3 offsets[] = {{0, 0, 0}, {q, 0, 0},  {-q, 0, 0}, {0, q, 0},  {0, -q, 0},
                                 {q, q, 0}, {-q, q, 0}, {q, -q, 0}, {-q, -q, 0}};
   for (const glm::dvec3& offset : offsets) {
+    if (best.clearanceMeters >= kMinCaptureClearanceMeters) break;
     for (std::size_t c : cells) {
       const glm::dvec3 capture =
           captureAbove(level, floor.cells[c].pointMeters + offset, heightMeters);

@@ -37,9 +37,9 @@ glm::dvec3 captureAbove(const LevelRayCaster& level, glm::dvec3 floorMeters, dou
 
 // The capture point over the first of `cells` (the caller's order of preference: nearest the
 // middle of what the probe serves first) that stands kLayoutCaptureClearanceMeters clear of
-// every surface, over a cell's centre or else a quarter cell off it, else the clearest of them,
-// with its clearance. A floor cell's centre can
-// lie in a wall's plane (the map's grid and the floor's agree: warfare's fills had a capture
+// every surface, else over the clearest of them, with its clearance; where no centre is
+// kMinCaptureClearanceMeters clear, the same a quarter cell off the centres. A floor cell's centre
+// can lie in a wall's plane (the map's grid and the floor's agree: warfare's fills had a capture
 // point 0.5 mm from a wall), and a scene may not hold such a probe.
 struct ClearCapture {
   glm::dvec3 captureMeters{0.0};

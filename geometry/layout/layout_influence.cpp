@@ -1,5 +1,7 @@
 #include "geometry/layout/layout_influence.h"
 
+#include <cmath>
+
 #include <glm/common.hpp>
 #include <glm/vector_relational.hpp>
 
@@ -96,6 +98,26 @@ void keepClearOfInnerRanges(glm::dvec3& lo, glm::dvec3& hi, glm::dvec3& captureM
   }
   if (captureMeters.z > hi.z - kCaptureMarginMeters)
     captureMeters.z = floorMeters + 0.5 * (hi.z - floorMeters);
+  // Two ranges' boxes can still overlap over plan where neither holds floor (a pillar's column,
+  // a pit beside a grating: the selection claims floor cells, not plan; bloodprison, darkzone):
+  // the side facing the other comes back off it, on the axis that gives up the least, never
+  // past the capture point.
+  for (const InfluenceVolume& other : others) {
+    glm::dvec3 otherLo, otherHi;
+    if (!axisAlignedInnerRange(other, otherLo, otherHi) ||
+        glm::any(glm::greaterThanEqual(lo, otherHi)) || glm::any(glm::lessThanEqual(hi, otherLo)))
+      continue;
+    double least = INFINITY;
+    int axis = -1, side = 0;
+    for (int a = 0; a < 2; ++a) {
+      if (otherLo[a] > captureMeters[a] + kCaptureMarginMeters && hi[a] - otherLo[a] < least)
+        least = hi[a] - otherLo[a], axis = a, side = 1;
+      if (otherHi[a] < captureMeters[a] - kCaptureMarginMeters && otherHi[a] - lo[a] < least)
+        least = otherHi[a] - lo[a], axis = a, side = -1;
+    }
+    if (side > 0) hi[axis] = otherLo[axis];
+    if (side < 0) lo[axis] = otherHi[axis];
+  }
   // After the height cuts: a range cut under a platform no longer meets it.
   for (const InfluenceVolume& other : others) {
     glm::dvec3 otherLo, otherHi;

@@ -339,7 +339,9 @@ std::vector<FloorRect> fillsForTheRest(const FloorColumns& columns, int gapCells
         columns, cell, [](std::size_t) { return true; },
         [&](std::size_t c) { return claimed[c] != 0; }, 1.0);
     fills.push_back(fill);
-    columns.forEachIn(widened(fill, gapCells), [&](std::size_t c) { claimed[c] = 1; });
+    // As far down as its inner range reaches, as `choose` claims (darkzone: a fill a step
+    // lower grew inside another's plan).
+    columns.forEachUnderInnerRange(widened(fill, gapCells), [&](std::size_t c) { claimed[c] = 1; });
   }
   return fills;
 }

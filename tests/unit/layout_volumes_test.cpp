@@ -113,11 +113,11 @@ TEST(KeepClearOfInnerRanges, ARangeACaptureMarginFromTheOtherComesBackOnlyToItsC
 }
 
 TEST(ClearCaptureAbove, ACellWhoseCentreLiesInAWallsFaceCapturesAQuarterCellOffItOnTheRoomsSide) {
-  // The layout's floor of a 4 x 4 m room; then a wall 0.3 m thick whose face passes through the
+  // The layout's floor of a 4 x 4 x 4 m room; then a wall 0.3 m thick whose face passes through the
   // centre of the cell nearest (2, 2) (warfare's one-cell fills: their capture points lay in a
   // face and the layout could not be written).
   const glm::dvec3 seed{1.0, 1.0, 1.6};
-  const WalkableFloor floor = walkableFloor(LevelRayCaster(boxRoom({0, 0, 0}, {4, 4, 3})),
+  const WalkableFloor floor = walkableFloor(LevelRayCaster(boxRoom({0, 0, 0}, {4, 4, 4})),
                                             std::span(&seed, 1), WalkableFloorOptions{0.5});
   std::size_t cell = 0;
   for (std::size_t c = 0; c < floor.cells.size(); ++c)
@@ -125,9 +125,9 @@ TEST(ClearCaptureAbove, ACellWhoseCentreLiesInAWallsFaceCapturesAQuarterCellOffI
         glm::distance(floor.cells[cell].pointMeters, glm::dvec3(2, 2, 0)))
       cell = c;
   const glm::dvec3 centre = floor.cells[cell].pointMeters;
-  LevelMesh mesh = boxRoom({0, 0, 0}, {4, 4, 3});
+  LevelMesh mesh = boxRoom({0, 0, 0}, {4, 4, 4});
   LevelMesh wall = boxRoom(glm::vec3(centre.x, centre.y - 1.0, 0),
-                           glm::vec3(centre.x + 0.3, centre.y + 1.0, 3), "wall");
+                           glm::vec3(centre.x + 0.3, centre.y + 1.0, 4), "wall");
   for (glm::uvec3& t : wall.triangles) std::swap(t.y, t.z);  // faces outwards: a solid
   appendLevelMesh(mesh, wall);
   const LevelRayCaster walled(mesh);
@@ -140,6 +140,19 @@ TEST(ClearCaptureAbove, ACellWhoseCentreLiesInAWallsFaceCapturesAQuarterCellOffI
   EXPECT_NEAR(clear.captureMeters.x, centre.x - 0.25 * floor.spacingMeters, 1e-9)
       << "a quarter cell off, in the room, not inside the wall";
   EXPECT_NEAR(clear.captureMeters.z, centre.z + 1.6, 1e-9);
+}
+
+TEST(KeepClearOfInnerRanges, BoxesOverlappingInPlanAtOneHeightComeApartOnTheSideThatGivesLeast) {
+  // The selection claims floor cells, not plan: two ranges' rectangles can both take a column
+  // with no floor in it (a pillar's), and their boxes overlap there (bloodprison, darkzone).
+  const std::vector<InfluenceVolume> others{influenceOfBounds({0, 0, -0.5}, {5, 5, 2.5}, 1.0)};
+  glm::dvec3 lo{4, 0, -0.5}, hi{10, 5, 2.5}, capture{6, 2, 1.6};
+  keepClearOfInnerRanges(lo, hi, capture, 0.0, others, 1.0);
+  EXPECT_GE(lo.x, 5.0) << "the west side, 1 m into the other, comes back (not the 5 m in y)";
+  EXPECT_EQ(lo.y, 0.0);
+  EXPECT_EQ(hi, glm::dvec3(10, 5, 2.5));
+  EXPECT_LE(lo.x, capture.x - kCaptureMarginMeters) << "never past the capture point";
+  EXPECT_FALSE(innerRangesOverlap(others[0], influenceOfBounds(lo, hi, 1.0)));
 }
 
 TEST(FillsForUncoveredFloor, FloorBeyondEveryBandGetsOneProbeAndIsThenCovered) {
