@@ -39,8 +39,8 @@ struct SelectionOptions {
   // candidate there does (the share of a cell's samples served within the tolerance): ranges as
   // good as any candidate's first, only where they bring `minGainSquareMeters` (an exact range a
   // few cells wide costs a blend band around it, floor that blends two probes), then looser
-  // ones. Whole cells served once decided (4 of 10 maps: ranges stopped at a cell or two, where
-  // a neighbouring cell's sample missed, and half the floor went to ranges that only saw it).
+  // ones. Whole cells served once decided (warfare: ranges stopped at a cell or two, where a
+  // neighbouring cell's sample missed, and half the floor went to ranges that only saw it).
   struct CoverPass {
     double acceptedShare = 0.8;
     double minGainSquareMeters = 0.0;  // under the cover's least gain: that gain
