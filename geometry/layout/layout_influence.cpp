@@ -86,11 +86,13 @@ BoxInfluence influenceOfBounds(glm::dvec3 innerLoMeters, glm::dvec3 innerHiMeter
 void keepClearOfInnerRanges(glm::dvec3& lo, glm::dvec3& hi, glm::dvec3& captureMeters,
                             double floorMeters, std::span<const InfluenceVolume> others,
                             double gapMeters) {
+  const auto meets = [&](glm::dvec3 otherLo, glm::dvec3 otherHi) {
+    return !glm::any(glm::greaterThanEqual(lo, otherHi)) &&
+           !glm::any(glm::lessThanEqual(hi, otherLo));
+  };
   for (const InfluenceVolume& other : others) {
     glm::dvec3 otherLo, otherHi;
-    if (!axisAlignedInnerRange(other, otherLo, otherHi)) continue;
-    if (glm::any(glm::greaterThanEqual(lo, otherHi)) || glm::any(glm::lessThanEqual(hi, otherLo)))
-      continue;
+    if (!axisAlignedInnerRange(other, otherLo, otherHi) || !meets(otherLo, otherHi)) continue;
     if (otherLo.z > floorMeters + kMinAirOverFloorMeters)
       hi.z = otherLo.z - kInnerClearanceMeters;
     else if (otherHi.z <= floorMeters)
@@ -104,9 +106,7 @@ void keepClearOfInnerRanges(glm::dvec3& lo, glm::dvec3& hi, glm::dvec3& captureM
   // past the capture point.
   for (const InfluenceVolume& other : others) {
     glm::dvec3 otherLo, otherHi;
-    if (!axisAlignedInnerRange(other, otherLo, otherHi) ||
-        glm::any(glm::greaterThanEqual(lo, otherHi)) || glm::any(glm::lessThanEqual(hi, otherLo)))
-      continue;
+    if (!axisAlignedInnerRange(other, otherLo, otherHi) || !meets(otherLo, otherHi)) continue;
     double least = INFINITY;
     int axis = -1, side = 0;
     for (int a = 0; a < 2; ++a) {

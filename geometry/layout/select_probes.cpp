@@ -56,6 +56,15 @@ CellSets cellSets(std::span<const CandidateService> services, std::span<const Ca
   return sets;
 }
 
+// A range's floor and its gap are no other range's: as far down as its inner range reaches (a
+// step under its floor), else a range or fill on a stair a step lower overlaps it (bloodprison:
+// two ranges 0.3 m apart, one's plan inside the other's; darkzone: a fill).
+void claimWithGap(const FloorColumns& columns, const FloorRect& rect, int gapCells,
+                  std::vector<char>& claimed) {
+  columns.forEachUnderInnerRange(widened(rect, gapCells),
+                                 [&](std::size_t cell) { claimed[cell] = 1; });
+}
+
 struct Cover {
   const FloorColumns& columns;
   std::span<const CandidateService> services;
@@ -63,11 +72,11 @@ struct Cover {
   const SelectionOptions& options;
   std::vector<char> claimed;  // inside a chosen range or its gap
   ProbeSelection selection;
-  double acceptedShare = options.acceptedShare;  // of a strip, in the pass under way
 
   // Floor out of the candidate's sight is not acceptable (cellSets): a strip may hold a tenth
   // of it at most. Ending the growth there too gave the same layouts within a probe a map.
-  FloorRect rectOf(std::size_t c, const std::function<double(std::size_t)>& acceptable) const {
+  FloorRect rectOf(std::size_t c, const std::function<double(std::size_t)>& acceptable,
+                   double acceptedShare) const {
     return growFloorRect(
         columns, captureCells[services[c].capture], acceptable,
         [&](std::size_t cell) { return claimed[cell] != 0; }, acceptedShare);
@@ -79,22 +88,21 @@ struct Cover {
     return gain;
   }
 
-  // The claim reaches as far down as the inner range (a step under its floor): a range on a
-  // stair a step lower would otherwise overlap it (bloodprison: two ranges 0.3 m apart,
-  // one's plan inside the other's).
   void choose(std::size_t c, const FloorRect& rect) {
     selection.chosen.push_back(c);
     selection.ranges.push_back(rect);
-    columns.forEachUnderInnerRange(widened(rect, options.gapCells),
-                                   [&](std::size_t cell) { claimed[cell] = 1; });
+    claimWithGap(columns, rect, options.gapCells, claimed);
   }
 
   // Greedy with lazy gains: claims only grow, so a candidate's rectangle and gain only shrink,
   // and one whose recomputed gain still tops the queue is the best.
+  // `acceptedShare`: of a strip (floor_rectangles.h).
   void greedy(const std::function<double(std::size_t, std::size_t)>& acceptable,
-              const std::function<double(std::size_t, std::size_t)>& worth, double minGain) {
+              const std::function<double(std::size_t, std::size_t)>& worth, double acceptedShare,
+              double minGain) {
     const auto evaluate = [&](std::size_t c, FloorRect& rect) {
-      rect = rectOf(c, [&](std::size_t cell) { return acceptable(c, cell); });
+      rect = rectOf(
+          c, [&](std::size_t cell) { return acceptable(c, cell); }, acceptedShare);
       return gainOf(rect, [&](std::size_t cell) { return worth(c, cell); });
     };
     std::vector<double> gains(services.size(), 0.0);
@@ -339,9 +347,7 @@ std::vector<FloorRect> fillsForTheRest(const FloorColumns& columns, int gapCells
         columns, cell, [](std::size_t) { return true; },
         [&](std::size_t c) { return claimed[c] != 0; }, 1.0);
     fills.push_back(fill);
-    // As far down as its inner range reaches, as `choose` claims (darkzone: a fill a step
-    // lower grew inside another's plan).
-    columns.forEachUnderInnerRange(widened(fill, gapCells), [&](std::size_t c) { claimed[c] = 1; });
+    claimWithGap(columns, fill, gapCells, claimed);
   }
   return fills;
 }
@@ -366,22 +372,20 @@ ProbeSelection selectProbes(std::span<const CandidateService> services,
   // Served floor first, in ranges that serve it as well as any candidate can, then in looser
   // ones; floor nobody serves goes to those who see it, worth a quarter as much.
   for (const SelectionOptions::CoverPass& pass : o.passes) {
-    cover.acceptedShare = pass.acceptedShare;
     cover.greedy([&](std::size_t c, std::size_t cell) { return sets.score(c, cell); },
                  [&](std::size_t c, std::size_t cell) {
                    const double unserved = sets.best[cell] == 0.0f && sets.seen[c][cell];
                    return (sets.share[c][cell] + 0.25 * unserved) * area(cell);
                  },
-                 std::max(minGain, pass.minGainSquareMeters));
+                 pass.acceptedShare, std::max(minGain, pass.minGainSquareMeters));
   }
   // What is left outside every range and band: the candidates that see it, the ones that serve
   // it first.
-  cover.acceptedShare = o.acceptedShare;
   cover.greedy([&](std::size_t c, std::size_t cell) { return sets.seen[c][cell] != 0; },
                [&](std::size_t c, std::size_t cell) {
                  return sets.seen[c][cell] ? (0.25 + sets.share[c][cell]) * area(cell) : 0.0;
                },
-               minGain);
+               o.acceptedShare, minGain);
   dropAbsorbed(columns, sets, services, inSight, o.acceptedShare, o.gapCells, cover.selection);
   if (kept.served.empty()) {
     if (const auto one = oneProbeServesAsMuch(columns, sets, services, inSight, cover.selection,
