@@ -1,5 +1,7 @@
 #include "geometry/layout/floor_rectangles.h"
 
+#include "geometry/survey/blended_error.h"
+
 #include <glm/common.hpp>
 
 #include <algorithm>
@@ -25,7 +27,11 @@ bool FloorRect::holds(const FloorCell& cell) const {
 }
 
 bool FloorRect::underInnerRange(const FloorCell& cell) const {
-  return inWindow(*this, cell, kInfluenceBelowFloorMeters + kInfluenceStepMeters);
+  // The survey lifts each sample kBlendLiftMeters before it asks which ranges hold it: floor a
+  // hair more than a step under the range is in it as the survey sees it, and a fill grown there
+  // would overlap the range (warfare: a fill 0.51 m under its neighbour's floor).
+  return inWindow(*this, cell,
+                  kInfluenceBelowFloorMeters + kInfluenceStepMeters + kBlendLiftMeters);
 }
 
 FloorColumns::FloorColumns(const WalkableFloor& floor)

@@ -34,7 +34,7 @@ struct FloorRect {
   // Whether a floor cell lies inside (its column and row in range, its height in the window).
   bool holds(const FloorCell& cell) const;
   // Whether a floor cell lies under the inner range of the rectangle's influence box
-  // (floorRectBounds): as holds, and down to a step under the window.
+  // (floorRectBounds) as the survey sees it: as holds, and down to a step under the window.
   bool underInnerRange(const FloorCell& cell) const;
 };
 

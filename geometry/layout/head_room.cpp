@@ -129,12 +129,24 @@ void raiseRangesOverRaisedFloor(const WalkableFloor& walked, double gapMeters,
     if (!(top > range.hi.z)) continue;
     const InnerRange before = range;
     // A range above within a gap that would stop the rise short of a camera's head (a ramp up
-    // to the floor that range holds): this one gives it the gap in plan instead, if it can from
-    // every such range, and the ramp's top lies in the blend between the two.
+    // to the floor that range holds): this one gives it the gap in plan instead, and the ramp's
+    // top lies in the blend between the two. One it cannot give the gap to (the storey over
+    // all of it) still bounds the rise; those lower than that are given the gap, so a strip
+    // beside the stair's top does not hold the range under it (stormkeep: a camera over the
+    // stair stood between the storeys' bands, in no volume but the strip's band end).
+    const auto above = [&](const InnerRange* n) {
+      return n->lo.z >= range.hi.z && n->lo.z < top - kVerticalBandMeters;
+    };
+    double bound = top;
+    for (const InnerRange* n : neighbours) {
+      InnerRange alone = range;
+      if (above(n) && !cutAwayInPlan(alone, *n, probes[t].captureMeters, gapMeters))
+        bound = std::min(bound, n->lo.z);
+    }
     InnerRange cut = range;
     bool cuts = false, uncut = false;
     for (const InnerRange* n : neighbours) {
-      if (n->lo.z < range.hi.z || n->lo.z >= top - kVerticalBandMeters) continue;
+      if (!above(n) || n->lo.z >= bound) continue;
       cuts = true;
       uncut = uncut || !cutAwayInPlan(cut, *n, probes[t].captureMeters, gapMeters);
     }

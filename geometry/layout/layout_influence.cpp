@@ -90,33 +90,65 @@ void keepClearOfInnerRanges(glm::dvec3& lo, glm::dvec3& hi, glm::dvec3& captureM
     return !glm::any(glm::greaterThanEqual(lo, otherHi)) &&
            !glm::any(glm::lessThanEqual(hi, otherLo));
   };
+  // The side facing the other range, brought back to it on the plan axis that gives up the
+  // least, never past the capture point; {-1, 0} when every side would have to pass it.
+  const auto planCut = [&](glm::dvec3 otherLo, glm::dvec3 otherHi, double& meters) {
+    meters = INFINITY;
+    std::pair<int, int> cut{-1, 0};  // axis, side
+    for (int a = 0; a < 2; ++a) {
+      if (otherLo[a] > captureMeters[a] + kCaptureMarginMeters && hi[a] - otherLo[a] < meters)
+        meters = hi[a] - otherLo[a], cut = {a, 1};
+      if (otherHi[a] < captureMeters[a] - kCaptureMarginMeters && otherHi[a] - lo[a] < meters)
+        meters = otherHi[a] - lo[a], cut = {a, -1};
+    }
+    return cut;
+  };
+  const auto applyPlanCut = [&](std::pair<int, int> cut, glm::dvec3 otherLo, glm::dvec3 otherHi) {
+    const auto [axis, side] = cut;
+    if (side > 0) hi[axis] = otherLo[axis];
+    if (side < 0) lo[axis] = otherHi[axis];
+  };
+  const auto planArea = [&] { return (hi.x - lo.x) * (hi.y - lo.y); };
   for (const InfluenceVolume& other : others) {
     glm::dvec3 otherLo, otherHi;
     if (!axisAlignedInnerRange(other, otherLo, otherHi) || !meets(otherLo, otherHi)) continue;
+    // A range over or under this floor takes the height it spans, unless it only reaches over
+    // an edge of the plan: a raised floor beside this one whose range overhangs it by a strip
+    // (warfare) would take this range's head room over all its floor, and leave the air there,
+    // where a camera stands, in no volume at all. There the side comes back instead.
+    double heightLoss = INFINITY, newZ = 0.0;
+    int heightSide = 0;
     if (otherLo.z > floorMeters + kMinAirOverFloorMeters)
-      hi.z = otherLo.z - kInnerClearanceMeters;
+      newZ = otherLo.z - kInnerClearanceMeters, heightSide = 1;
     else if (otherHi.z <= floorMeters)
-      lo.z = otherHi.z + kInnerClearanceMeters;
+      newZ = otherHi.z + kInnerClearanceMeters, heightSide = -1;
+    if (heightSide != 0) heightLoss = std::abs((heightSide > 0 ? hi.z : lo.z) - newZ) * planArea();
+    double stripMeters;
+    const std::pair<int, int> cut = planCut(otherLo, otherHi, stripMeters);
+    if (cut.second != 0) {
+      const int across = 1 - cut.first;
+      const double planLoss =
+          stripMeters *
+          (std::min(hi[across], otherHi[across]) - std::max(lo[across], otherLo[across])) *
+          (hi.z - lo.z);
+      if (planLoss < heightLoss) {
+        applyPlanCut(cut, otherLo, otherHi);
+        continue;
+      }
+    }
+    if (heightSide > 0) hi.z = newZ;
+    if (heightSide < 0) lo.z = newZ;
   }
   if (captureMeters.z > hi.z - kCaptureMarginMeters)
     captureMeters.z = floorMeters + 0.5 * (hi.z - floorMeters);
   // Two ranges' boxes can still overlap over plan where neither holds floor (a pillar's column,
   // a pit beside a grating: the selection claims floor cells, not plan; bloodprison, darkzone):
-  // the side facing the other comes back off it, on the axis that gives up the least, never
-  // past the capture point.
+  // the side facing the other comes back off it, never past the capture point.
   for (const InfluenceVolume& other : others) {
     glm::dvec3 otherLo, otherHi;
     if (!axisAlignedInnerRange(other, otherLo, otherHi) || !meets(otherLo, otherHi)) continue;
-    double least = INFINITY;
-    int axis = -1, side = 0;
-    for (int a = 0; a < 2; ++a) {
-      if (otherLo[a] > captureMeters[a] + kCaptureMarginMeters && hi[a] - otherLo[a] < least)
-        least = hi[a] - otherLo[a], axis = a, side = 1;
-      if (otherHi[a] < captureMeters[a] - kCaptureMarginMeters && otherHi[a] - lo[a] < least)
-        least = otherHi[a] - lo[a], axis = a, side = -1;
-    }
-    if (side > 0) hi[axis] = otherLo[axis];
-    if (side < 0) lo[axis] = otherHi[axis];
+    double stripMeters;
+    applyPlanCut(planCut(otherLo, otherHi, stripMeters), otherLo, otherHi);
   }
   // After the height cuts: a range cut under a platform no longer meets it.
   for (const InfluenceVolume& other : others) {

@@ -6,6 +6,7 @@
 #include "geometry/builtin/box_room.h"
 #include "geometry/floor/walkable_floor.h"
 #include "geometry/layout/candidate_service.h"
+#include "geometry/layout/floor_rectangles.h"
 #include "geometry/layout/head_room.h"
 #include "geometry/layout/layout_candidates.h"
 #include "geometry/layout/layout_influence.h"
@@ -40,6 +41,24 @@ glm::dvec3 innerHi(const InfluenceVolume& v) {
 bool innerRangesOverlap(const InfluenceVolume& a, const InfluenceVolume& b) {
   return glm::all(glm::lessThan(innerLo(a), innerHi(b))) &&
          glm::all(glm::lessThan(innerLo(b), innerHi(a)));
+}
+
+TEST(FloorRect, FloorIsUnderTheInnerRangeExactlyWhereTheSurveyFindsItThere) {
+  // A range of one 0.5 m cell over floor at z 1.25. The survey asks which ranges hold a floor
+  // sample with the sample lifted kBlendLiftMeters: warfare's fill over floor 0.51 m under a
+  // range (a hair past the step the range reaches down) grew inside it, where no fill may.
+  WalkableFloor floor;
+  floor.spacingMeters = 0.5, floor.columns = floor.rows = 1;
+  const FloorRect rect{0, 0, 0, 0, 1.25};
+  glm::dvec3 lo, hi;
+  floorRectBounds(floor, rect, {0.25, 0.25, 2.85}, lo, hi);
+  const InfluenceVolume range = influenceOfBounds(lo, hi, 1.0);
+  for (double under : {0.3, 0.5, 0.51, 0.549, 0.551, 0.6}) {
+    FloorCell cell;
+    cell.pointMeters = {0.25, 0.25, 1.25 - under};
+    const glm::dvec3 sample = cell.pointMeters + glm::dvec3(0, 0, kBlendLiftMeters);
+    EXPECT_EQ(rect.underInnerRange(cell), insideInnerRange(range, sample)) << under << " m under";
+  }
 }
 
 TEST(KeepClearOfInnerRanges, APitFillStopsUnderTheRangeOverIt) {
@@ -153,6 +172,30 @@ TEST(KeepClearOfInnerRanges, BoxesOverlappingInPlanAtOneHeightComeApartOnTheSide
   EXPECT_EQ(hi, glm::dvec3(10, 5, 2.5));
   EXPECT_LE(lo.x, capture.x - kCaptureMarginMeters) << "never past the capture point";
   EXPECT_FALSE(innerRangesOverlap(others[0], influenceOfBounds(lo, hi, 1.0)));
+}
+
+TEST(KeepClearOfInnerRanges, ARaisedFloorOverAnEdgeTakesAStripAndABridgeOverTheMiddleTheHeight) {
+  // A range over a 10 x 10 m floor at z 0, and a raised floor 1.75 m up beside it whose range
+  // overhangs this one's east edge by 0.5 m (warfare): cut under it, this range kept 1.25 m of
+  // its 2.5 m head room over all its floor, and a camera standing there was in no volume.
+  const std::vector<InfluenceVolume> raised{influenceOfBounds({9.5, 0, 1.25}, {15, 10, 4.25}, 1.0)};
+  glm::dvec3 lo{0, 0, -0.5}, hi{10, 10, 2.5}, capture{5, 5, 1.6};
+  keepClearOfInnerRanges(lo, hi, capture, 0.0, raised, 1.0);
+  EXPECT_EQ(hi.z, 2.5) << "the head room is kept";
+  EXPECT_LE(hi.x, 9.5 - 1.0) << "the east side comes back, a gap from the raised range";
+  EXPECT_EQ(lo, glm::dvec3(0, 0, -0.5));
+  EXPECT_EQ(capture, glm::dvec3(5, 5, 1.6));
+  EXPECT_TRUE(insideInnerRange(influenceOfBounds(lo, hi, 1.0), {5, 5, 2.4}));
+  EXPECT_FALSE(innerRangesOverlap(raised[0], influenceOfBounds(lo, hi, 1.0)));
+
+  // A bridge 2.5 m up across the middle of the room: coming back in plan past it would give up
+  // half the room, the air under the bridge much less.
+  const std::vector<InfluenceVolume> bridge{influenceOfBounds({0, 4, 2.0}, {10, 6, 5.0}, 1.0)};
+  glm::dvec3 lo2{0, 0, -0.5}, hi2{10, 10, 2.5}, capture2{5, 2, 1.6};
+  keepClearOfInnerRanges(lo2, hi2, capture2, 0.0, bridge, 1.0);
+  EXPECT_NEAR(hi2.z, 2.0, 2e-3);
+  EXPECT_EQ(glm::dvec2(hi2), glm::dvec2(10, 10)) << "the plan is whole";
+  EXPECT_FALSE(innerRangesOverlap(bridge[0], influenceOfBounds(lo2, hi2, 1.0)));
 }
 
 TEST(FillsForUncoveredFloor, FloorBeyondEveryBandGetsOneProbeAndIsThenCovered) {
@@ -460,6 +503,23 @@ TEST(RaiseRangesOverRaisedFloor, UnderARangeAboveItGivesThatRangeTheGapInPlanAnd
   // ledge floor under the landing's range 3.5 m from every range over its height.
   const InfluenceVolume wide = influenceOfBounds({7, 0, 2.5}, {10, 6, 5.5}, 1.0);
   EXPECT_EQ(innerHi(room.raised(10, std::span(&wide, 1)).influence), glm::dvec3(10, 6, 2.5));
+}
+
+TEST(RaiseRangesOverRaisedFloor,
+     UnderAStoreyAndALandingItGivesTheLandingTheGapAndRisesToTheStorey) {
+  // The landing of the test above, and a gallery storey over all of the room from 3.2 m that
+  // no cut in plan can clear (it spans the capture point). The gallery bounds the rise; the
+  // landing, lower, must not: the range stopped at 2.5 m, 1 m over the ledge (stormkeep: a
+  // camera over a stair stood between the two storeys' bands).
+  const LedgeRoom room(true);
+  const InfluenceVolume landing = influenceOfBounds({9.5, 0, 2.5}, {10, 6, 5.5}, 1.0);
+  const InfluenceVolume gallery = influenceOfBounds({0, 0, 3.2}, {10, 6, 6.0}, 1.0);
+  const InfluenceVolume risen = room.raised(10, std::array{landing, gallery}).influence;
+  EXPECT_DOUBLE_EQ(innerHi(risen).x, 8.5) << "a gap from the landing's range";
+  EXPECT_NEAR(innerHi(risen).z, 3.2 - kInnerClearanceMeters, 1e-9) << "up to the gallery";
+  EXPECT_EQ(innerLo(risen), glm::dvec3(0, 0, -0.5));
+  EXPECT_FALSE(innerRangesOverlap(risen, landing));
+  EXPECT_FALSE(innerRangesOverlap(risen, gallery));
 }
 
 TEST(FillsForUncoveredFloor, EyesOverALedgeOverTheirRangesTopGetAFillStartingOverThatTop) {
