@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace probeproxy {
 
@@ -59,6 +60,38 @@ ClearCapture clearCaptureAbove(const LevelRayCaster& level, const WalkableFloor&
     }
   }
   return best;
+}
+
+bool clearMovedCapture(const LevelRayCaster& level, glm::dvec3 chosenMeters,
+                       glm::dvec3& captureMeters, double floorMeters, double topMeters) {
+  if (captureMeters == chosenMeters) return true;
+  const auto firstHit = [&](glm::dvec3 p, float dz) {
+    Ray ray;
+    ray.originMeters = p;
+    ray.direction = {0.0f, 0.0f, dz};
+    return level.firstHit(ray);
+  };
+  // The height of the floor a point stands over: the first face straight under it, met from
+  // the front, with none met from behind straight over it; none under a ramp's one-sided face
+  // (outside the level: darkzone's fill saw none of its floor from there).
+  const auto floorUnder = [&](glm::dvec3 p) -> std::optional<double> {
+    const RayHit down = firstHit(p, -1.0f), up = firstHit(p, 1.0f);
+    if (!down.hit() || down.geometricNormal.z <= 0.0f) return std::nullopt;
+    if (up.hit() && up.geometricNormal.z > 0.0f) return std::nullopt;
+    return p.z - down.t;
+  };
+  // A ramp or a stair in the range stands higher than the range's floor under the chosen point.
+  const double base = std::max(floorMeters, floorUnder(chosenMeters).value_or(floorMeters));
+  for (double up : {0.5, 0.375, 0.625, 0.25, 0.75}) {
+    glm::dvec3 capture = captureMeters;
+    capture.z = base + up * (topMeters - base);
+    if (floorUnder(capture) &&
+        nearestSurface(level, capture).distanceMeters >= kLayoutCaptureClearanceMeters) {
+      captureMeters = capture;
+      return true;
+    }
+  }
+  return false;
 }
 
 std::vector<std::size_t> nearestFirst(const WalkableFloor& floor, std::vector<std::size_t> cells,

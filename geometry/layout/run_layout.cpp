@@ -188,24 +188,22 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
   const std::vector<InfluenceVolume> keptVolumes = volumes;  // never cut, trimmed or moved
   // The survey walks a finer floor than the candidates (validate's leak rule too).
   const WalkableFloor walked = walkableFloor(level, seedsMeters, o.coverFloor);
-  // A fill whose capture point the cut under a range above brought down into its floor (a
-  // stair under another range: darkzone's saw none of its floor) is not made: its floor is
-  // left to the uncovered floor's fills.
-  const auto add = [&](const FloorRect& rect, glm::dvec3 capture, double fitMeters, bool fill) {
+  // A probe whose capture point the cut under a range above brings down into a surface, with
+  // no clear height left over its floor, is not made: its floor is left to the uncovered
+  // floor's fills.
+  const auto add = [&](const FloorRect& rect, glm::dvec3 capture, double fitMeters) {
     glm::dvec3 lo, hi;
     floorRectBounds(floor, rect, capture, lo, hi);
     const glm::dvec3 chosen = capture;
     keepClearOfInnerRanges(lo, hi, capture, rect.floorMeters, volumes, o.blendBandMeters);
-    if (fill && capture != chosen &&
-        nearestSurface(level, capture).distanceMeters < kLayoutCaptureClearanceMeters)
-      return;
+    if (!clearMovedCapture(level, chosen, capture, rect.floorMeters, hi.z)) return;
     pullBandsIntoSight(level, walked, capture, o.blendBandMeters, lo, hi);
     r.probes.push_back({capture, influenceOfBounds(lo, hi, o.blendBandMeters), fitMeters});
     volumes.push_back(r.probes.back().influence);
   };
   for (std::size_t p = 0; p < selection.chosen.size(); ++p) {
     const CandidateService& chosen = services[selection.chosen[p]];
-    add(selection.ranges[p], chosen.captureMeters, chosen.fitMeters, false);
+    add(selection.ranges[p], chosen.captureMeters, chosen.fitMeters);
   }
   const FloorColumns columns(floor);
   for (const FloorRect& fill : selection.fills) {
@@ -217,7 +215,7 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
     // A scene may not hold a probe in a surface: its floor is left to the uncovered floor's
     // fills.
     if (clear.clearanceMeters < kMinCaptureClearanceMeters) continue;
-    add(fill, clear.captureMeters, kRoomFitMeters, true);
+    add(fill, clear.captureMeters, kRoomFitMeters);
   }
   // Strips narrower than the gap join a neighbour (five bands met over the gap beside them).
   joinThinRanges(level, walked, o.blendBandMeters, keptVolumes, r.probes);

@@ -122,7 +122,9 @@ void fillGroups(const LevelRayCaster& level, const WalkableFloor& floor,
     glm::dvec3 innerHi(hi.x + half, hi.y + half, hi.z + kInfluenceHeadRoomMeters);
     innerLo = glm::min(innerLo, capture - glm::dvec3(kCaptureMarginMeters));
     innerHi = glm::max(innerHi, capture + glm::dvec3(kCaptureMarginMeters));
+    const glm::dvec3 chosen = capture;
     keepClearOfInnerRanges(innerLo, innerHi, capture, storeyFloor, others, gapMeters);
+    if (!clearMovedCapture(level, chosen, capture, storeyFloor, innerHi.z)) continue;
     // A range above came down to the fill's bottom (over a range's top) or under its capture
     // point: nothing left to fill (stormkeep: 0 m and -1 mm tall).
     if (!glm::all(glm::lessThan(innerLo, innerHi)) ||

@@ -161,6 +161,35 @@ TEST(ClearCaptureAbove, ACellWhoseCentreLiesInAWallsFaceCapturesAQuarterCellOffI
   EXPECT_NEAR(clear.captureMeters.z, centre.z + 1.6, 1e-9);
 }
 
+TEST(ClearMovedCapture, ACaptureCutDownUnderARampsFaceRisesOverTheRamp) {
+  // A 6 x 6 x 4 m room with a ramp along y, one face rising from z 0 at y 0 to 1.2 at y 4, its
+  // underside open (a map's ramp: one-sided, nothing under it). A range over the room's floor
+  // (z 0) cut under a range above at 1.6 m put its capture point half way up, 0.8 m: under the
+  // ramp's face (darkzone's fill, which then saw none of its floor: influence_leak).
+  LevelMesh mesh = boxRoom({0, 0, 0}, {6, 6, 4});
+  LevelMesh ramp;
+  ramp.positionsMeters = {{0, 0, 0}, {6, 0, 0}, {6, 4, 1.2f}, {0, 4, 1.2f}};
+  ramp.triangles = {{0, 1, 2}, {0, 2, 3}};
+  ramp.parts = {{"ramp", {}, 0, 2}};
+  appendLevelMesh(mesh, ramp);
+  const LevelRayCaster level(mesh);
+  const glm::dvec3 chosen{3, 3, 2.5}, cut{3, 3, 0.8};  // the ramp's face is at z 0.9 there
+  glm::dvec3 capture = cut;
+  ASSERT_TRUE(clearMovedCapture(level, chosen, capture, 0.0, 1.6));
+  EXPECT_DOUBLE_EQ(capture.x, 3.0);
+  EXPECT_DOUBLE_EQ(capture.y, 3.0);
+  EXPECT_NEAR(capture.z, 0.9 + 0.5 * (1.6 - 0.9), 1e-6) << "half way up the air over the ramp";
+  EXPECT_GE(nearestSurface(level, capture).distanceMeters, kLayoutCaptureClearanceMeters);
+
+  // A top under the ramp's face there leaves no air over it: the probe is not made.
+  glm::dvec3 under = {3, 3, 0.4};
+  EXPECT_FALSE(clearMovedCapture(level, chosen, under, 0.0, 0.85));
+  // A point the cut did not move stays.
+  glm::dvec3 unmoved = chosen;
+  EXPECT_TRUE(clearMovedCapture(level, chosen, unmoved, 0.0, 1.6));
+  EXPECT_EQ(unmoved, chosen);
+}
+
 TEST(KeepClearOfInnerRanges, BoxesOverlappingInPlanAtOneHeightComeApartOnTheSideThatGivesLeast) {
   // The selection claims floor cells, not plan: two ranges' rectangles can both take a column
   // with no floor in it (a pillar's), and their boxes overlap there (bloodprison, darkzone).
