@@ -19,6 +19,10 @@ namespace {
 // than this would leave that fill's range overlapping the platform's instead.
 constexpr double kMinAirOverFloorMeters = 0.05;
 
+// A range overhanging this one's edge takes a strip of its plan instead of its head room when
+// the strip is at most this share of the plan (warfare's: 7%).
+constexpr double kMostPlanGivenUpForHeadRoom = 0.25;
+
 BoxInfluence boxAround(glm::dvec3 lo, glm::dvec3 hi, double bandMeters) {
   BoxInfluence box;
   box.centerMeters = 0.5 * (lo + hi);
@@ -115,26 +119,23 @@ void keepClearOfInnerRanges(glm::dvec3& lo, glm::dvec3& hi, glm::dvec3& captureM
     // A range over or under this floor takes the height it spans, unless it only reaches over
     // an edge of the plan: a raised floor beside this one whose range overhangs it by a strip
     // (warfare) would take this range's head room over all its floor, and leave the air there,
-    // where a camera stands, in no volume at all. There the side comes back instead.
-    double heightLoss = INFINITY, newZ = 0.0;
+    // where a camera stands, in no volume at all. There the side comes back instead, when that
+    // gives up little of the plan (a bridge over the middle, a storey or an artist's volume
+    // over most of it, take the height: the air they leave is theirs).
+    double newZ = 0.0;
     int heightSide = 0;
     if (otherLo.z > floorMeters + kMinAirOverFloorMeters)
       newZ = otherLo.z - kInnerClearanceMeters, heightSide = 1;
     else if (otherHi.z <= floorMeters)
       newZ = otherHi.z + kInnerClearanceMeters, heightSide = -1;
-    if (heightSide != 0) heightLoss = std::abs((heightSide > 0 ? hi.z : lo.z) - newZ) * planArea();
+    if (heightSide == 0) continue;
     double stripMeters;
     const std::pair<int, int> cut = planCut(otherLo, otherHi, stripMeters);
-    if (cut.second != 0) {
-      const int across = 1 - cut.first;
-      const double planLoss =
-          stripMeters *
-          (std::min(hi[across], otherHi[across]) - std::max(lo[across], otherLo[across])) *
-          (hi.z - lo.z);
-      if (planLoss < heightLoss) {
-        applyPlanCut(cut, otherLo, otherHi);
-        continue;
-      }
+    const int across = 1 - cut.first;
+    if (cut.second != 0 &&
+        stripMeters * (hi[across] - lo[across]) <= kMostPlanGivenUpForHeadRoom * planArea()) {
+      applyPlanCut(cut, otherLo, otherHi);
+      continue;
     }
     if (heightSide > 0) hi.z = newZ;
     if (heightSide < 0) lo.z = newZ;

@@ -21,7 +21,9 @@ fail() { echo "FAIL: $*"; exit 1; }
 "$probeproxy" survey "$suite/l_room/l_room.scene.json" --tolerance-deg 5 --json \
   >"$work/clean_alone.json" 2>/dev/null
 # Round the hall's pillars the cover proposes probes that, built and blended, do not help: they
-# are dropped, and so are their proxy meshes.
+# are dropped, and so are their proxy meshes. Those kept take the floor under the artist's
+# volumes (which start 0.5 m up): the hall's p95 comes under the tolerance (15.6 deg alone;
+# 7.4 when a cut in plan instead of under the artist's volumes left most floor in bands).
 "$probeproxy" layout "$suite/hall_pillars/hall_pillars.scene.json" --keep-authored \
   --out "$work/hall" >/dev/null 2>&1
 "$probeproxy" survey "$suite/hall_pillars/hall_pillars.scene.json" --tolerance-deg 5 --json \
@@ -69,6 +71,7 @@ if clean["added_probes"] > 0:
 hall = json.load(open(os.path.join(work, "hall", "layout.json")))
 hall_alone = json.load(open(os.path.join(work, "hall_alone.json")))
 assert hall["survey"]["over_tolerance_share"] <= hall_alone["over_tolerance_share"], hall
+assert hall["survey"]["p95_deg"] <= 5.0, hall
 
 # Every proxy mesh written belongs to a probe of the scene written.
 for run in ("artist", "clean", "hall"):
