@@ -10,7 +10,6 @@
 
 #include <glm/vec3.hpp>
 
-#include <optional>
 #include <span>
 #include <vector>
 
