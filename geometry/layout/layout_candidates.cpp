@@ -2,12 +2,12 @@
 
 #include "geometry/layout/floor_rectangles.h"
 #include "geometry/probe_proxies/build_scene_proxies.h"
+#include "geometry/raycast/open_space.h"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 
 namespace probeproxy {
 
@@ -65,31 +65,22 @@ ClearCapture clearCaptureAbove(const LevelRayCaster& level, const WalkableFloor&
 bool clearMovedCapture(const LevelRayCaster& level, glm::dvec3 chosenMeters,
                        glm::dvec3& captureMeters, double floorMeters, double topMeters) {
   if (captureMeters == chosenMeters) return true;
-  const auto firstHit = [&](glm::dvec3 p, float dz) {
-    Ray ray;
-    ray.originMeters = p;
-    ray.direction = {0.0f, 0.0f, dz};
-    return level.firstHit(ray);
-  };
-  // The height of the floor a point stands over: the first face straight under it, met from
-  // the front, with none met from behind straight over it; none under a ramp's one-sided face
-  // (outside the level: darkzone's fill saw none of its floor from there).
-  const auto floorUnder = [&](glm::dvec3 p) -> std::optional<double> {
-    const RayHit down = firstHit(p, -1.0f), up = firstHit(p, 1.0f);
-    if (!down.hit() || down.geometricNormal.z <= 0.0f) return std::nullopt;
-    if (up.hit() && up.geometricNormal.z > 0.0f) return std::nullopt;
-    return p.z - down.t;
-  };
   // A ramp or a stair in the range stands higher than the range's floor under the chosen point.
-  const double base = std::max(floorMeters, floorUnder(chosenMeters).value_or(floorMeters));
-  for (double up : {0.5, 0.375, 0.625, 0.25, 0.75}) {
-    glm::dvec3 capture = captureMeters;
-    capture.z = base + up * (topMeters - base);
-    if (floorUnder(capture) &&
-        nearestSurface(level, capture).distanceMeters >= kLayoutCaptureClearanceMeters) {
-      captureMeters = capture;
-      return true;
-    }
+  const float chosenOver = lookUpAndDown(level, std::span(&chosenMeters, 1))[0].floorBelowMeters;
+  const double base =
+      std::isfinite(chosenOver) ? std::max(floorMeters, chosenMeters.z - chosenOver) : floorMeters;
+  std::vector<glm::dvec3> heights;
+  for (double up : {0.5, 0.375, 0.625, 0.25, 0.75})
+    heights.push_back({captureMeters.x, captureMeters.y, base + up * (topMeters - base)});
+  // Over a floor, not inside a solid nor under a one-sided ramp (open_space.h: outside the
+  // level, where darkzone's fill saw none of its floor).
+  const std::vector<VerticalView> views = lookUpAndDown(level, heights);
+  for (std::size_t i = 0; i < heights.size(); ++i) {
+    if (!std::isfinite(views[i].floorBelowMeters) ||
+        nearestSurface(level, heights[i]).distanceMeters < kLayoutCaptureClearanceMeters)
+      continue;
+    captureMeters = heights[i];
+    return true;
   }
   return false;
 }

@@ -53,10 +53,11 @@ ClearCapture clearCaptureAbove(const LevelRayCaster& level, const WalkableFloor&
 // `topMeters`) can land in a surface: under a ramp's face (darkzone: its fill saw none of its
 // floor), on a platform's underside (warfare with a 0.75 m band: the layout could not be
 // written). Over the same point in plan, it moves to the first of half way up the air over the
-// floor under it (a ramp's, a stair's), then lower and higher, that stands over a floor's front
-// face kLayoutCaptureClearanceMeters clear. False where none does: so little air is left that
-// the probe is not made (a fill 8 cm tall under warfare's probe_101 captured 2 cm over its
-// floor, and the blend at that height popped). A point not moved stays.
+// floor under it (a ramp's, a stair's), then lower and higher, that stands over a floor, not in
+// a solid (geometry/raycast/open_space.h), kLayoutCaptureClearanceMeters clear. False where none
+// does: so little air is left that the probe is not made (a fill 8 cm tall under warfare's
+// probe_101 captured 2 cm over its floor, and the blend at that height popped). A point not moved
+// stays.
 bool clearMovedCapture(const LevelRayCaster& level, glm::dvec3 chosenMeters,
                        glm::dvec3& captureMeters, double floorMeters, double topMeters);
 

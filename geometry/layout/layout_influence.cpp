@@ -95,22 +95,25 @@ void keepClearOfInnerRanges(glm::dvec3& lo, glm::dvec3& hi, glm::dvec3& captureM
            !glm::any(glm::lessThanEqual(hi, otherLo));
   };
   // The side facing the other range, brought back to it on the plan axis that gives up the
-  // least, never past the capture point; {-1, 0} when every side would have to pass it.
-  const auto planCut = [&](glm::dvec3 otherLo, glm::dvec3 otherHi, double& meters) {
-    meters = INFINITY;
-    std::pair<int, int> cut{-1, 0};  // axis, side
+  // least (`meters` of it), never past the capture point; side 0 when every side would have to
+  // pass it.
+  struct PlanCut {
+    int axis = 0, side = 0;
+    double meters = INFINITY;
+  };
+  const auto planCut = [&](glm::dvec3 otherLo, glm::dvec3 otherHi) {
+    PlanCut cut;
     for (int a = 0; a < 2; ++a) {
-      if (otherLo[a] > captureMeters[a] + kCaptureMarginMeters && hi[a] - otherLo[a] < meters)
-        meters = hi[a] - otherLo[a], cut = {a, 1};
-      if (otherHi[a] < captureMeters[a] - kCaptureMarginMeters && otherHi[a] - lo[a] < meters)
-        meters = otherHi[a] - lo[a], cut = {a, -1};
+      if (otherLo[a] > captureMeters[a] + kCaptureMarginMeters && hi[a] - otherLo[a] < cut.meters)
+        cut = {a, 1, hi[a] - otherLo[a]};
+      if (otherHi[a] < captureMeters[a] - kCaptureMarginMeters && otherHi[a] - lo[a] < cut.meters)
+        cut = {a, -1, otherHi[a] - lo[a]};
     }
     return cut;
   };
-  const auto applyPlanCut = [&](std::pair<int, int> cut, glm::dvec3 otherLo, glm::dvec3 otherHi) {
-    const auto [axis, side] = cut;
-    if (side > 0) hi[axis] = otherLo[axis];
-    if (side < 0) lo[axis] = otherHi[axis];
+  const auto applyPlanCut = [&](const PlanCut& cut, glm::dvec3 otherLo, glm::dvec3 otherHi) {
+    if (cut.side > 0) hi[cut.axis] = otherLo[cut.axis];
+    if (cut.side < 0) lo[cut.axis] = otherHi[cut.axis];
   };
   const auto planArea = [&] { return (hi.x - lo.x) * (hi.y - lo.y); };
   for (const InfluenceVolume& other : others) {
@@ -129,11 +132,10 @@ void keepClearOfInnerRanges(glm::dvec3& lo, glm::dvec3& hi, glm::dvec3& captureM
     else if (otherHi.z <= floorMeters)
       newZ = otherHi.z + kInnerClearanceMeters, heightSide = -1;
     if (heightSide == 0) continue;
-    double stripMeters;
-    const std::pair<int, int> cut = planCut(otherLo, otherHi, stripMeters);
-    const int across = 1 - cut.first;
-    if (cut.second != 0 &&
-        stripMeters * (hi[across] - lo[across]) <= kMostPlanGivenUpForHeadRoom * planArea()) {
+    const PlanCut cut = planCut(otherLo, otherHi);
+    const int across = 1 - cut.axis;
+    if (cut.side != 0 &&
+        cut.meters * (hi[across] - lo[across]) <= kMostPlanGivenUpForHeadRoom * planArea()) {
       applyPlanCut(cut, otherLo, otherHi);
       continue;
     }
@@ -148,8 +150,7 @@ void keepClearOfInnerRanges(glm::dvec3& lo, glm::dvec3& hi, glm::dvec3& captureM
   for (const InfluenceVolume& other : others) {
     glm::dvec3 otherLo, otherHi;
     if (!axisAlignedInnerRange(other, otherLo, otherHi) || !meets(otherLo, otherHi)) continue;
-    double stripMeters;
-    applyPlanCut(planCut(otherLo, otherHi, stripMeters), otherLo, otherHi);
+    applyPlanCut(planCut(otherLo, otherHi), otherLo, otherHi);
   }
   // After the height cuts: a range cut under a platform no longer meets it.
   for (const InfluenceVolume& other : others) {
