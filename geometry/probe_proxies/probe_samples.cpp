@@ -10,10 +10,12 @@ ProbeSamples drawProbeSamples(const LevelRayCaster& level, const Probe& probe,
   ReflectionSampleOptions reportOptions = o.samples;
   reportOptions.seed = o.samples.seed + 1000;
   reportOptions.connectedFloorOnly = false;
-  const std::optional<WalkableFloor> served = servedFloor(level, probe, fitOptions);
-  s.fit = buildReflectionSamples(level, probe, SampleSet::MirrorFloor, fitOptions, served);
+  Probe fitProbe = probe;
+  if (o.fitInfluence) fitProbe.influence = *o.fitInfluence;
+  const std::optional<WalkableFloor> served = servedFloor(level, fitProbe, fitOptions);
+  s.fit = buildReflectionSamples(level, fitProbe, SampleSet::MirrorFloor, fitOptions, served);
   for (const ReflectionSample& r :
-       buildReflectionSamples(level, probe, SampleSet::AllSurfaces, fitOptions, served))
+       buildReflectionSamples(level, fitProbe, SampleSet::AllSurfaces, fitOptions, served))
     s.fit.push_back(r);
   s.floor = buildReflectionSamples(level, probe, SampleSet::MirrorFloor, reportOptions);
   s.all = buildReflectionSamples(level, probe, SampleSet::AllSurfaces, reportOptions);

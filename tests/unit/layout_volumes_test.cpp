@@ -1,6 +1,7 @@
 // The layout's influence volumes: fills over floor no range reaches, kept clear of the ranges'
 // inner ranges (docs/layout.md).
 
+#include "core/blend/blend_weights.h"
 #include "core/blend/influence_factor.h"
 #include "core/blend/weight_continuity.h"
 #include "geometry/builtin/box_room.h"
@@ -10,6 +11,7 @@
 #include "geometry/layout/head_room.h"
 #include "geometry/layout/layout_candidates.h"
 #include "geometry/layout/layout_influence.h"
+#include "geometry/layout/layout_proxy.h"
 #include "geometry/layout/near_ranges.h"
 #include "geometry/layout/overlap_trim.h"
 #include "geometry/layout/thin_ranges.h"
@@ -568,6 +570,32 @@ TEST(FillsForUncoveredFloor, EyesOverALedgeOverTheirRangesTopGetAFillStartingOve
     const glm::dvec3 eye = c.pointMeters + glm::dvec3(0, 0, 1.6);
     EXPECT_LE(normalizedDistance(fills[0].influence, eye), 0.67) << eye.x << ", " << eye.y;
   }
+}
+
+TEST(MajorityRange, EndsHalfWayAcrossTheGapWhereANeighbourWeighsAsMuch) {
+  // Two ranges a gap (1 m) apart along x, each band kOuterBandOverGap gaps deep.
+  const double gap = 1.0, band = kOuterBandOverGap * gap;
+  const auto box = [&](double centreX) {
+    BoxInfluence b;
+    b.centerMeters = {centreX, 0, 1};
+    b.innerHalfExtentsMeters = {2, 2, 1};
+    b.halfExtentsMeters = b.innerHalfExtentsMeters + glm::dvec3(band, band, kVerticalBandMeters);
+    return InfluenceVolume{b};
+  };
+  const std::array<InfluenceVolume, 2> volumes{box(0), box(4 + gap)};
+  const InfluenceVolume majorityVolume = majorityRange(volumes[0]);
+  const auto& majority = std::get<BoxInfluence>(majorityVolume);
+  const double face = majority.centerMeters.x + majority.halfExtentsMeters.x;
+  EXPECT_NEAR(face, 2 + 0.5 * gap, 1e-12);
+  const auto weightOfFirst = [&](double x) {
+    for (const ProbeWeight& w : blendWeights(volumes, {x, 0, 1}))
+      if (w.probe == 0) return w.weight;
+    return 0.0;
+  };
+  EXPECT_NEAR(weightOfFirst(face), 0.5, 1e-9);
+  EXPECT_GT(weightOfFirst(face - 0.01), 0.5);
+  EXPECT_LT(weightOfFirst(face + 0.01), 0.5);
+  EXPECT_NEAR(majority.halfExtentsMeters.z, 1 + kVerticalBandMeters / 3, 1e-12);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include "core/io/output_folder.h"
 #include "geometry/export/runtime_export.h"
 #include "geometry/layout/candidate_service.h"
+#include "geometry/layout/layout_proxy.h"
 #include "geometry/level/write_level_mesh.h"
 #include "geometry/probe_proxies/build_probe_proxy.h"
 #include "geometry/probe_proxies/build_scene_proxies.h"
@@ -101,19 +102,6 @@ Scene layoutScene(const Scene& input, const LayoutResult& layout, const fs::path
     scene.probes.push_back(std::move(probe));
   }
   return scene;
-}
-
-// A chosen probe's proxy, built as `build` builds it for its influence box: fitted to the
-// floor its inner range holds, which the selection found its candidate serves.
-// The proxy is chosen on the floor the probe alone lights, its inner range: in the blend band
-// a neighbour carries part of the weight, and floor there that this proxy's room does not
-// contain would count as misses against the proxy that fits the probe's own room best.
-ProbeProxyBuild buildForRegion(const LevelRayCaster& level, Probe probe, const LayoutOptions& o) {
-  if (auto* box = std::get_if<BoxInfluence>(&probe.influence))
-    box->halfExtentsMeters = box->innerHalfExtentsMeters;
-  else if (auto* sphere = std::get_if<SphereInfluence>(&probe.influence))
-    sphere->radiusMeters = sphere->innerRadiusMeters;
-  return buildProbeProxy(level, probe, std::nullopt, o.finalProxy);
 }
 
 // The scene file says which proxy each probe has, so `build` on layout.scene.json keeps the
@@ -253,7 +241,7 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
     const std::size_t first = r.builds.size();  // the added probes' builds follow the kept ones
     r.builds.resize(r.scene.probes.size());
     tbb::parallel_for(first, r.builds.size(), [&](std::size_t i) {
-      r.builds[i] = buildForRegion(rayCaster, r.scene.probes[i], o.layout);
+      r.builds[i] = buildLayoutProxy(rayCaster, r.scene.probes[i], o.layout.finalProxy);
     });
     const fs::path folder = r.scene.file.parent_path();
     for (std::size_t i = first; i < r.builds.size(); ++i) {

@@ -1,0 +1,60 @@
+// Issue 12, step 7 on a real map: a layout probe's proxy fitted to its inner range alone ended
+// just past it, and the floor its band shares with a neighbour fell outside the proxy.
+
+#include "core/proxy/proxy_candidate.h"
+#include "geometry/evaluation/evaluate_shape.h"
+#include "geometry/evaluation/reflection_samples.h"
+#include "geometry/layout/layout_proxy.h"
+#include "geometry/level/load_level.h"
+#include "geometry/probe_proxies/build_probe_proxy.h"
+#include "geometry/raycast/level_ray_caster.h"
+#include "geometry/scene/scene_file.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace probeproxy {
+namespace {
+
+TEST(BuildLayoutProxy, OnDownerTheKeptProxyHoldsTheFloorItsBandShares) {
+  // probe_013 of a downer layout whose gaps had been moved (a session 19 experiment): fitted to
+  // its inner range alone, its proxy left out floor just past it, 141 degrees of mean error there.
+  const Scene scene =
+      readSceneFile(std::string(PROBEPROXY_CORPUS_SCENES) + "/downer/downer.scene.json");
+  const LevelRayCaster level(loadLevel(scene));
+  Probe probe;
+  probe.name = "probe_013";
+  probe.captureMeters = {9.25, 19.25, -5.21};
+  BoxInfluence box;
+  box.centerMeters = {8.5, 16.75, -5.406249955};
+  box.halfExtentsMeters = {4.0, 6.25, 2.156249985};
+  box.innerHalfExtentsMeters = {2.5, 4.75, 1.906249985};
+  probe.influence = box;
+  ProxyBuildOptions o;
+
+  Probe inner = probe, majority = probe;
+  std::get<BoxInfluence>(inner.influence).halfExtentsMeters = box.innerHalfExtentsMeters;
+  majority.influence = majorityRange(probe.influence);
+  const ProbeProxyBuild tight = buildProbeProxy(level, inner, std::nullopt, o);
+  const ProbeProxyBuild kept = buildLayoutProxy(level, probe, o);
+  ReflectionSampleOptions so = o.samples;
+  so.seed += 7;
+  so.connectedFloorOnly = false;
+  const auto shared = buildReflectionSamples(level, majority, SampleSet::MirrorFloor, so);
+  const ErrorFigures k =
+      evaluateShape(kept.candidates[kept.kept].shape, probe.captureMeters, shared);
+  const ErrorFigures t =
+      evaluateShape(tight.candidates[tight.kept].shape, probe.captureMeters, shared);
+  // The inner fit misses one reflection in twenty off the floor within half a gap of the range.
+  EXPECT_GT(t.missRate, 0.02);
+  EXPECT_LE(k.missRate, o.maxMissRate);
+  EXPECT_LT(k.meanCostDeg, 0.5 * t.meanCostDeg);
+  EXPECT_LT(k.p95WithMissesDeg, 0.5 * t.p95WithMissesDeg);
+  // Both are chosen on the inner range's floor, where the kept one stays near the inner fit.
+  EXPECT_LE(kept.candidates[kept.kept].error.meanCostDeg,
+            tight.candidates[tight.kept].error.meanCostDeg + 1.0);
+}
+
+}  // namespace
+}  // namespace probeproxy
