@@ -2,10 +2,12 @@
 
 #include "geometry/evaluation/evaluate_shape.h"
 #include "geometry/evaluation/reflection_samples.h"
+#include "geometry/layout/candidate_service.h"
 #include "geometry/layout/layout_influence.h"
 #include "geometry/probe_proxies/build_probe_proxy.h"
 
 #include <variant>
+#include <vector>
 
 namespace probeproxy {
 
@@ -42,7 +44,7 @@ InfluenceVolume majorityRange(const InfluenceVolume& influence) {
 }
 
 ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe,
-                                 const ProxyBuildOptions& options) {
+                                 const ProxyBuildOptions& options, double candidateFitMeters) {
   // Chosen on the floor the probe alone lights: in the band a neighbour carries part of the
   // weight, and counted whole, floor there that the probe's own room does not hold outweighs
   // that room (fitted and chosen on the whole box, warfare's p95 was 36.9 deg against 35.3).
@@ -51,21 +53,27 @@ ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe
   Probe majority = probe;
   majority.influence = majorityRange(probe.influence);
 
-  ProbeProxyBuild tight = buildProbeProxy(level, inner, std::nullopt, options);
-  ProxyBuildOptions reachingOptions = options;
-  reachingOptions.fitInfluence = majority.influence;
-  ProbeProxyBuild reaching = buildProbeProxy(level, inner, std::nullopt, reachingOptions);
-
   ReflectionSampleOptions floorOptions = options.samples;
   floorOptions.seed = options.samples.seed + 1000;  // the build's report samples' seed
   floorOptions.connectedFloorOnly = false;
   const std::vector<ReflectionSample> floor =
       buildReflectionSamples(level, majority, SampleSet::MirrorFloor, floorOptions);
+
   const glm::dvec3 capture = probe.captureMeters;
-  // A NaN mean (no visible sample) compares false: the inner fit stays.
-  return meanCostOver(reaching, capture, floor) < meanCostOver(tight, capture, floor)
-             ? std::move(reaching)
-             : std::move(tight);
+  std::vector<InfluenceVolume> fits = {inner.influence, majority.influence};
+  if (candidateFitMeters > 0.0)
+    fits.push_back(candidateFitProbe(capture, candidateFitMeters).influence);
+  ProbeProxyBuild kept;
+  double keptCost = 0.0;
+  for (const InfluenceVolume& fit : fits) {
+    ProxyBuildOptions fitted = options;
+    fitted.fitInfluence = fit;
+    ProbeProxyBuild build = buildProbeProxy(level, inner, std::nullopt, fitted);
+    const double cost = meanCostOver(build, capture, floor);
+    // A NaN cost (no visible sample) compares false: the first fit stays.
+    if (kept.candidates.empty() || cost < keptCost) kept = std::move(build), keptCost = cost;
+  }
+  return kept;
 }
 
 }  // namespace probeproxy

@@ -18,12 +18,14 @@ namespace probeproxy {
 // widened by a third of the band on every side, the band being kOuterBandOverGap gaps deep.
 InfluenceVolume majorityRange(const InfluenceVolume& influence);
 
-// Two builds of the probe's proxy, both kept by `build`'s rule on the floor of its inner range:
-// one fitted to the reflections of the inner range, one to those of its majority range. The one
-// whose mean cost (each miss at 180 degrees) over the majority range's floor is lower is kept;
-// a tie keeps the inner fit. The probe's influence is its whole box; the build returned reports
-// on its inner range, as `build` on the layout's scene does.
+// The probe's proxy, built as `build` builds one and kept by its rule on the floor of the inner
+// range, fitted three times: to the reflections of the inner range, of the majority range, and
+// of the floor the selection measured the probe's candidate on (a sphere of
+// `candidateFitMeters` round the capture point, candidate_service.h; none when 0: a fill). The
+// fit whose kept proxy has the lowest mean cost (each miss at 180 degrees) over the majority
+// range's floor is kept, the earlier on a tie. The probe's influence is its whole box; the
+// build returned reports on its inner range, as `build` on the layout's scene does.
 ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe,
-                                 const ProxyBuildOptions& options);
+                                 const ProxyBuildOptions& options, double candidateFitMeters);
 
 }  // namespace probeproxy

@@ -37,7 +37,7 @@ TEST(BuildLayoutProxy, OnDownerTheKeptProxyHoldsTheFloorItsBandShares) {
   std::get<BoxInfluence>(inner.influence).halfExtentsMeters = box.innerHalfExtentsMeters;
   majority.influence = majorityRange(probe.influence);
   const ProbeProxyBuild tight = buildProbeProxy(level, inner, std::nullopt, o);
-  const ProbeProxyBuild kept = buildLayoutProxy(level, probe, o);
+  const ProbeProxyBuild kept = buildLayoutProxy(level, probe, o, 0.0);
   ReflectionSampleOptions so = o.samples;
   so.seed += 7;
   so.connectedFloorOnly = false;

@@ -241,7 +241,8 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
     const std::size_t first = r.builds.size();  // the added probes' builds follow the kept ones
     r.builds.resize(r.scene.probes.size());
     tbb::parallel_for(first, r.builds.size(), [&](std::size_t i) {
-      r.builds[i] = buildLayoutProxy(rayCaster, r.scene.probes[i], o.layout.finalProxy);
+      r.builds[i] = buildLayoutProxy(rayCaster, r.scene.probes[i], o.layout.finalProxy,
+                                     r.layout.probes[i - first].fitMeters);
     });
     const fs::path folder = r.scene.file.parent_path();
     for (std::size_t i = first; i < r.builds.size(); ++i) {
