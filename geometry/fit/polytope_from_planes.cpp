@@ -301,6 +301,7 @@ ConvexProxy polytopeFromPlanes(std::vector<ProxyPlane> planes, glm::dvec3 interi
     std::vector<std::uint32_t> corners;  // roots, counter-clockwise seen from outside
   };
   std::vector<Facet> facets;
+  std::vector<std::size_t> grazing;  // planes whose facet is a sliver
   for (std::uint32_t v = 0; v < dual.vertices.size(); ++v) {
     Facet facet{dual.sourceIndex[v], {}};
     std::uint32_t t = ringStart[v];
@@ -322,13 +323,43 @@ ConvexProxy polytopeFromPlanes(std::vector<ProxyPlane> planes, glm::dvec3 interi
       const glm::dvec3 q = cornerFromInterior[facet.corners[(j + 1) % facet.corners.size()]];
       newell += glm::cross(p, q);
     }
-    if (glm::length(newell) <= mergeMeters * mergeMeters) continue;
+    // A facet no wider than the merge distance (twice its area over its longest diagonal) is
+    // a plane that only grazes an edge within rounding: its corners lie in a line, and its
+    // triangles have no area (bloodprison's layout: three corners 1.2e-5 m off a line 3.7 m
+    // long, validate's proxy_degenerate_face). Left out, with its corners, below.
+    double diameter = 0.0;
+    for (std::uint32_t a : facet.corners)
+      for (std::uint32_t b : facet.corners)
+        diameter = std::max(diameter, glm::distance(cornerFromInterior[a], cornerFromInterior[b]));
+    if (glm::length(newell) <= mergeMeters * std::max(diameter, mergeMeters)) {
+      if (glm::length(newell) > mergeMeters * mergeMeters) grazing.push_back(facet.plane);
+      continue;
+    }
     if (glm::dot(newell, planes[facet.plane].normal) < 0)
       std::reverse(facet.corners.begin(), facet.corners.end());
     facets.push_back(std::move(facet));
   }
   std::sort(facets.begin(), facets.end(),
             [](const Facet& a, const Facet& b) { return a.plane < b.plane; });
+  if (!grazing.empty() && planes.size() - grazing.size() >= 4) {
+    // The corners the grazing planes made are solved again without them.
+    std::sort(grazing.begin(), grazing.end());
+    std::vector<ProxyPlane> kept;
+    std::vector<std::size_t> keptIndex;
+    for (std::size_t i = 0; i < planes.size(); ++i) {
+      if (std::binary_search(grazing.begin(), grazing.end(), i)) continue;
+      kept.push_back(planes[i]);
+      keptIndex.push_back(i);
+    }
+    std::vector<std::size_t> droppedOfKept;
+    ConvexProxy proxy = polytopeFromPlanes(std::move(kept), interior, &droppedOfKept);
+    if (droppedPlaneIndices != nullptr) {
+      *droppedPlaneIndices = grazing;
+      for (std::size_t k : droppedOfKept) droppedPlaneIndices->push_back(keptIndex[k]);
+      std::sort(droppedPlaneIndices->begin(), droppedPlaneIndices->end());
+    }
+    return proxy;
+  }
 
   // Corners sorted by position, so the output does not depend on the hull's internal order.
   std::vector<std::uint32_t> used;

@@ -535,6 +535,45 @@ TEST(PolytopeFromPlanes, FloorsMicrometresApartLeaveNoSliver) {
   expectConsistent(proxy, 1e-9);
 }
 
+TEST(PolytopeFromPlanes, APlaneGrazingAnEdgeIsLeftOutAndItsCornersSolvedAgain) {
+  // Twelve planes a bloodprison layout probe's simplification tried (a step 2.7 km across):
+  // plane 2 meets the others only within the merge distance of an edge, a facet 1.4 cm wide
+  // (5e-6 of the size). Kept, its corners were solved from it, 1e-9 m off their other planes;
+  // on probe_113's kept proxy such a facet was three corners in a line, a triangle of no area
+  // (validate's proxy_degenerate_face). Left out, the polytope is the one without it.
+  const std::vector<ProxyPlane> planes = {
+      {{-0.0028540521425099896, -0.045665064598344629, -0.99895272974330318}, -2.6013291943710253},
+      {{0.767111581732693, 0.59615444210069657, 0.23693818251850657}, 116.89065723100204},
+      {{0.79148730851517279, 0.45795076985399874, 0.40475786941026565}, 111.17077637532357},
+      {{0.80241306623170228, 0.40120658119086411, 0.44177658420266713}, 108.84395239689357},
+      {{0.80268769999359579, -0.0038435919949965707, 0.59638719224977266}, 84.044258636737112},
+      {{0, -1, 0}, -57.600002312596985},
+      {{0, 0, -1}, 0.29999960610461951},
+      {{0.70710665103956616, 0, 0.70710691133350478}, 74.670464304764451},
+      {{0, 1, 0}, 62.400001531857392},
+      {{1, 0, 0}, 103.20000072708194},
+      {{0, 0, 1}, 7.2000002221997343},
+      {{0, 0, 0.99999999999999989}, 11.999999287410189},
+  };
+  const glm::dvec3 interior{100.45000076293945, 58.850000381469727, 1.3000007629394532};
+  std::vector<std::size_t> dropped;
+  const ConvexProxy proxy = polytopeFromPlanes(planes, interior, &dropped);
+  EXPECT_TRUE(std::find(dropped.begin(), dropped.end(), 2u) != dropped.end());
+  glm::dvec3 lo(1e300), hi(-1e300);
+  for (const glm::dvec3& v : proxy.verticesMeters) lo = glm::min(lo, v), hi = glm::max(hi, v);
+  double lowest = 1e300;
+  for (const glm::uvec3& t : proxy.triangles)
+    lowest = std::min(lowest, smallestHeight(proxy.verticesMeters[t[0]], proxy.verticesMeters[t[1]],
+                                             proxy.verticesMeters[t[2]]));
+  EXPECT_GT(lowest, 1e-6 * glm::distance(lo, hi));
+  expectConsistent(proxy, 1e-9);
+  std::vector<ProxyPlane> without = planes;
+  without.erase(without.begin() + 2);
+  const ConvexProxy solvedWithout = polytopeFromPlanes(without, interior);
+  EXPECT_EQ(proxy.verticesMeters, solvedWithout.verticesMeters);
+  EXPECT_EQ(proxy.triangles, solvedWithout.triangles);
+}
+
 TEST(FanApex, CornersInLineAreNotFannedFromTheirEnds) {
   // A side wall's facet where a second floor, tilted 1e-7, takes over at x = 0: three corners
   // in line along its foot, metres apart. Fanned from either end of that line (corner 0 or 2)
