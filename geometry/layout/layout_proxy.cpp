@@ -5,6 +5,9 @@
 #include "geometry/layout/candidate_service.h"
 #include "geometry/layout/layout_influence.h"
 #include "geometry/probe_proxies/build_probe_proxy.h"
+#include "geometry/probe_proxies/ieee_float_mode.h"
+#include "geometry/probe_proxies/probe_samples.h"
+#include "geometry/probe_proxies/probe_view.h"
 
 #include <variant>
 #include <vector>
@@ -53,6 +56,7 @@ ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe
   Probe majority = probe;
   majority.influence = majorityRange(probe.influence);
 
+  const IeeeFloatMode ieee;  // as the build runs: the figures do not depend on the thread
   ReflectionSampleOptions floorOptions = options.samples;
   floorOptions.seed = options.samples.seed + 1000;  // the build's report samples' seed
   floorOptions.connectedFloorOnly = false;
@@ -63,12 +67,19 @@ ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe
   std::vector<InfluenceVolume> fits = {inner.influence, majority.influence};
   if (candidateFitMeters > 0.0)
     fits.push_back(candidateFitProbe(capture, candidateFitMeters).influence);
+  // One depth cube, hull and report for the three: the capture point and the inner range are
+  // the same; only the reflections fitted to differ.
+  const ProbeView view = seeLevel(level, capture, options.depthFaceSize);
+  const ViewHull hull = fitViewHull(view);
+  ProbeSamples samples = drawProbeSamples(level, inner, options);
   ProbeProxyBuild kept;
   double keptCost = 0.0;
   for (const InfluenceVolume& fit : fits) {
     ProxyBuildOptions fitted = options;
     fitted.fitInfluence = fit;
-    ProbeProxyBuild build = buildProbeProxy(level, inner, std::nullopt, fitted);
+    if (&fit != &fits.front()) samples.fit = drawFitSamples(level, inner, fitted);
+    ProbeProxyBuild build =
+        buildProbeProxy(level, inner, view, hull, samples, std::nullopt, fitted);
     const double cost = meanCostOver(build, capture, floor);
     // A NaN cost (no visible sample) compares false: the first fit stays.
     if (kept.candidates.empty() || cost < keptCost) kept = std::move(build), keptCost = cost;

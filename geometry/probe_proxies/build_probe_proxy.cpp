@@ -106,6 +106,20 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
                                 const ProbeView& view, const ViewHull& hull,
                                 const std::optional<ProxyShape>& authored,
                                 const ProxyBuildOptions& o) {
+  const IeeeFloatMode ieee;  // the samples' figures too
+  const Stopwatch sampling;
+  const ProbeSamples samples = drawProbeSamples(level, probe, o);
+  const double samplingMs = sampling.ms();
+  ProbeProxyBuild build = buildProbeProxy(level, probe, view, hull, samples, authored, o);
+  build.samplingMs = samplingMs;
+  build.buildMs += samplingMs;
+  return build;
+}
+
+ProbeProxyBuild buildProbeProxy(const LevelRayCaster&, const Probe& probe, const ProbeView& view,
+                                const ViewHull& hull, const ProbeSamples& samples,
+                                const std::optional<ProxyShape>& authored,
+                                const ProxyBuildOptions& o) {
   const IeeeFloatMode ieee;
   const Stopwatch total;
   ProbeProxyBuild build;
@@ -114,8 +128,6 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
   if (view.skyShare > 0.5) build.findings.push_back(noLevelFinding(view.skyShare));
 
   Stopwatch stage;
-  const ProbeSamples samples = drawProbeSamples(level, probe, o);
-  build.samplingMs = stage.lap();
 
   FittedCandidates fitted = fitCandidates(view, hull, samples.fit, authored, o.uprightObb);
   build.hullMs = fitted.hullMs;

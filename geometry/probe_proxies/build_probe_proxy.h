@@ -16,6 +16,7 @@
 #include "core/scene/probe.h"
 #include "geometry/evaluation/reflection_samples.h"
 #include "geometry/probe_proxies/fit_candidates.h"
+#include "geometry/probe_proxies/probe_samples.h"
 #include "geometry/probe_proxies/probe_view.h"
 #include "geometry/probe_proxies/proxy_build_options.h"
 #include "geometry/probe_proxies/select_proxy.h"
@@ -38,6 +39,14 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
 // several influence volumes. Its depthMs is 0; hullMs is the shared hull's.
 ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
                                 const ProbeView& view, const ViewHull& hull,
+                                const std::optional<ProxyShape>& authored,
+                                const ProxyBuildOptions& options);
+
+// The same with stage 2's samples drawn too (drawProbeSamples for the probe): layout fits one
+// probe's proxy to several regions and reports each on the same floor. Its samplingMs is 0.
+ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
+                                const ProbeView& view, const ViewHull& hull,
+                                const ProbeSamples& samples,
                                 const std::optional<ProxyShape>& authored,
                                 const ProxyBuildOptions& options);
 

@@ -2,21 +2,28 @@
 
 namespace probeproxy {
 
-ProbeSamples drawProbeSamples(const LevelRayCaster& level, const Probe& probe,
-                              const ProxyBuildOptions& o) {
-  ProbeSamples s;
+std::vector<ReflectionSample> drawFitSamples(const LevelRayCaster& level, const Probe& probe,
+                                             const ProxyBuildOptions& o) {
   ReflectionSampleOptions fitOptions = o.samples;
   fitOptions.connectedFloorOnly = true;
-  ReflectionSampleOptions reportOptions = o.samples;
-  reportOptions.seed = o.samples.seed + 1000;
-  reportOptions.connectedFloorOnly = false;
   Probe fitProbe = probe;
   if (o.fitInfluence) fitProbe.influence = *o.fitInfluence;
   const std::optional<WalkableFloor> served = servedFloor(level, fitProbe, fitOptions);
-  s.fit = buildReflectionSamples(level, fitProbe, SampleSet::MirrorFloor, fitOptions, served);
+  std::vector<ReflectionSample> fit =
+      buildReflectionSamples(level, fitProbe, SampleSet::MirrorFloor, fitOptions, served);
   for (const ReflectionSample& r :
        buildReflectionSamples(level, fitProbe, SampleSet::AllSurfaces, fitOptions, served))
-    s.fit.push_back(r);
+    fit.push_back(r);
+  return fit;
+}
+
+ProbeSamples drawProbeSamples(const LevelRayCaster& level, const Probe& probe,
+                              const ProxyBuildOptions& o) {
+  ProbeSamples s;
+  ReflectionSampleOptions reportOptions = o.samples;
+  reportOptions.seed = o.samples.seed + 1000;
+  reportOptions.connectedFloorOnly = false;
+  s.fit = drawFitSamples(level, probe, o);
   s.floor = buildReflectionSamples(level, probe, SampleSet::MirrorFloor, reportOptions);
   s.all = buildReflectionSamples(level, probe, SampleSet::AllSurfaces, reportOptions);
   return s;

@@ -28,4 +28,8 @@ struct ProbeSamples {
 ProbeSamples drawProbeSamples(const LevelRayCaster& level, const Probe& probe,
                               const ProxyBuildOptions& options);
 
+// The `fit` set alone (of options.fitInfluence when set), as drawProbeSamples draws it.
+std::vector<ReflectionSample> drawFitSamples(const LevelRayCaster& level, const Probe& probe,
+                                             const ProxyBuildOptions& options);
+
 }  // namespace probeproxy
