@@ -325,8 +325,9 @@ ConvexProxy polytopeFromPlanes(std::vector<ProxyPlane> planes, glm::dvec3 interi
     }
     // A facet no wider than the merge distance (twice its area over its longest diagonal) is
     // a plane that only grazes an edge within rounding: its corners lie in a line, and its
-    // triangles have no area (bloodprison's layout: three corners 1.2e-5 m off a line 3.7 m
-    // long, validate's proxy_degenerate_face). Left out, with its corners, below.
+    // triangles have no area (bloodprison's layout: three corners along 3.7 m of an edge,
+    // 1.2e-5 m off a line in the mesh's floats, validate's proxy_degenerate_face). Left out,
+    // with its corners, below.
     double diameter = 0.0;
     for (std::uint32_t a : facet.corners)
       for (std::uint32_t b : facet.corners)

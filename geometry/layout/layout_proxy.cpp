@@ -74,10 +74,10 @@ ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe
   ProbeSamples samples = drawProbeSamples(level, inner, options);
   ProbeProxyBuild kept;
   double keptCost = 0.0;
-  for (const InfluenceVolume& fit : fits) {
+  for (std::size_t f = 0; f < fits.size(); ++f) {
     ProxyBuildOptions fitted = options;
-    fitted.fitInfluence = fit;
-    if (&fit != &fits.front()) samples.fit = drawFitSamples(level, inner, fitted);
+    fitted.fitInfluence = fits[f];
+    if (f > 0) samples.fit = drawFitSamples(level, inner, fitted);  // the first is the inner's
     ProbeProxyBuild build =
         buildProbeProxy(level, inner, view, hull, samples, std::nullopt, fitted);
     const double cost = meanCostOver(build, capture, floor);

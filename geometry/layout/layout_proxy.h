@@ -3,8 +3,8 @@
 // with it alone, and its band with it and a neighbour: a proxy fitted to the inner range alone
 // can end just past it (a plane where the fit's floor stopped, not a wall), and every
 // reflection off the band's floor beyond that plane is a miss, 180 degrees at the probe's
-// weight there: on downer, stormkeep and bloodprison such misses were about half of all the
-// error the survey found.
+// weight there: on downer and stormkeep such misses were nearly half of all the error the
+// survey found (session 18's layouts).
 
 #include "core/proxy/proxy_candidate.h"
 #include "core/scene/probe.h"

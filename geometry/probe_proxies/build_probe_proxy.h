@@ -42,8 +42,9 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
                                 const std::optional<ProxyShape>& authored,
                                 const ProxyBuildOptions& options);
 
-// The same with stage 2's samples drawn too (drawProbeSamples for the probe): layout fits one
-// probe's proxy to several regions and reports each on the same floor. Its samplingMs is 0.
+// The same with stage 2's samples already drawn (drawProbeSamples for the probe, its fit set
+// perhaps another region's): layout fits one probe's proxy to several regions and reports each
+// on the same floor. Its samplingMs is 0.
 ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
                                 const ProbeView& view, const ViewHull& hull,
                                 const ProbeSamples& samples,

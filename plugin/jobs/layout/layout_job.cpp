@@ -7,7 +7,6 @@
 #include "geometry/layout/candidate_service.h"
 #include "geometry/layout/layout_proxy.h"
 #include "geometry/level/write_level_mesh.h"
-#include "geometry/probe_proxies/build_probe_proxy.h"
 #include "geometry/probe_proxies/build_scene_proxies.h"
 #include "geometry/raycast/level_ray_caster.h"
 #include "geometry/scene/scene_file.h"
