@@ -1,7 +1,6 @@
 #include "geometry/layout/layout_proxy.h"
 
 #include "geometry/evaluation/evaluate_shape.h"
-#include "geometry/evaluation/reflection_samples.h"
 #include "geometry/layout/candidate_service.h"
 #include "geometry/layout/layout_influence.h"
 #include "geometry/probe_proxies/build_probe_proxy.h"
@@ -57,11 +56,8 @@ ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe
   majority.influence = majorityRange(probe.influence);
 
   const IeeeFloatMode ieee;  // as the build runs: the figures do not depend on the thread
-  ReflectionSampleOptions floorOptions = options.samples;
-  floorOptions.seed = options.samples.seed + 1000;  // the build's report samples' seed
-  floorOptions.connectedFloorOnly = false;
   const std::vector<ReflectionSample> floor =
-      buildReflectionSamples(level, majority, SampleSet::MirrorFloor, floorOptions);
+      drawReportSamples(level, majority, options, SampleSet::MirrorFloor);
 
   const glm::dvec3 capture = probe.captureMeters;
   std::vector<InfluenceVolume> fits = {inner.influence, majority.influence};
@@ -71,13 +67,15 @@ ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe
   // the same; only the reflections fitted to differ.
   const ProbeView view = seeLevel(level, capture, options.depthFaceSize);
   const ViewHull hull = fitViewHull(view);
-  ProbeSamples samples = drawProbeSamples(level, inner, options);
+  // No all_surfaces set: layout reports no figure on it (only `build --json` does).
+  ProbeSamples samples;
+  samples.floor = drawReportSamples(level, inner, options, SampleSet::MirrorFloor);
   ProbeProxyBuild kept;
   double keptCost = 0.0;
   for (std::size_t f = 0; f < fits.size(); ++f) {
     ProxyBuildOptions fitted = options;
     fitted.fitInfluence = fits[f];
-    if (f > 0) samples.fit = drawFitSamples(level, inner, fitted);  // the first is the inner's
+    samples.fit = drawFitSamples(level, inner, fitted);
     ProbeProxyBuild build =
         buildProbeProxy(level, inner, view, hull, samples, std::nullopt, fitted);
     const double cost = meanCostOver(build, capture, floor);

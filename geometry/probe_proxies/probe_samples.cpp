@@ -17,15 +17,20 @@ std::vector<ReflectionSample> drawFitSamples(const LevelRayCaster& level, const 
   return fit;
 }
 
-ProbeSamples drawProbeSamples(const LevelRayCaster& level, const Probe& probe,
-                              const ProxyBuildOptions& o) {
-  ProbeSamples s;
+std::vector<ReflectionSample> drawReportSamples(const LevelRayCaster& level, const Probe& probe,
+                                                const ProxyBuildOptions& o, SampleSet set) {
   ReflectionSampleOptions reportOptions = o.samples;
   reportOptions.seed = o.samples.seed + 1000;
   reportOptions.connectedFloorOnly = false;
+  return buildReflectionSamples(level, probe, set, reportOptions);
+}
+
+ProbeSamples drawProbeSamples(const LevelRayCaster& level, const Probe& probe,
+                              const ProxyBuildOptions& o) {
+  ProbeSamples s;
   s.fit = drawFitSamples(level, probe, o);
-  s.floor = buildReflectionSamples(level, probe, SampleSet::MirrorFloor, reportOptions);
-  s.all = buildReflectionSamples(level, probe, SampleSet::AllSurfaces, reportOptions);
+  s.floor = drawReportSamples(level, probe, o, SampleSet::MirrorFloor);
+  s.all = drawReportSamples(level, probe, o, SampleSet::AllSurfaces);
   return s;
 }
 

@@ -28,6 +28,10 @@ struct ProbeSamples {
 ProbeSamples drawProbeSamples(const LevelRayCaster& level, const Probe& probe,
                               const ProxyBuildOptions& options);
 
+// One report set alone (`floor` or `all`), as drawProbeSamples draws it.
+std::vector<ReflectionSample> drawReportSamples(const LevelRayCaster& level, const Probe& probe,
+                                                const ProxyBuildOptions& options, SampleSet set);
+
 // The `fit` set alone (of options.fitInfluence when set), as drawProbeSamples draws it.
 std::vector<ReflectionSample> drawFitSamples(const LevelRayCaster& level, const Probe& probe,
                                              const ProxyBuildOptions& options);
