@@ -17,11 +17,14 @@ namespace {
 
 constexpr double kMajorityShareOfBand = 0.5 / kOuterBandOverGap;  // half the gap
 
-InfluenceVolume innerRange(InfluenceVolume influence) {
+// The influence with its outer boundary `share` of the way from its inner range to where it was.
+InfluenceVolume bandCutTo(InfluenceVolume influence, double share) {
   if (auto* box = std::get_if<BoxInfluence>(&influence))
-    box->halfExtentsMeters = box->innerHalfExtentsMeters;
+    box->halfExtentsMeters = box->innerHalfExtentsMeters +
+                             share * (box->halfExtentsMeters - box->innerHalfExtentsMeters);
   else if (auto* sphere = std::get_if<SphereInfluence>(&influence))
-    sphere->radiusMeters = sphere->innerRadiusMeters;
+    sphere->radiusMeters =
+        sphere->innerRadiusMeters + share * (sphere->radiusMeters - sphere->innerRadiusMeters);
   return influence;
 }
 
@@ -33,16 +36,7 @@ double meanCostOver(const ProbeProxyBuild& build, glm::dvec3 capture,
 }  // namespace
 
 InfluenceVolume majorityRange(const InfluenceVolume& influence) {
-  InfluenceVolume majority = influence;
-  if (auto* box = std::get_if<BoxInfluence>(&majority))
-    box->halfExtentsMeters =
-        box->innerHalfExtentsMeters +
-        kMajorityShareOfBand * (box->halfExtentsMeters - box->innerHalfExtentsMeters);
-  else if (auto* sphere = std::get_if<SphereInfluence>(&majority))
-    sphere->radiusMeters =
-        sphere->innerRadiusMeters +
-        kMajorityShareOfBand * (sphere->radiusMeters - sphere->innerRadiusMeters);
-  return majority;
+  return bandCutTo(influence, kMajorityShareOfBand);
 }
 
 ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe,
@@ -51,7 +45,7 @@ ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe
   // weight, and counted whole, floor there that the probe's own room does not hold outweighs
   // that room (fitted and chosen on the whole box, warfare's p95 was 36.9 deg against 35.3).
   Probe inner = probe;
-  inner.influence = innerRange(probe.influence);
+  inner.influence = bandCutTo(probe.influence, 0.0);
   Probe majority = probe;
   majority.influence = majorityRange(probe.influence);
 
@@ -72,12 +66,11 @@ ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe
   samples.floor = drawReportSamples(level, inner, options, SampleSet::MirrorFloor);
   ProbeProxyBuild kept;
   double keptCost = 0.0;
-  for (std::size_t f = 0; f < fits.size(); ++f) {
-    ProxyBuildOptions fitted = options;
-    fitted.fitInfluence = fits[f];
-    samples.fit = drawFitSamples(level, inner, fitted);
-    ProbeProxyBuild build =
-        buildProbeProxy(level, inner, view, hull, samples, std::nullopt, fitted);
+  for (const InfluenceVolume& fit : fits) {
+    Probe fitted = inner;
+    fitted.influence = fit;
+    samples.fit = drawFitSamples(level, fitted, options);
+    ProbeProxyBuild build = buildProbeProxy(inner, view, hull, samples, std::nullopt, options);
     const double cost = meanCostOver(build, capture, floor);
     // A NaN cost (no visible sample) compares false: the first fit stays.
     if (kept.candidates.empty() || cost < keptCost) kept = std::move(build), keptCost = cost;

@@ -110,14 +110,14 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
   const Stopwatch sampling;
   const ProbeSamples samples = drawProbeSamples(level, probe, o);
   const double samplingMs = sampling.ms();
-  ProbeProxyBuild build = buildProbeProxy(level, probe, view, hull, samples, authored, o);
+  ProbeProxyBuild build = buildProbeProxy(probe, view, hull, samples, authored, o);
   build.samplingMs = samplingMs;
   build.buildMs += samplingMs;
   return build;
 }
 
-ProbeProxyBuild buildProbeProxy(const LevelRayCaster&, const Probe& probe, const ProbeView& view,
-                                const ViewHull& hull, const ProbeSamples& samples,
+ProbeProxyBuild buildProbeProxy(const Probe& probe, const ProbeView& view, const ViewHull& hull,
+                                const ProbeSamples& samples,
                                 const std::optional<ProxyShape>& authored,
                                 const ProxyBuildOptions& o) {
   const IeeeFloatMode ieee;

@@ -45,8 +45,7 @@ ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
 // The same with stage 2's samples already drawn (drawProbeSamples for the probe, its fit set
 // perhaps another region's): layout fits one probe's proxy to several regions and reports each
 // on the same floor. Its samplingMs is 0.
-ProbeProxyBuild buildProbeProxy(const LevelRayCaster& level, const Probe& probe,
-                                const ProbeView& view, const ViewHull& hull,
+ProbeProxyBuild buildProbeProxy(const Probe& probe, const ProbeView& view, const ViewHull& hull,
                                 const ProbeSamples& samples,
                                 const std::optional<ProxyShape>& authored,
                                 const ProxyBuildOptions& options);

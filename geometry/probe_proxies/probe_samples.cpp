@@ -6,13 +6,11 @@ std::vector<ReflectionSample> drawFitSamples(const LevelRayCaster& level, const 
                                              const ProxyBuildOptions& o) {
   ReflectionSampleOptions fitOptions = o.samples;
   fitOptions.connectedFloorOnly = true;
-  Probe fitProbe = probe;
-  if (o.fitInfluence) fitProbe.influence = *o.fitInfluence;
-  const std::optional<WalkableFloor> served = servedFloor(level, fitProbe, fitOptions);
+  const std::optional<WalkableFloor> served = servedFloor(level, probe, fitOptions);
   std::vector<ReflectionSample> fit =
-      buildReflectionSamples(level, fitProbe, SampleSet::MirrorFloor, fitOptions, served);
+      buildReflectionSamples(level, probe, SampleSet::MirrorFloor, fitOptions, served);
   for (const ReflectionSample& r :
-       buildReflectionSamples(level, fitProbe, SampleSet::AllSurfaces, fitOptions, served))
+       buildReflectionSamples(level, probe, SampleSet::AllSurfaces, fitOptions, served))
     fit.push_back(r);
   return fit;
 }

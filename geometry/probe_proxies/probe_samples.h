@@ -4,8 +4,8 @@
 // flattered by fitting to the very samples they are measured on.
 
 #include "core/scene/probe.h"
-#include "geometry/probe_proxies/proxy_build_options.h"
 #include "geometry/evaluation/reflection_sample.h"
+#include "geometry/probe_proxies/proxy_build_options.h"
 #include "geometry/raycast/level_ray_caster.h"
 
 #include <vector>
@@ -32,7 +32,8 @@ ProbeSamples drawProbeSamples(const LevelRayCaster& level, const Probe& probe,
 std::vector<ReflectionSample> drawReportSamples(const LevelRayCaster& level, const Probe& probe,
                                                 const ProxyBuildOptions& options, SampleSet set);
 
-// The `fit` set alone (of options.fitInfluence when set), as drawProbeSamples draws it.
+// The `fit` set alone, as drawProbeSamples draws it (layout passes the probe with the region it
+// fits to as its influence).
 std::vector<ReflectionSample> drawFitSamples(const LevelRayCaster& level, const Probe& probe,
                                              const ProxyBuildOptions& options);
 

@@ -3,10 +3,7 @@
 // plane budget, the depth cube the candidates are fitted to and the reflection samples they
 // are measured on.
 
-#include "core/scene/influence_volume.h"
 #include "geometry/evaluation/reflection_samples.h"
-
-#include <optional>
 
 namespace probeproxy {
 
@@ -18,9 +15,6 @@ struct ProxyBuildOptions {
   bool regenerate = false;     // build a proxy even where the scene file has an authored one
   bool uprightObb = false;     // the obb candidate stands upright, no optimizer (layout)
   ReflectionSampleOptions samples;
-  // When set, the candidates are fitted to the reflections of this influence instead of the
-  // probe's (layout: a proxy chosen on a probe's inner range, fitted to the floor it shares).
-  std::optional<InfluenceVolume> fitInfluence;
 
   // Throws InputError naming the first option outside its range (core/errors/option_checks.h):
   // tolerance_deg > 0, max_planes in [4, 256], max_miss_rate in [0, 1], face_size in
