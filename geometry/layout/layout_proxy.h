@@ -21,11 +21,13 @@ InfluenceVolume majorityRange(const InfluenceVolume& influence);
 // The probe's proxy, built as `build` builds one and kept by its rule on the floor of the inner
 // range, fitted three times: to the reflections of the inner range, of the majority range, and
 // of the floor the selection measured the probe's candidate on (a sphere of
-// `candidateFitMeters` round the capture point, candidate_service.h; none when 0: a fill). The
-// fit whose kept proxy has the lowest mean cost (each miss at 180 degrees) over the majority
-// range's floor is kept, the earlier on a tie. The probe's influence is its whole box; the
-// build returned reports on its inner range, as `build` on the layout's scene does.
+// `candidateFitMeters` round the capture point, candidate_service.h; none when 0: a fill). Of
+// the three kept proxies, the one with the least of the majority range's floor over
+// `toleranceDeg` (the layout's; a miss is over), to the percent, is kept; then the lowest mean
+// cost (each miss at 180 degrees); then the earlier. The probe's influence is its whole box;
+// the build returned reports on its inner range, as `build` on the layout's scene does.
 ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe,
-                                 const ProxyBuildOptions& options, double candidateFitMeters);
+                                 ProxyBuildOptions options, double candidateFitMeters,
+                                 double toleranceDeg);
 
 }  // namespace probeproxy

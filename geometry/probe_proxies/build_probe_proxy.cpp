@@ -135,7 +135,8 @@ ProbeProxyBuild buildProbeProxy(const Probe& probe, const ProbeView& view, const
   for (std::string& f : fitted.findings) build.findings.push_back(std::move(f));
   build.candidates = std::move(fitted.candidates);
   if (fitted.hull) {
-    for (ProxyCandidate& c : simplifyHull(*fitted.hull, view, samples.fit, build.simplifyMs))
+    for (ProxyCandidate& c :
+         simplifyHull(*fitted.hull, view, samples.fit, o.simplifyHoldingFloor, build.simplifyMs))
       build.candidates.push_back(std::move(c));
   }
 

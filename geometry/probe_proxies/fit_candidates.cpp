@@ -5,6 +5,7 @@
 #include "geometry/fit/fit_error.h"
 #include "geometry/fit/oriented_box_fit.h"
 #include "geometry/fit/polytope_from_planes.h"
+#include "geometry/probe_proxies/hold_shading_points.h"
 #include "geometry/probe_proxies/room_box.h"
 #include "geometry/probe_proxies/stopwatch.h"
 #include "geometry/tune/one_dimensional_fits.h"
@@ -71,7 +72,7 @@ FittedCandidates fitCandidates(const ProbeView& view, const ViewHull& hull,
     add(CandidateOrigin::Obb, snapBoxToWalls(obb, view.wallPlanes, snapMeters), each.lap());
   }
   if (const std::optional<BoxShape> room = roomBox(capture, view.axisWallsMeters, corners))
-    add(CandidateOrigin::RoomBox, *room, each.lap());
+    add(CandidateOrigin::RoomBox, holdingShadingPoints(*room, fitSamples), each.lap());
   f.fitMs = fitTime.ms();
   if (f.hull) add(CandidateOrigin::Hull, *f.hull, f.hullMs);
   return f;

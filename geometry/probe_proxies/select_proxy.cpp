@@ -31,7 +31,8 @@ std::size_t selectProxy(const std::vector<ProxyCandidate>& candidates, const Pro
   std::size_t best = candidates.size();
   const auto generated = [&](std::size_t i) {
     return candidates[i].origin != CandidateOrigin::Authored &&
-           planeCount(candidates[i].shape) <= o.maxPlanes;
+           planeCount(candidates[i].shape) <= o.maxPlanes &&
+           !(o.sceneShapesOnly && candidates[i].origin == CandidateOrigin::CheapK);
   };
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     if (!generated(i) || !meetsTolerance(candidates[i].error, o)) continue;

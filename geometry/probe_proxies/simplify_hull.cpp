@@ -1,6 +1,7 @@
 #include "geometry/probe_proxies/simplify_hull.h"
 
 #include "geometry/fit/polytope_from_planes.h"
+#include "geometry/probe_proxies/hold_shading_points.h"
 #include "geometry/probe_proxies/stopwatch.h"
 #include "geometry/tune/greedy_plane_removal.h"
 #include "geometry/tune/plane_reach.h"
@@ -50,10 +51,11 @@ std::vector<ProxyPlane> startingPlanes(const ConvexProxy& hull, const ProbeView&
 
 std::vector<ProxyCandidate> simplifyHull(const ConvexProxy& hull, const ProbeView& view,
                                          std::span<const ReflectionSample> fitSamples,
-                                         double& simplifyMs) {
+                                         bool holdFloor, double& simplifyMs) {
   const Stopwatch time;
   const glm::dvec3 capture = view.captureMeters;
-  const std::vector<ProxyPlane> start = startingPlanes(hull, view);
+  std::vector<ProxyPlane> start = startingPlanes(hull, view);
+  if (holdFloor) start = holdingShadingPoints(std::move(start), fitSamples);
   PlaneReach reach(start, capture);
   // The reach first: it is the cheaper test.
   const PlaneRemovalRule nearTheRoom{[&](const std::vector<ProxyPlane>& p, std::size_t j) {

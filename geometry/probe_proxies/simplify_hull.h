@@ -24,9 +24,11 @@ inline constexpr double kMaxReachOverFarthestSeen = 2.0;
 std::vector<ProxyPlane> startingPlanes(const ConvexProxy& hull, const ProbeView& view);
 
 // convex_k candidates from the most planes to the fewest, errors not measured yet; their
-// buildMs is the simplification's time up to that step.
+// buildMs is the simplification's time up to that step. With `holdFloor` the starting planes
+// first move out to hold the fit samples' shading points (hold_shading_points.h), so no step
+// misses a lookup from the floor it was fitted to.
 std::vector<ProxyCandidate> simplifyHull(const ConvexProxy& hull, const ProbeView& view,
                                          std::span<const ReflectionSample> fitSamples,
-                                         double& simplifyMs);
+                                         bool holdFloor, double& simplifyMs);
 
 }  // namespace probeproxy

@@ -2,7 +2,9 @@
 // produce: a valid proxy or a clear finding, never a crash.
 
 #include "geometry/probe_proxies/build_probe_proxy.h"
+#include "core/parallax/reference_lookup.h"
 #include "geometry/builtin/box_room.h"
+#include "geometry/probe_proxies/hold_shading_points.h"
 #include "geometry/probe_proxies/room_box.h"
 #include "geometry/tune/snap_box_to_walls.h"
 #include "geometry/validate/proxy_mesh_checks.h"
@@ -132,6 +134,50 @@ TEST(RoomBox, ProbeInAnLArmGetsItsArmNotTheHullAcrossTheCorner) {
   ASSERT_TRUE(box.has_value());
   EXPECT_LE(glm::length(box->centerMeters - glm::dvec3(4, 1.5, 1.5)), 1e-4);
   EXPECT_LE(glm::length(box->halfExtentsMeters - glm::dvec3(4, 1.5, 1.5)), 1e-4);
+}
+
+// The x arm's room box is looked up from floor round the corner, in the y arm: from outside
+// the box every lookup misses. Grown, it holds that floor; its other faces stay on the walls,
+// and a sample whose reflection the capture point cannot see moves nothing.
+TEST(RoomBox, GrowsToHoldTheFloorItIsLookedUpFromAndNoMore) {
+  const LevelRayCaster level(lRoom());
+  const glm::dvec3 capture(6.5, 1.5, 1.6);
+  const BoxShape arm = *roomBox(capture, axisWallDistances(level, capture), {});
+  ReflectionSample roundTheCorner;
+  roundTheCorner.xMeters = glm::dvec3(1.5, 5.0, 0.0);
+  roundTheCorner.reflected = glm::normalize(glm::dvec3(1, -1, 1));
+  ReflectionSample hidden = roundTheCorner;
+  hidden.xMeters = glm::dvec3(1.5, 7.5, 0.0);
+  hidden.occluded = true;
+  const std::vector<ReflectionSample> samples = {roundTheCorner, hidden};
+  EXPECT_FALSE(referenceLookup(arm, capture, roundTheCorner.xMeters, roundTheCorner.reflected));
+
+  const BoxShape held = holdingShadingPoints(arm, samples);
+  EXPECT_TRUE(referenceLookup(held, capture, roundTheCorner.xMeters, roundTheCorner.reflected));
+  const glm::dvec3 lo = held.centerMeters - held.halfExtentsMeters;
+  const glm::dvec3 hi = held.centerMeters + held.halfExtentsMeters;
+  EXPECT_LE(glm::length(lo - glm::dvec3(0, 0, 0)), 1e-4);
+  EXPECT_LE(glm::length(hi - glm::dvec3(8, 5, 3)), 1e-4);  // +y only, to the corner's floor
+  EXPECT_EQ(held.worldFromBox, arm.worldFromBox);
+}
+
+// The simplification's starting planes hold the floor the same way: the x arm's inner wall
+// (y <= 3) is one of them, and round the corner it cuts off the y arm's floor. It moves out to
+// that floor; the planes that hold it already stay where they are.
+TEST(HoldShadingPoints, APlaneMovesOutJustPastTheFloorItCutOff) {
+  ReflectionSample roundTheCorner;
+  roundTheCorner.xMeters = glm::dvec3(1.5, 5.0, 0.0);
+  ReflectionSample hidden = roundTheCorner;
+  hidden.xMeters = glm::dvec3(1.5, 7.5, 0.0);
+  hidden.occluded = true;
+  const std::vector<ReflectionSample> samples = {roundTheCorner, hidden};
+  const std::vector<ProxyPlane> arm = {{{0, 1, 0}, 3.0}, {{0, -1, 0}, 0.0}, {{1, 0, 0}, 8.0}};
+  const std::vector<ProxyPlane> held = holdingShadingPoints(arm, samples);
+  ASSERT_EQ(held.size(), arm.size());
+  EXPECT_DOUBLE_EQ(held[0].offsetMeters, 5.0);
+  EXPECT_DOUBLE_EQ(held[1].offsetMeters, 0.0);
+  EXPECT_DOUBLE_EQ(held[2].offsetMeters, 8.0);
+  for (std::size_t i = 0; i < arm.size(); ++i) EXPECT_EQ(held[i].normal, arm[i].normal);
 }
 
 TEST(BuildProbeProxy, AuthoredProxyIsKeptAndMeasured) {

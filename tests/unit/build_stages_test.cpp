@@ -101,7 +101,7 @@ TEST(BuildStages, SimplificationStartsFromTheWallsAndNamesEachStepByItsPlanes) {
                           [](const ProxyPlane& p) { return isRoomWall(p, 1e-5); }),
             6);
   double ms = -1.0;
-  const std::vector<ProxyCandidate> steps = simplifyHull(*f.hull, view, s.fit, ms);
+  const std::vector<ProxyCandidate> steps = simplifyHull(*f.hull, view, s.fit, true, ms);
   EXPECT_GE(ms, 0.0);
   for (const ProxyCandidate& c : steps) {
     const auto& convex = std::get<ConvexProxy>(c.shape);
@@ -153,6 +153,22 @@ TEST(BuildStages, SelectionKeepsTheFewestPlanesWithinToleranceElseTheMostAccurat
   c.insert(c.begin(), candidate(CandidateOrigin::Authored, BoxShape{}, 90, 90));
   EXPECT_EQ(selectProxy(c, o), 0u);  // the artist's, unless asked to regenerate
   o.regenerate = true;
+  EXPECT_EQ(selectProxy(c, o), 2u);
+}
+
+// Layout writes its kept proxies into a scene file, which holds no cheap_k (DESIGN.md's
+// contract): the best a scene can hold is kept instead, or `build` on that scene would measure
+// another proxy than the layout did.
+TEST(BuildStages, ALayoutKeepsOnlyAShapeItsSceneFileCanHold) {
+  ProxyBuildOptions o;
+  o.toleranceDeg = 1.0;
+  std::vector<ProxyCandidate> c = {candidate(CandidateOrigin::Infinite, InfiniteShape{}, 50, 20),
+                                   candidate(CandidateOrigin::CheapK, CheapKShape{}, 0.5, 0.2),
+                                   candidate(CandidateOrigin::Aabb, BoxShape{}, 0.9, 0.3)};
+  EXPECT_EQ(selectProxy(c, o), 1u);
+  o.sceneShapesOnly = true;
+  EXPECT_EQ(selectProxy(c, o), 2u);
+  o.toleranceDeg = 0.1;  // none meets it: the most accurate a scene can hold
   EXPECT_EQ(selectProxy(c, o), 2u);
 }
 

@@ -241,7 +241,7 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
     r.builds.resize(r.scene.probes.size());
     tbb::parallel_for(first, r.builds.size(), [&](std::size_t i) {
       r.builds[i] = buildLayoutProxy(rayCaster, r.scene.probes[i], o.layout.finalProxy,
-                                     r.layout.probes[i - first].fitMeters);
+                                     r.layout.probes[i - first].fitMeters, o.layout.toleranceDeg);
     });
     const fs::path folder = r.scene.file.parent_path();
     for (std::size_t i = first; i < r.builds.size(); ++i) {
