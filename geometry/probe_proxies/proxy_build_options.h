@@ -17,8 +17,8 @@ struct ProxyBuildOptions {
   bool sceneShapesOnly = false;  // keep only a shape a scene file can author (layout)
   // The simplification starts from planes grown to hold the fit samples' floor
   // (hold_shading_points.h): layout's final fits (layout_proxy.h). Not `build`'s default: on
-  // the corpus's spawn-point probes it took p95 down (warfare 55.3 -> 40.9 deg, skyway 180 ->
-  // 39.3) but the floor over 5 deg up on eight maps of ten (downer 9.1% -> 10.2%); nor layout's
+  // the corpus's spawn-point probes it took p95 down (warfare 55.3 -> 40.9 deg, basement 67.1
+  // -> 49.8) but the floor over 5 deg up on eight maps of ten (downer 9.1% -> 10.2%); nor layout's
   // coarse candidates: their 12 m and whole-view fits then claimed floor the final proxies did
   // not serve, and the selection took fewer, larger ranges (downer 139 -> 131 probes, p95
   // 29.3 -> 32.9 deg).

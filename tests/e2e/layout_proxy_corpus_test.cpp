@@ -19,24 +19,36 @@
 namespace probeproxy {
 namespace {
 
+LevelMesh corpusLevel(const std::string& map) {
+  return loadLevel(
+      readSceneFile(std::string(PROBEPROXY_CORPUS_SCENES) + "/" + map + "/" + map + ".scene.json"));
+}
+
+// A probe of a corpus layout, as its layout.scene.json gives it.
+Probe layoutProbe(const std::string& name, glm::dvec3 capture, glm::dvec3 center,
+                  glm::dvec3 halfExtents, glm::dvec3 innerHalfExtents) {
+  Probe probe;
+  probe.name = name;
+  probe.captureMeters = capture;
+  BoxInfluence box;
+  box.centerMeters = center;
+  box.halfExtentsMeters = halfExtents;
+  box.innerHalfExtentsMeters = innerHalfExtents;
+  probe.influence = box;
+  return probe;
+}
+
 TEST(BuildLayoutProxy, OnDownerTheKeptProxyHoldsTheFloorItsBandShares) {
   // probe_013 of a downer layout whose gaps had been moved (a session 19 experiment): fitted to
   // its inner range alone, its proxy left out floor just past it, 141 degrees of mean error there.
-  const Scene scene =
-      readSceneFile(std::string(PROBEPROXY_CORPUS_SCENES) + "/downer/downer.scene.json");
-  const LevelRayCaster level(loadLevel(scene));
-  Probe probe;
-  probe.name = "probe_013";
-  probe.captureMeters = {9.25, 19.25, -5.21};
-  BoxInfluence box;
-  box.centerMeters = {8.5, 16.75, -5.406249955};
-  box.halfExtentsMeters = {4.0, 6.25, 2.156249985};
-  box.innerHalfExtentsMeters = {2.5, 4.75, 1.906249985};
-  probe.influence = box;
+  const LevelRayCaster level(corpusLevel("downer"));
+  const glm::dvec3 innerHalf(2.5, 4.75, 1.906249985);
+  const Probe probe = layoutProbe("probe_013", {9.25, 19.25, -5.21}, {8.5, 16.75, -5.406249955},
+                                  {4.0, 6.25, 2.156249985}, innerHalf);
   ProxyBuildOptions o;
 
   Probe inner = probe, majority = probe;
-  std::get<BoxInfluence>(inner.influence).halfExtentsMeters = box.innerHalfExtentsMeters;
+  std::get<BoxInfluence>(inner.influence).halfExtentsMeters = innerHalf;
   majority.influence = majorityRange(probe.influence);
   const ProbeProxyBuild tight = buildProbeProxy(level, inner, std::nullopt, o);
   const ProbeProxyBuild kept = buildLayoutProxy(level, probe, o, 0.0, 5.0);
@@ -62,16 +74,10 @@ TEST(BuildProbeProxy, OnWarfareTheRoomBoxHoldsTheFloorPastItsWalls) {
   // probe_027's inner range in session 19's warfare layout: the walls its axis rays find stand
   // short of some of its floor, and the room box that modelled the rest at 1.6 degrees median
   // missed one reflection in fifty; a sphere at 10.5 degrees median was kept instead.
-  const Scene scene =
-      readSceneFile(std::string(PROBEPROXY_CORPUS_SCENES) + "/warfare/warfare.scene.json");
-  const LevelRayCaster level(loadLevel(scene));
-  Probe probe;
-  probe.name = "probe_027";
-  probe.captureMeters = {-8.75, 16.75, 6.6};
-  BoxInfluence box;
-  box.centerMeters = {-8.5, 19.0, 6.0625};
-  box.halfExtentsMeters = box.innerHalfExtentsMeters = {3.5, 2.5, 1.5625};
-  probe.influence = box;
+  const LevelRayCaster level(corpusLevel("warfare"));
+  const glm::dvec3 innerHalf(3.5, 2.5, 1.5625);  // the inner range alone
+  const Probe probe =
+      layoutProbe("probe_027", {-8.75, 16.75, 6.6}, {-8.5, 19.0, 6.0625}, innerHalf, innerHalf);
   const ProxyBuildOptions o;
   const ProbeProxyBuild build = buildProbeProxy(level, probe, std::nullopt, o);
 
