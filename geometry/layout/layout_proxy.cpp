@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -48,13 +49,14 @@ struct FitScore {
 FitScore scoreOn(const ProbeProxyBuild& build, glm::dvec3 capture,
                  std::span<const ReflectionSample> floor, double toleranceDeg) {
   const ProxyShape& shape = build.candidates[build.kept].shape;
-  const std::vector<double> errors = angularErrorsDeg(shape, capture, floor);
+  std::vector<double> errors = angularErrorsDeg(shape, capture, floor);
   const auto over = std::count_if(errors.begin(), errors.end(), [&](double e) {
     return !(e <= toleranceDeg);  // a miss (NaN) is over
   });
   FitScore score;
   if (!errors.empty()) score.percentOver = std::round(100.0 * double(over) / double(errors.size()));
-  score.meanCostDeg = summarizeErrors(errors, floor.size() - errors.size()).meanCostDeg;
+  const std::size_t occluded = floor.size() - errors.size();
+  score.meanCostDeg = summarizeErrors(std::move(errors), occluded).meanCostDeg;
   return score;
 }
 

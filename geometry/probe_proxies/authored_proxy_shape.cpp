@@ -55,4 +55,13 @@ std::optional<ProxyShape> authoredProxyShape(const ProxySpec& spec, const Scene&
   return convexFromMesh(std::move(vertices), loaded.triangles);
 }
 
+bool sceneFileCanHold(const ProxyShape& shape) {
+  if (std::holds_alternative<CheapKShape>(shape)) return false;
+  if (const auto* sphere = std::get_if<SphereShape>(&shape)) {
+    const glm::dvec3 r = sphere->radiiMeters;
+    return r.x == r.y && r.y == r.z;
+  }
+  return true;
+}
+
 }  // namespace probeproxy

@@ -14,7 +14,8 @@ struct ProxyBuildOptions {
   int depthFaceSize = 128;     // depth cube the candidates are fitted to
   bool regenerate = false;     // build a proxy even where the scene file has an authored one
   bool uprightObb = false;     // the obb candidate stands upright, no optimizer (layout)
-  // Keep only a shape a scene file can author (layout writes its kept proxies into one).
+  // Keep only a shape a scene file can author (sceneFileCanHold: layout writes its kept
+  // proxies into one).
   bool sceneShapesOnly = false;
   // The simplification starts from planes grown to hold the fit samples' floor
   // (hold_shading_points.h): layout's final fits (layout_proxy.h). Not `build`'s default: on

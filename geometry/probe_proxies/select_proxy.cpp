@@ -1,5 +1,7 @@
 #include "geometry/probe_proxies/select_proxy.h"
 
+#include "geometry/probe_proxies/authored_proxy_shape.h"
+
 #include <algorithm>
 #include <cmath>
 #include <string_view>
@@ -32,7 +34,7 @@ std::size_t selectProxy(const std::vector<ProxyCandidate>& candidates, const Pro
   const auto generated = [&](std::size_t i) {
     return candidates[i].origin != CandidateOrigin::Authored &&
            planeCount(candidates[i].shape) <= o.maxPlanes &&
-           !(o.sceneShapesOnly && candidates[i].origin == CandidateOrigin::CheapK);
+           (!o.sceneShapesOnly || sceneFileCanHold(candidates[i].shape));
   };
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     if (!generated(i) || !meetsTolerance(candidates[i].error, o)) continue;

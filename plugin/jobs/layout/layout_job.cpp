@@ -7,6 +7,7 @@
 #include "geometry/layout/candidate_service.h"
 #include "geometry/layout/layout_proxy.h"
 #include "geometry/level/write_level_mesh.h"
+#include "geometry/probe_proxies/authored_proxy_shape.h"
 #include "geometry/probe_proxies/build_scene_proxies.h"
 #include "geometry/raycast/level_ray_caster.h"
 #include "geometry/scene/scene_file.h"
@@ -105,16 +106,15 @@ Scene layoutScene(const Scene& input, const LayoutResult& layout, const fs::path
 
 // The scene file says which proxy each probe has, so `build` on layout.scene.json keeps the
 // same ones: boxes, spheres and none as written, a convex proxy as a mesh beside the scene.
-// Only cheap_k has no authored form; it stays `auto`.
+// A shape no scene can hold stays `auto` (buildLayoutProxy keeps none: sceneShapesOnly).
 ProxySpec authoredSpec(const ProxyShape& shape, const fs::path& meshFile, const std::string& name,
                        std::vector<std::pair<fs::path, LevelMesh>>& meshes) {
+  if (!sceneFileCanHold(shape)) return AutoProxy{};
   if (std::holds_alternative<InfiniteShape>(shape)) return InfiniteProxy{};
   if (const auto* box = std::get_if<BoxShape>(&shape))
     return AuthoredObb{box->centerMeters, box->halfExtentsMeters, box->worldFromBox};
-  if (const auto* sphere = std::get_if<SphereShape>(&shape)) {
-    const glm::dvec3 r = sphere->radiiMeters;
-    if (r.x == r.y && r.y == r.z) return AuthoredSphere{sphere->centerMeters, r.x};
-  }
+  if (const auto* sphere = std::get_if<SphereShape>(&shape))
+    return AuthoredSphere{sphere->centerMeters, sphere->radiiMeters.x};
   if (const auto* convex = std::get_if<ConvexProxy>(&shape)) {
     LevelMesh mesh;
     for (const glm::dvec3& v : convex->verticesMeters) mesh.positionsMeters.emplace_back(v);
