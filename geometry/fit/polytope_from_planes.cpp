@@ -24,6 +24,14 @@ namespace {
 // Corners this close, relative to the polytope's size, are one: 0.4 mm on a 40 m proxy, under
 // 0.002 degrees of any reflection seen from 10 m.
 constexpr double kCornerMergeRelative = 1e-5;
+// Corners closer than this many float epsilons of their coordinates are one too: the mesh is
+// written in floats, whose rounding turns an edge that short by up to a quarter degree, and the
+// triangle on it with it (downer's layout: two corners 0.13 mm apart at 32 m from the origin
+// left a triangle bent inwards by 1.2 degrees, validate's proxy_concave_edge, 0.5 degrees).
+// Never more than this, relative to the size, though: a small proxy far from the origin keeps
+// its shape (a 1 mm slab 10 km out).
+constexpr double kCornerMergeFloatEpsilons = 512.0;
+constexpr double kCornerMergeMostRelative = 1e-4;
 
 constexpr double kMinNormalSpread = 1e-3;
 
@@ -242,7 +250,7 @@ ConvexProxy polytopeFromPlanes(std::vector<ProxyPlane> planes, glm::dvec3 interi
   const CornerSolver solver(planes, heights);
   const std::size_t cornerCount = dual.triangles.size();
   std::vector<glm::dvec3> fromInterior(cornerCount);  // corner - interior point, per dual facet
-  double sizeMeters = 0.0;
+  double sizeMeters = 0.0, farthestCoordinate = 0.0;
   for (std::size_t t = 0; t < cornerCount; ++t) {
     const auto& tri = dual.triangles[t];
     if (fit::orientationSign(dual.vertices[tri[0]], dual.vertices[tri[1]], dual.vertices[tri[2]],
@@ -256,6 +264,8 @@ ConvexProxy polytopeFromPlanes(std::vector<ProxyPlane> planes, glm::dvec3 interi
     fromInterior[t] =
         solver.corner(dual.sourceIndex[tri[0]], dual.sourceIndex[tri[1]], dual.sourceIndex[tri[2]]);
     sizeMeters = std::max(sizeMeters, glm::length(fromInterior[t]));
+    const glm::dvec3 corner = glm::abs(interior + fromInterior[t]);
+    farthestCoordinate = std::max({farthestCoordinate, corner.x, corner.y, corner.z});
   }
 
   // Where more than three planes meet, the dual facet is split into triangles that give the
@@ -265,7 +275,11 @@ ConvexProxy polytopeFromPlanes(std::vector<ProxyPlane> planes, glm::dvec3 interi
   // also meet a few micrometres apart (two floors tilted 1e-7 apart): kept apart, they leave
   // facets micrometres wide and corners that are one in the mesh's floats, which a mesh check
   // (validate's proxy_degenerate_face, 1e-6 of the size) and engines' importers reject.
-  const double mergeMeters = kCornerMergeRelative * sizeMeters;
+  const double floatMergeMeters =
+      kCornerMergeFloatEpsilons * std::numeric_limits<float>::epsilon() * farthestCoordinate;
+  const double mergeMeters =
+      std::max(kCornerMergeRelative * sizeMeters,
+               std::min(floatMergeMeters, kCornerMergeMostRelative * sizeMeters));
   fit::UnionFind corners(cornerCount);
   for (std::size_t t = 0; t < cornerCount; ++t) {
     for (std::uint32_t u : dual.neighbors[t]) {

@@ -21,11 +21,14 @@ InfluenceVolume majorityRange(const InfluenceVolume& influence);
 // The probe's proxy, built as `build` builds one and kept by its rule on the floor of the inner
 // range, fitted three times: to the reflections of the inner range, of the majority range, and
 // of the floor the selection measured the probe's candidate on (a sphere of
-// `candidateFitMeters` round the capture point, candidate_service.h; none when 0: a fill). Of
-// the three kept proxies, the one with the least of the majority range's floor over
-// `toleranceDeg` (the layout's; a miss is over), to the percent, is kept; then the lowest mean
-// cost (each miss at 180 degrees); then the earlier. The probe's influence is its whole box;
-// the build returned reports on its inner range, as `build` on the layout's scene does.
+// `candidateFitMeters` round the capture point, candidate_service.h; none when 0: a fill).
+// Measured on the majority range's floor: the fit whose kept proxy leaves the least floor over
+// `toleranceDeg` (the layout's; a miss is over), to the percent, then the lowest mean cost
+// (each miss at 180 degrees), is the start; then of the three builds' candidates (their kept
+// ones, and any else of at most 16 planes) whose p95 is no worse than the start's, the one
+// with the least floor over the tolerance plus floor over 30 degrees, then the lowest mean, is
+// kept; the earlier on a tie. The probe's influence is its whole box; the build returned
+// reports on its inner range, as `build` on the layout's scene does.
 ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe,
                                  ProxyBuildOptions options, double candidateFitMeters,
                                  double toleranceDeg);

@@ -9,6 +9,7 @@
 #include "geometry/fit/fit_error.h"
 #include "geometry/fit/oriented_box_fit.h"
 #include "geometry/fit/polytope_from_planes.h"
+#include "geometry/validate/proxy_mesh_checks.h"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -572,6 +573,38 @@ TEST(PolytopeFromPlanes, APlaneGrazingAnEdgeIsLeftOutAndItsCornersSolvedAgain) {
   const ConvexProxy solvedWithout = polytopeFromPlanes(without, interior);
   EXPECT_EQ(proxy.verticesMeters, solvedWithout.verticesMeters);
   EXPECT_EQ(proxy.triangles, solvedWithout.triangles);
+}
+
+TEST(PolytopeFromPlanes, CornersTooNearForTheMeshFloatsAreOne) {
+  // The fourteen planes of downer's layout probe_016: plane 4 meets the roof (plane 7) and two
+  // others 0.13 mm apart, 32 m from the origin. Kept apart (1e-5 of the size merges only
+  // 0.1 mm), the triangle on that edge turned by a degree once the corners were rounded to the
+  // mesh's floats: validate's proxy_concave_edge (0.5 degrees) on the written .ply.
+  const std::vector<ProxyPlane> planes = {
+      {{2.201722191713641e-08, -0.17091069521805993, 0.9852865239411726}, 4.2744344677929735},
+      {{0.16115190658151982, -0.36631477576834093, 0.9164297834853095}, 1.0531557795772164},
+      {{0.6342020359063227, -0.5205055020338036, 0.5717182872751345}, 3.8606172505312504},
+      {{0.7422680413463815, -0.6099407893938185, 0.2775074561691133}, 2.5530963729812814},
+      {{0.9784386623070855, 1.3729145473047405e-08, 0.20653760941465535}, 25.41145853457339},
+      {{0.0, 1.0, 0.0}, 37.500000560026606},
+      {{0.0, 0.0, -1.0}, 3.147967218009029e-07},
+      {{0.0, 0.0, 1.0}, 9.99999956740589},
+      {{-0.24253562503633297, 0.0, -0.9701425001453319}, -4.366828616713675},
+      {{-1.0, 0.0, 0.0}, -17.99999949453667},
+      {{0.24253562503633297, 0.0, -0.9701425001453319}, 5.82016294128652},
+      {{0.0, -1.0, 0.0}, -25.999999971891754},
+      {{1.0, 0.0, 0.0}, 24.000000582640254},
+      {{0.7071067811865476, -0.7071067811865476, 0.0}, -2.121320264844633},
+  };
+  const glm::dvec3 capture{21.25, 35.25, 1.85};
+  const ConvexProxy proxy = polytopeFromPlanes(planes, capture);
+  // A merged corner stands on three of the planes that meet there, the others within the
+  // merge distance (1e-4 of the size at most).
+  expectConsistent(proxy, 1e-4 * 12.6);
+  std::vector<glm::dvec3> asWritten;
+  for (const glm::dvec3& v : proxy.verticesMeters) asWritten.emplace_back(glm::vec3(v));
+  for (const ProxyMeshFinding& f : checkProxyMesh(asWritten, proxy.triangles, capture))
+    ADD_FAILURE() << f.rule << ": " << f.message;
 }
 
 TEST(FanApex, CornersInLineAreNotFannedFromTheirEnds) {
