@@ -13,6 +13,7 @@
 #include "geometry/layout/select_probes.h"
 #include "geometry/layout/thin_ranges.h"
 #include "geometry/layout/uncovered_floor_fills.h"
+#include "geometry/layout/widen_fades.h"
 #include "geometry/probe_proxies/build_scene_proxies.h"
 #include "geometry/survey/floor_samples.h"
 
@@ -245,12 +246,16 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
     for (int v : p.volumes)
       if (static_cast<std::size_t>(v) >= kept.size() && optional.count(v - kept.size()))
         dropped.insert(v - kept.size());
-  if (dropped.empty()) return;
-  r.probes = untrimmed;
-  dropProbes(dropped, r.probes, optional);
-  raiseRangesOverRaisedFloor(walked, o.blendBandMeters, keptVolumes, r.probes);
-  trimBandsOverOverlapLimit(level, walked, o.blendBandMeters, ValidateOptions{}, keptVolumes,
-                            r.probes, optional);
+  if (!dropped.empty()) {
+    r.probes = untrimmed;
+    dropProbes(dropped, r.probes, optional);
+    raiseRangesOverRaisedFloor(walked, o.blendBandMeters, keptVolumes, r.probes);
+    trimBandsOverOverlapLimit(level, walked, o.blendBandMeters, ValidateOptions{}, keptVolumes,
+                              r.probes, optional);
+  }
+  // Where the blend still pops, a fade widens (widen_fades.h).
+  widenFadesWhereWeightsJump(level, walked, o.blendBandMeters, ValidateOptions{}, keptVolumes,
+                             r.probes);
 }
 
 }  // namespace

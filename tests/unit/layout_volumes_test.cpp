@@ -16,6 +16,7 @@
 #include "geometry/layout/overlap_trim.h"
 #include "geometry/layout/thin_ranges.h"
 #include "geometry/layout/uncovered_floor_fills.h"
+#include "geometry/layout/widen_fades.h"
 #include "geometry/probe_proxies/build_scene_proxies.h"
 #include "geometry/survey/blended_error.h"
 #include "geometry/validate/camera_space.h"
@@ -411,6 +412,63 @@ TEST(TrimBandsOverOverlapLimit, AFillWhoseBandsCannotBeTrimmedMovesAFaceOffTheCr
   }
   EXPECT_LE(facesMoved.steepestWhereCamerasAre(), 0.02);
   expectEveryCellCovered(facesMoved.floor, facesMoved.volumes());
+}
+
+TEST(WidenFadesWhereWeightsJump, BandsWhoseFarEndsAloneMeetReachFurtherUntilTheBlendIsSmooth) {
+  // 2.6 m apart with bands 1.5 m deep, the two ranges' bands share 0.4 m, where each weighs
+  // little: the share turns across it at 2.9 per metre (downer's probe_106 and probe_129).
+  RangesInARoom room({{{0, 3, 0, 6}}, {{5.6, 10, 0, 6}}});
+  const std::vector<InfluenceVolume> before = room.volumes();
+  ASSERT_GT(room.steepestWhereCamerasAre(), 0.025);
+  EXPECT_GE(
+      widenFadesWhereWeightsJump(room.level, room.floor, 1.0, ValidateOptions{}, {}, room.probes),
+      1u);
+  EXPECT_LE(room.steepestWhereCamerasAre(), 0.02) << "1 cm apart, as validate measures";
+  for (std::size_t p = 0; p < before.size(); ++p) {
+    const BoxInfluence& was = std::get<BoxInfluence>(before[p]);
+    const BoxInfluence& is = std::get<BoxInfluence>(room.probes[p].influence);
+    EXPECT_EQ(is.centerMeters, was.centerMeters);
+    EXPECT_EQ(is.halfExtentsMeters.y, was.halfExtentsMeters.y) << "only across the gap";
+    EXPECT_GE(is.halfExtentsMeters.x, was.halfExtentsMeters.x) << "no outer range comes in";
+    EXPECT_LE(is.innerHalfExtentsMeters.x, was.innerHalfExtentsMeters.x) << "no inner grows";
+  }
+  expectEveryCellCovered(room.floor, room.volumes());
+}
+
+TEST(WidenFadesWhereWeightsJump, ByAnInnerFaceWhereANeighbourWeighsMuchTheFadeDeepensInwards) {
+  // 0.3 m apart (partNearRanges would part them; here they stay): leaving either inner range,
+  // the other weighs (1 - 0.2) / 0.2 = 4 already, and the weight turns at 4 / 1.5 per metre
+  // (warfare's probe_019 by probe_141).
+  RangesInARoom room({{{0, 4, 0, 6}}, {{4.3, 10, 0, 6}}});
+  const std::vector<InfluenceVolume> before = room.volumes();
+  ASSERT_GT(room.steepestWhereCamerasAre(), 0.025);
+  EXPECT_GE(
+      widenFadesWhereWeightsJump(room.level, room.floor, 1.0, ValidateOptions{}, {}, room.probes),
+      1u);
+  EXPECT_LE(room.steepestWhereCamerasAre(), 0.02);
+  for (std::size_t p = 0; p < before.size(); ++p) {
+    const BoxInfluence& was = std::get<BoxInfluence>(before[p]);
+    const BoxInfluence& is = std::get<BoxInfluence>(room.probes[p].influence);
+    EXPECT_EQ(is.halfExtentsMeters, was.halfExtentsMeters) << "nothing reaches further";
+    EXPECT_EQ(is.innerHalfExtentsMeters.y, was.innerHalfExtentsMeters.y);
+    EXPECT_LE(is.innerHalfExtentsMeters.x, was.innerHalfExtentsMeters.x);
+  }
+  expectEveryCellCovered(room.floor, room.volumes());
+}
+
+TEST(WidenFadesWhereWeightsJump, RangesAGapApartAreSmoothAlreadyAndStayAsTheyAre) {
+  RangesInARoom room({{{0, 4, 0, 6}}, {{5, 10, 0, 6}}});
+  const std::vector<InfluenceVolume> before = room.volumes();
+  ASSERT_LE(room.steepestWhereCamerasAre(), 0.02);
+  EXPECT_EQ(
+      widenFadesWhereWeightsJump(room.level, room.floor, 1.0, ValidateOptions{}, {}, room.probes),
+      0u);
+  for (std::size_t p = 0; p < before.size(); ++p) {
+    EXPECT_EQ(std::get<BoxInfluence>(room.probes[p].influence).halfExtentsMeters,
+              std::get<BoxInfluence>(before[p]).halfExtentsMeters);
+    EXPECT_EQ(std::get<BoxInfluence>(room.probes[p].influence).innerHalfExtentsMeters,
+              std::get<BoxInfluence>(before[p]).innerHalfExtentsMeters);
+  }
 }
 
 TEST(PartNearRanges, ARangeHeldNearItsNeighbourByItsCapturePartsFromItTheOtherWay) {

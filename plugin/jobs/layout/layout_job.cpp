@@ -106,8 +106,11 @@ Scene layoutScene(const Scene& input, const LayoutResult& layout, const fs::path
 
 // The scene file says which proxy each probe has, so `build` on layout.scene.json keeps the
 // same ones: boxes, spheres and none as written, a convex proxy as a mesh beside the scene.
-// A shape no scene can hold stays `auto` (buildLayoutProxy keeps none: sceneShapesOnly).
-ProxySpec authoredSpec(const ProxyShape& shape, const fs::path& meshFile, const std::string& name,
+// A shape no scene can hold stays `auto` (buildLayoutProxy keeps none: sceneShapesOnly). A
+// convex shape becomes the one its mesh gives, as `survey` and `build` read it from the file:
+// corners in floats, and those merged in polytopeFromPlanes stand within the merge distance
+// of some of their planes (basement's median moved by 3e-6 deg between the two).
+ProxySpec authoredSpec(ProxyShape& shape, const fs::path& meshFile, const std::string& name,
                        std::vector<std::pair<fs::path, LevelMesh>>& meshes) {
   if (!sceneFileCanHold(shape)) return AutoProxy{};
   if (std::holds_alternative<InfiniteShape>(shape)) return InfiniteProxy{};
@@ -120,6 +123,8 @@ ProxySpec authoredSpec(const ProxyShape& shape, const fs::path& meshFile, const 
     for (const glm::dvec3& v : convex->verticesMeters) mesh.positionsMeters.emplace_back(v);
     mesh.triangles = convex->triangles;
     mesh.parts.push_back({name, meshFile, 0, static_cast<std::uint32_t>(mesh.triangles.size())});
+    shape =
+        convexFromMesh({mesh.positionsMeters.begin(), mesh.positionsMeters.end()}, mesh.triangles);
     meshes.emplace_back(meshFile, std::move(mesh));
     return AuthoredConvexMesh{meshFile, meshFile.filename()};
   }

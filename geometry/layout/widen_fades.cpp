@@ -1,0 +1,308 @@
+#include "geometry/layout/widen_fades.h"
+
+#include "core/blend/weight_continuity.h"
+#include "geometry/layout/bands_in_sight.h"
+#include "geometry/layout/layout_influence.h"
+#include "geometry/validate/camera_space.h"
+#include "geometry/validate/influence_out_of_sight.h"
+
+#include <tbb/parallel_for.h>
+#include <glm/common.hpp>
+#include <glm/vector_relational.hpp>
+
+#include <algorithm>
+#include <array>
+#include <optional>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace probeproxy {
+
+namespace {
+
+// The blend is measured on this grid, as overlap_trim.h checks its trims; validate's is 1 cm
+// on a small level and 4-7 cm on a corpus map, placed otherwise, so a spot counts as smooth
+// only this far under the limit.
+constexpr double kScanGridMeters = 0.05;
+constexpr double kShareOfLimit = 0.9;
+// Points a side of a floor cell's coarse grid, where a scan looks first.
+constexpr int kCoarsePoints = 4;
+
+// The widenings tried, in gaps (the layout's band), the least first; an inner range keeps at
+// least kLeastInnerHalfOverGap of a gap either side of its centre (widerFades).
+constexpr std::array<double, 3> kInnerShrinksOverGap{0.25, 0.5, 1.0};
+constexpr double kLeastInnerHalfOverGap = 0.25;
+constexpr std::array<double, 3> kOuterGrowthsOverGap{0.125, 0.25, 0.5};
+// A spot a widening made smoother but left over the limit may take another, up to this many.
+constexpr int kMostWideningsPerSpot = 3;
+
+struct Pop {
+  double perCentimeter = 0.0;
+  glm::dvec3 from{0.0}, to{0.0};
+  // Worst first; ties by position, so the order does not depend on the threads.
+  auto order() const { return std::tuple(-perCentimeter, from.x, from.y, from.z, to.x, to.y); }
+};
+
+// What one floor cell's cameras at one height see of the blend.
+struct CellBlend {
+  glm::dvec3 floorMeters{0.0};
+  double zMeters = 0.0;     // the cameras' height
+  int mostOverlapping = 0;  // outer ranges over one camera point outside every inner range
+  Pop pop;                  // its steepest turn; 0 per cm unless over the scan's threshold
+};
+
+struct BlendScan {
+  std::vector<CellBlend> cells;  // in the walked floor's order, then by height
+  double steepestPerCentimeter() const {
+    double steepest = 0.0;
+    for (const CellBlend& c : cells) steepest = std::max(steepest, c.pop.perCentimeter);
+    return steepest;
+  }
+};
+
+struct Region {
+  glm::dvec3 lo{0.0}, hi{0.0};
+};
+
+bool meets(const Region& r, glm::dvec3 lo, glm::dvec3 hi) {
+  return glm::all(glm::lessThanEqual(r.lo, hi)) && glm::all(glm::lessThanEqual(lo, r.hi));
+}
+
+// Whether one of the layout's inner ranges holds the whole square at height z: one probe takes
+// the whole weight there, and nothing pops.
+bool insideOneInnerRange(std::span<const InfluenceVolume> near, glm::dvec2 lo, glm::dvec2 hi,
+                         double z) {
+  return std::any_of(near.begin(), near.end(), [&](const InfluenceVolume& v) {
+    const std::optional<InnerRange> r = innerRangeOf(v);
+    return r && r->lo.x < lo.x && hi.x < r->hi.x && r->lo.y < lo.y && hi.y < r->hi.y &&
+           r->lo.z < z && z < r->hi.z;
+  });
+}
+
+// The blend where a camera can be over the walked cells that meet the region, at the heights
+// within it: each cell's square on a grid of whole multiples of kScanGridMeters (shared by
+// neighbouring cells, one point past its low sides so every neighbouring pair is compared).
+// Only pops over `popThreshold` are measured: steepestPerCentimeter is the steepest of those, 0
+// when there is none.
+BlendScan scanBlend(const LevelRayCaster& level, const WalkableFloor& walked, double headRoom,
+                    std::span<const InfluenceVolume> volumes, std::span<const double> heights,
+                    const Region& region, double popThreshold) {
+  struct Task {
+    std::size_t cell;
+    double z;
+  };
+  const double halfCell = 0.5 * walked.spacingMeters;
+  std::vector<Task> tasks;
+  for (std::size_t c = 0; c < walked.cells.size(); ++c) {
+    const glm::dvec3 f = walked.cells[c].pointMeters;
+    if (!meets(region, f - glm::dvec3(halfCell, halfCell, 0.0),
+               f + glm::dvec3(halfCell, halfCell, headRoom)))
+      continue;
+    for (double z : heights)
+      if (f.z <= z && z <= f.z + headRoom && region.lo.z <= z && z <= region.hi.z)
+        tasks.push_back({c, z});
+  }
+  BlendScan scan;
+  scan.cells.resize(tasks.size());
+  tbb::parallel_for(std::size_t{0}, tasks.size(), [&](std::size_t t) {
+    const glm::dvec3 f = walked.cells[tasks[t].cell].pointMeters;
+    CellBlend& found = scan.cells[t];
+    const double z = tasks[t].z, s = kScanGridMeters;
+    found.floorMeters = f;
+    found.zMeters = z;
+    WeightGrid grid;
+    grid.zMeters = z;
+    grid.spacingMeters = s;
+    const glm::dvec2 cellLo = glm::dvec2(f) - halfCell, cellHi = glm::dvec2(f) + halfCell;
+    grid.minMeters = (glm::ceil((cellLo - s) / s - 0.5) + 0.5) * s;
+    grid.maxMeters = cellHi;
+    std::vector<InfluenceVolume> near;
+    std::vector<int> index;
+    for (std::size_t v = 0; v < volumes.size(); ++v) {
+      glm::dvec3 lo, hi;
+      influenceBounds(volumes[v], lo, hi);
+      if (lo.x < cellHi.x && grid.minMeters.x < hi.x && lo.y < cellHi.y &&
+          grid.minMeters.y < hi.y && lo.z < z && z < hi.z) {
+        near.push_back(volumes[v]);
+        index.push_back(static_cast<int>(v));
+      }
+    }
+    if (near.size() < 2 || insideOneInnerRange(near, grid.minMeters, cellHi, z)) return;
+    // First on a coarse grid over the cell: what overlaps, and whether any weight turns by
+    // as much as a pop does in one step (weights turn one way across a band: a pop within the
+    // cell shows between its corners).
+    int most = 0;
+    std::vector<double> least(near.size(), 1.0), largest(near.size(), 0.0);
+    for (int i = 0; i < kCoarsePoints; ++i) {
+      for (int j = 0; j < kCoarsePoints; ++j) {
+        const glm::dvec2 span = cellHi - grid.minMeters;
+        const glm::dvec3 p(grid.minMeters.x + i * span.x / (kCoarsePoints - 1),
+                           grid.minMeters.y + j * span.y / (kCoarsePoints - 1), z);
+        std::vector<double> w(near.size(), 0.0);
+        for (const ProbeWeight& pw : blendWeights(near, p)) w[pw.probe] = pw.weight;
+        int over = 0;
+        bool inner = false;
+        for (std::size_t k = 0; k < near.size(); ++k) {
+          least[k] = std::min(least[k], w[k]);
+          largest[k] = std::max(largest[k], w[k]);
+          over += insideInfluence(near[k], p);
+          inner = inner || insideInnerRange(near[k], p);
+        }
+        if (!inner) most = std::max(most, over);
+      }
+    }
+    double turn = 0.0;
+    for (std::size_t k = 0; k < near.size(); ++k) turn = std::max(turn, largest[k] - least[k]);
+    found.mostOverlapping = most;
+    if (turn < popThreshold * 100.0 * s) return;
+    const ReachableMask cameras = [&](std::span<const glm::dvec3> points,
+                                      std::span<char> reachable) {
+      markCameraSpace(level, walked, headRoom, points, reachable);
+    };
+    const WeightContinuity c = measureWeightContinuity(near, grid, {}, cameras);
+    const double perCentimeter = c.largestJump / (100.0 * s);
+    if (perCentimeter <= popThreshold) return;
+    found.pop = {perCentimeter, c.jumpFromMeters, c.jumpToMeters};
+  });
+  return scan;
+}
+
+Region boundsOf(const InfluenceVolume& v) {
+  Region r;
+  influenceBounds(v, r.lo, r.hi);
+  return r;
+}
+
+// Whether, away from the spot, no cell's blend turns steeper than `limit` or than it did, and
+// no more volumes meet over a camera than `maxOverlap` or than did: `before` and `after` scan
+// the same region.
+bool noWorseAwayFrom(const Region& spot, const BlendScan& before, const BlendScan& after,
+                     double limit, int maxOverlap, double halfCell) {
+  for (std::size_t t = 0; t < after.cells.size(); ++t) {
+    const CellBlend& b = before.cells[t];
+    const CellBlend& a = after.cells[t];
+    if (a.mostOverlapping > std::max(maxOverlap, b.mostOverlapping)) return false;
+    const glm::dvec3 at(a.floorMeters.x, a.floorMeters.y, a.zMeters), half(halfCell, halfCell, 0.0);
+    if (meets(spot, at - half, at + half)) continue;
+    if (a.pop.perCentimeter > std::max(limit, b.pop.perCentimeter)) return false;
+  }
+  return true;
+}
+
+// The cells round a pop, at its height.
+Region around(const Pop& pop, double cellMeters) {
+  const glm::dvec3 margin(cellMeters, cellMeters, 0.0);
+  return {glm::min(pop.from, pop.to) - margin, glm::max(pop.from, pop.to) + margin};
+}
+
+// The fades tried along one axis, the least change first: the inner range shrinking (the band
+// grows inwards; the outer range stays, so nothing reaches further), then the outer range
+// growing (where only two bands' far ends meet, each weighs (1 - a) / a ~ d / b, d into its
+// band: the share turns across the width both reach, whatever their bands' depths, and only
+// reaching further widens it). Both sides of the axis: a box has one centre.
+std::vector<BoxInfluence> widerFades(const BoxInfluence& box, int axis, double gapMeters) {
+  std::vector<BoxInfluence> wider;
+  for (double w : kInnerShrinksOverGap) {
+    BoxInfluence b = box;
+    b.innerHalfExtentsMeters[axis] = std::max(kLeastInnerHalfOverGap * gapMeters,
+                                              box.innerHalfExtentsMeters[axis] - w * gapMeters);
+    if (b.innerHalfExtentsMeters[axis] < box.innerHalfExtentsMeters[axis]) wider.push_back(b);
+  }
+  for (double g : kOuterGrowthsOverGap) {
+    BoxInfluence b = box;
+    b.halfExtentsMeters[axis] += g * gapMeters;
+    wider.push_back(b);
+  }
+  return wider;
+}
+
+}  // namespace
+
+std::size_t widenFadesWhereWeightsJump(const LevelRayCaster& level, const WalkableFloor& walked,
+                                       double gapMeters, const ValidateOptions& limits,
+                                       std::span<const InfluenceVolume> kept,
+                                       std::vector<LayoutProbe>& probes) {
+  std::vector<InfluenceVolume> volumes(kept.begin(), kept.end());
+  std::vector<double> heights;  // validate's weight_jump planes
+  for (const LayoutProbe& p : probes) {
+    volumes.push_back(p.influence);
+    heights.push_back(p.captureMeters.z);
+  }
+  std::sort(heights.begin(), heights.end());
+  heights.erase(std::unique(heights.begin(), heights.end()), heights.end());
+  if (volumes.empty() || walked.cells.empty()) return 0;
+
+  const double headRoom = limits.cameraHeadRoomMeters;
+  const double target = kShareOfLimit * limits.maxWeightJumpPerCentimeter;
+  const auto scan = [&](const Region& region, std::span<const double> zs, double threshold) {
+    return scanBlend(level, walked, headRoom, volumes, zs, region, threshold);
+  };
+  Region everywhere;
+  influenceBounds(volumes, everywhere.lo, everywhere.hi);
+  std::vector<Pop> pops;
+  for (const CellBlend& c : scan(everywhere, heights, target).cells)
+    if (c.pop.perCentimeter > 0.0) pops.push_back(c.pop);
+  std::sort(pops.begin(), pops.end(),
+            [](const Pop& a, const Pop& b) { return a.order() < b.order(); });
+
+  std::size_t widened = 0;
+  for (const Pop& pop : pops) {
+    const Region spot = around(pop, walked.spacingMeters);
+    const std::array<double, 1> spotHeight{pop.from.z};
+    for (int round = 0; round < kMostWideningsPerSpot; ++round) {
+      const double now = scan(spot, spotHeight, target).steepestPerCentimeter();
+      if (now <= target) break;
+      // The axis the weight turns along first.
+      const glm::dvec3 step = glm::abs(pop.to - pop.from);
+      const std::array<int, 2> axes = step.x >= step.y ? std::array{0, 1} : std::array{1, 0};
+      std::optional<std::pair<std::size_t, BoxInfluence>> chosen, smoother;
+      double smoothest = now;
+      for (std::size_t v = kept.size(); v < volumes.size() && !chosen; ++v) {
+        const BoxInfluence box = std::get<BoxInfluence>(volumes[v]);
+        if (!insideInfluence(box, pop.from) && !insideInfluence(box, pop.to)) continue;
+        std::optional<double> leakBefore;
+        for (int axis : axes) {
+          for (const BoxInfluence& wider : widerFades(box, axis, gapMeters)) {
+            volumes[v] = wider;
+            const double spotAfter = scan(spot, spotHeight, target).steepestPerCentimeter();
+            volumes[v] = box;
+            if (!(spotAfter < now)) continue;
+            // Over the box it reaches now, at every height, away from the spot: no cell
+            // steeper than it was or than the target, no more volumes meeting.
+            const Region over = boundsOf(wider);
+            const BlendScan before = scan(over, heights, target);
+            volumes[v] = wider;
+            const BlendScan after = scan(over, heights, target);
+            volumes[v] = box;
+            if (!noWorseAwayFrom(spot, before, after, target, limits.maxOverlap,
+                                 0.5 * walked.spacingMeters))
+              continue;
+            if (wider.halfExtentsMeters != box.halfExtentsMeters) {  // reaches further
+              const glm::dvec3 capture = probes[v - kept.size()].captureMeters;
+              if (!leakBefore)
+                leakBefore = influenceOutOfSight(level, capture, box, walked.cells).share;
+              if (influenceOutOfSight(level, capture, wider, walked.cells).share >
+                  std::max(*leakBefore, kLeakShareTarget))
+                continue;
+            }
+            if (spotAfter <= target) {
+              chosen = {v, wider};
+              break;
+            }
+            if (spotAfter < smoothest) smoothest = spotAfter, smoother = {v, wider};
+          }
+          if (chosen) break;
+        }
+      }
+      if (!chosen) chosen = smoother;
+      if (!chosen) break;
+      volumes[chosen->first] = chosen->second;
+      probes[chosen->first - kept.size()].influence = chosen->second;
+      ++widened;
+    }
+  }
+  return widened;
+}
+
+}  // namespace probeproxy
