@@ -297,6 +297,12 @@ struct RangesInARoom {
                                    influenceOfBounds({lo, ylo, -0.5}, {hi, yhi, 2.5}, 1.0),
                                    kRoomFitMeters});
   }
+  const BoxInfluence& box(std::size_t p) const {
+    return std::get<BoxInfluence>(probes[p].influence);
+  }
+  std::size_t widenFades() {
+    return widenFadesWhereWeightsJump(level, floor, 1.0, ValidateOptions{}, {}, probes);
+  }
   std::vector<InfluenceVolume> volumes() const {
     std::vector<InfluenceVolume> v;
     for (const LayoutProbe& p : probes) v.push_back(p.influence);
@@ -420,13 +426,11 @@ TEST(WidenFadesWhereWeightsJump, BandsWhoseFarEndsAloneMeetReachFurtherUntilTheB
   RangesInARoom room({{{0, 3, 0, 6}}, {{5.6, 10, 0, 6}}});
   const std::vector<InfluenceVolume> before = room.volumes();
   ASSERT_GT(room.steepestWhereCamerasAre(), 0.025);
-  EXPECT_GE(
-      widenFadesWhereWeightsJump(room.level, room.floor, 1.0, ValidateOptions{}, {}, room.probes),
-      1u);
+  EXPECT_GE(room.widenFades(), 1u);
   EXPECT_LE(room.steepestWhereCamerasAre(), 0.02) << "1 cm apart, as validate measures";
   for (std::size_t p = 0; p < before.size(); ++p) {
     const BoxInfluence& was = std::get<BoxInfluence>(before[p]);
-    const BoxInfluence& is = std::get<BoxInfluence>(room.probes[p].influence);
+    const BoxInfluence& is = room.box(p);
     EXPECT_EQ(is.centerMeters, was.centerMeters);
     EXPECT_EQ(is.halfExtentsMeters.y, was.halfExtentsMeters.y) << "only across the gap";
     EXPECT_GE(is.halfExtentsMeters.x, was.halfExtentsMeters.x) << "no outer range comes in";
@@ -442,13 +446,11 @@ TEST(WidenFadesWhereWeightsJump, ByAnInnerFaceWhereANeighbourWeighsMuchTheFadeDe
   RangesInARoom room({{{0, 4, 0, 6}}, {{4.3, 10, 0, 6}}});
   const std::vector<InfluenceVolume> before = room.volumes();
   ASSERT_GT(room.steepestWhereCamerasAre(), 0.025);
-  EXPECT_GE(
-      widenFadesWhereWeightsJump(room.level, room.floor, 1.0, ValidateOptions{}, {}, room.probes),
-      1u);
+  EXPECT_GE(room.widenFades(), 1u);
   EXPECT_LE(room.steepestWhereCamerasAre(), 0.02);
   for (std::size_t p = 0; p < before.size(); ++p) {
     const BoxInfluence& was = std::get<BoxInfluence>(before[p]);
-    const BoxInfluence& is = std::get<BoxInfluence>(room.probes[p].influence);
+    const BoxInfluence& is = room.box(p);
     EXPECT_EQ(is.halfExtentsMeters, was.halfExtentsMeters) << "nothing reaches further";
     EXPECT_EQ(is.innerHalfExtentsMeters.y, was.innerHalfExtentsMeters.y);
     EXPECT_LE(is.innerHalfExtentsMeters.x, was.innerHalfExtentsMeters.x);
@@ -460,13 +462,10 @@ TEST(WidenFadesWhereWeightsJump, RangesAGapApartAreSmoothAlreadyAndStayAsTheyAre
   RangesInARoom room({{{0, 4, 0, 6}}, {{5, 10, 0, 6}}});
   const std::vector<InfluenceVolume> before = room.volumes();
   ASSERT_LE(room.steepestWhereCamerasAre(), 0.02);
-  EXPECT_EQ(
-      widenFadesWhereWeightsJump(room.level, room.floor, 1.0, ValidateOptions{}, {}, room.probes),
-      0u);
+  EXPECT_EQ(room.widenFades(), 0u);
   for (std::size_t p = 0; p < before.size(); ++p) {
-    EXPECT_EQ(std::get<BoxInfluence>(room.probes[p].influence).halfExtentsMeters,
-              std::get<BoxInfluence>(before[p]).halfExtentsMeters);
-    EXPECT_EQ(std::get<BoxInfluence>(room.probes[p].influence).innerHalfExtentsMeters,
+    EXPECT_EQ(room.box(p).halfExtentsMeters, std::get<BoxInfluence>(before[p]).halfExtentsMeters);
+    EXPECT_EQ(room.box(p).innerHalfExtentsMeters,
               std::get<BoxInfluence>(before[p]).innerHalfExtentsMeters);
   }
 }
