@@ -138,8 +138,10 @@ ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe
   }
   // Every fit's candidates may serve that floor better than the kept ones, each build having
   // kept its own by the inner range's mean. None with a worse tail than the start (by more than
-  // select_proxy.h's noise, 2% + 0.05 degrees): taken by the shares alone, toxic's p95 went
-  // from 21.6 to 23.9 deg.
+  // select_proxy.h's noise, 2% + 0.05 degrees: taken by the shares alone, toxic's p95 went
+  // from 21.6 to 23.9 deg) nor a higher mean: fewer errors over 30 degrees bought with more
+  // between the tolerance and 30 is no gain where a map's p95 lies (toxic's probe_106, a
+  // walkway, went to `infinite` and the map's p95 from 21.7 to 23.6 deg).
   const double p95Limit = 1.02 * startScore.p95WithMissesDeg + 0.05;
   std::size_t keptBuild = start, keptCandidate = builds[start].kept;
   FloorScore keptScore = startScore;
@@ -150,7 +152,8 @@ ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe
           (c != builds[b].kept && planeCount(candidate.shape) > kMostPlanesToSwitchTo))
         continue;
       const FloorScore score = scoreOn(candidate.shape, capture, floor, toleranceDeg);
-      if (score.p95WithMissesDeg <= p95Limit && servesBetter(score, keptScore))
+      if (score.p95WithMissesDeg <= p95Limit && score.meanCostDeg <= startScore.meanCostDeg &&
+          servesBetter(score, keptScore))
         keptBuild = b, keptCandidate = c, keptScore = score;
     }
   }
