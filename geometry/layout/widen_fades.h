@@ -14,10 +14,11 @@
 // the spot shrinks its inner range along one horizontal axis (its band grows inwards, its outer
 // range stays: nothing reaches further), or else grows its outer range (where two bands' far
 // ends alone meet, the share turns across the width both reach, and only reaching further
-// widens it). The least change that brings the spot under 0.9 of the limit is kept, if away
-// from the spot no cell over the box turns steeper than that or than it did, no more volumes
-// meet over a camera than the blend takes or than did, and a grown range keeps its influence
-// out of its probe's sight under bands_in_sight.h's target or where it was.
+// widens it). The first (volumes in order, the pop's axis first, the least change first) that
+// brings the spot under 0.9 of the limit is kept, if away from the spot no cell over the box
+// turns steeper than that or than it did, no more volumes meet over a camera than the blend
+// takes or than did, and a grown range keeps its influence out of its probe's sight under
+// bands_in_sight.h's target or where it was.
 
 #include "core/scene/influence_volume.h"
 #include "geometry/floor/walkable_floor.h"
