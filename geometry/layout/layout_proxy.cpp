@@ -51,14 +51,14 @@ FloorScore scoreOn(const ProxyShape& shape, glm::dvec3 capture,
                    std::span<const ReflectionSample> floor, double toleranceDeg) {
   std::vector<double> errors = angularErrorsDeg(shape, capture, floor);
   const auto count = [&](double limit) {  // a miss (NaN) is over any limit
-    return std::count_if(errors.begin(), errors.end(), [&](double e) { return !(e <= limit); });
+    return static_cast<double>(
+        std::count_if(errors.begin(), errors.end(), [&](double e) { return !(e <= limit); }));
   };
   FloorScore score;
   if (!errors.empty()) {
-    const double n = static_cast<double>(errors.size());
-    score.percentOver = std::round(100.0 * double(count(toleranceDeg)) / n);
-    score.percentOverOrGross =
-        std::round(100.0 * double(count(toleranceDeg) + count(kGrossErrorDeg)) / n);
+    const double n = static_cast<double>(errors.size()), over = count(toleranceDeg);
+    score.percentOver = std::round(100.0 * over / n);
+    score.percentOverOrGross = std::round(100.0 * (over + count(kGrossErrorDeg)) / n);
   }
   const std::size_t occluded = floor.size() - errors.size();
   const ErrorFigures figures = summarizeErrors(std::move(errors), occluded);
@@ -123,19 +123,19 @@ ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe
   ProbeSamples samples;
   samples.floor = drawReportSamples(level, inner, options, SampleSet::MirrorFloor);
   std::vector<ProbeProxyBuild> builds;
+  std::vector<FloorScore> keptScores;  // each build's kept candidate's
   std::size_t start = 0;
-  FloorScore startScore;
   for (const InfluenceVolume& fit : fits) {
     Probe fitted = inner;
     fitted.influence = fit;
     samples.fit = drawFitSamples(level, fitted, options);
     builds.push_back(buildProbeProxy(inner, view, hull, samples, std::nullopt, options));
     const ProbeProxyBuild& b = builds.back();
-    const FloorScore score = scoreOn(b.candidates[b.kept].shape, capture, floor, toleranceDeg);
+    keptScores.push_back(scoreOn(b.candidates[b.kept].shape, capture, floor, toleranceDeg));
     // A NaN mean (no visible sample) compares false: the first fit stays.
-    if (builds.size() == 1 || fitsBetter(score, startScore))
-      start = builds.size() - 1, startScore = score;
+    if (fitsBetter(keptScores.back(), keptScores[start])) start = builds.size() - 1;
   }
+  const FloorScore& startScore = keptScores[start];
   // Every fit's candidates may serve that floor better than the kept ones, each build having
   // kept its own by the inner range's mean. None with a worse tail than the start (by more than
   // select_proxy.h's noise, 2% + 0.05 degrees: taken by the shares alone, toxic's p95 went
@@ -151,7 +151,9 @@ ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe
       if (!sceneFileCanHold(candidate.shape) ||
           (c != builds[b].kept && planeCount(candidate.shape) > kMostPlanesToSwitchTo))
         continue;
-      const FloorScore score = scoreOn(candidate.shape, capture, floor, toleranceDeg);
+      const FloorScore score = c == builds[b].kept
+                                   ? keptScores[b]
+                                   : scoreOn(candidate.shape, capture, floor, toleranceDeg);
       if (score.p95WithMissesDeg <= p95Limit && score.meanCostDeg <= startScore.meanCostDeg &&
           servesBetter(score, keptScore))
         keptBuild = b, keptCandidate = c, keptScore = score;

@@ -27,8 +27,8 @@ InfluenceVolume majorityRange(const InfluenceVolume& influence);
 // (each miss at 180 degrees), is the start; then of the three builds' candidates (their kept
 // ones, and any else of at most 16 planes) whose p95 is no worse than the start's and whose
 // mean is no higher, the one with the least floor over the tolerance plus floor over 30
-// degrees, then the lowest mean, is kept; the earlier on a tie. The probe's influence is its whole box; the build returned
-// reports on its inner range, as `build` on the layout's scene does.
+// degrees, then the lowest mean, is kept; the earlier on a tie. The probe's influence is its whole
+// box; the build returned reports on its inner range, as `build` on the layout's scene does.
 ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe,
                                  ProxyBuildOptions options, double candidateFitMeters,
                                  double toleranceDeg);

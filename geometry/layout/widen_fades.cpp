@@ -103,6 +103,9 @@ BlendScan scanBlend(const LevelRayCaster& level, const WalkableFloor& walked, do
       if (f.z <= z && z <= f.z + headRoom && region.lo.z <= z && z <= region.hi.z)
         tasks.push_back({c, z});
   }
+  std::vector<Region> bounds(volumes.size());  // once, not for every cell
+  for (std::size_t v = 0; v < volumes.size(); ++v)
+    influenceBounds(volumes[v], bounds[v].lo, bounds[v].hi);
   BlendScan scan;
   scan.cells.resize(tasks.size());
   tbb::parallel_for(std::size_t{0}, tasks.size(), [&](std::size_t t) {
@@ -118,15 +121,11 @@ BlendScan scanBlend(const LevelRayCaster& level, const WalkableFloor& walked, do
     grid.minMeters = (glm::ceil((cellLo - s) / s - 0.5) + 0.5) * s;
     grid.maxMeters = cellHi;
     std::vector<InfluenceVolume> near;
-    std::vector<int> index;
     for (std::size_t v = 0; v < volumes.size(); ++v) {
-      glm::dvec3 lo, hi;
-      influenceBounds(volumes[v], lo, hi);
+      const glm::dvec3 lo = bounds[v].lo, hi = bounds[v].hi;
       if (lo.x < cellHi.x && grid.minMeters.x < hi.x && lo.y < cellHi.y &&
-          grid.minMeters.y < hi.y && lo.z < z && z < hi.z) {
+          grid.minMeters.y < hi.y && lo.z < z && z < hi.z)
         near.push_back(volumes[v]);
-        index.push_back(static_cast<int>(v));
-      }
     }
     if (near.size() < 2 || insideOneInnerRange(near, grid.minMeters, cellHi, z)) return;
     // First on a coarse grid over the cell: what overlaps, and whether any weight turns by
@@ -261,6 +260,13 @@ std::size_t widenFadesWhereWeightsJump(const LevelRayCaster& level, const Walkab
       for (std::size_t v = kept.size(); v < volumes.size() && !chosen; ++v) {
         const BoxInfluence box = std::get<BoxInfluence>(volumes[v]);
         if (!insideInfluence(box, pop.from) && !insideInfluence(box, pop.to)) continue;
+        // Checked over the box its widest growth reaches: outside a widening's own bounds no
+        // weight changes, so one scan before serves every widening tried.
+        BoxInfluence widest = box;
+        for (int axis : {0, 1})
+          widest.halfExtentsMeters[axis] += kOuterGrowthsOverGap.back() * gapMeters;
+        const Region over = boundsOf(widest);
+        std::optional<BlendScan> before;
         std::optional<double> leakBefore;
         for (int axis : axes) {
           for (const BoxInfluence& wider : widerFades(box, axis, gapMeters)) {
@@ -268,14 +274,13 @@ std::size_t widenFadesWhereWeightsJump(const LevelRayCaster& level, const Walkab
             const double spotAfter = scan(spot, spotHeight, target).steepestPerCentimeter();
             volumes[v] = box;
             if (!(spotAfter < now)) continue;
-            // Over the box it reaches now, at every height, away from the spot: no cell
-            // steeper than it was or than the target, no more volumes meeting.
-            const Region over = boundsOf(wider);
-            const BlendScan before = scan(over, heights, target);
+            // At every height, away from the spot: no cell steeper than it was or than the
+            // target, no more volumes meeting.
+            if (!before) before = scan(over, heights, target);
             volumes[v] = wider;
             const BlendScan after = scan(over, heights, target);
             volumes[v] = box;
-            if (!noWorseAwayFrom(spot, before, after, target, limits.maxOverlap,
+            if (!noWorseAwayFrom(spot, *before, after, target, limits.maxOverlap,
                                  0.5 * walked.spacingMeters))
               continue;
             if (wider.halfExtentsMeters != box.halfExtentsMeters) {  // reaches further
