@@ -7,34 +7,64 @@
 
 namespace probeproxy {
 
+namespace {
+
+// `capture(i)` and `error(i)` of the probe a weight names.
+template <typename Weights, typename Capture, typename Error>
+SurveySampleError weightedError(const LevelRayCaster& level, const ReflectionSample& sample,
+                                const Weights& weights, double fallbackWeight,
+                                const Capture& capture, const Error& error) {
+  SurveySampleError e;
+  e.uncoveredWeight = fallbackWeight;
+  if (weights.empty()) {
+    e.uncovered = true;
+    e.uncoveredWeight = 1.0;
+    return e;
+  }
+  double weightedSum = 0.0, visibleWeight = 0.0;
+  for (const auto& w : weights) {
+    if (trueHitHiddenFrom(level, capture(w.probe), sample)) {
+      e.occludedWeight += w.weight;
+      continue;
+    }
+    const double errorDeg = error(w.probe);
+    weightedSum += w.weight * (std::isnan(errorDeg) ? kMissErrorDeg : errorDeg);
+    visibleWeight += w.weight;
+  }
+  if (visibleWeight > 0.0) {
+    e.errorDeg = weightedSum / visibleWeight;
+  } else {
+    e.occludedWeight = 1.0 - fallbackWeight;  // the weights sum to that up to rounding
+  }
+  return e;
+}
+
+}  // namespace
+
 SurveySampleError blendedSampleError(const LevelRayCaster& level,
                                      std::span<const SurveyProbe> probes,
                                      std::span<const InfluenceVolume> volumes,
                                      const ReflectionSample& sample, const BlendOptions& blend) {
-  SurveySampleError e;
   const std::vector<ProbeWeight> weights =
       blendWeights(volumes, sample.xMeters + glm::dvec3(0.0, 0.0, kBlendLiftMeters), blend);
-  if (weights.empty()) {
-    e.uncovered = true;
-    return e;
-  }
-  double weightedError = 0.0, visibleWeight = 0.0;
-  for (const ProbeWeight& w : weights) {
-    const SurveyProbe& probe = probes[static_cast<std::size_t>(w.probe)];
-    if (trueHitHiddenFrom(level, probe.captureMeters, sample)) {
-      e.occludedWeight += w.weight;
-      continue;
-    }
-    const double error = angularErrorDeg(probe.proxy, probe.captureMeters, sample);
-    weightedError += w.weight * (std::isnan(error) ? kMissErrorDeg : error);
-    visibleWeight += w.weight;
-  }
-  if (visibleWeight > 0.0) {
-    e.errorDeg = weightedError / visibleWeight;
-  } else {
-    e.occludedWeight = 1.0;  // the weights sum to 1 up to rounding: say it exactly
-  }
-  return e;
+  const auto probe = [&](int i) -> const SurveyProbe& {
+    return probes[static_cast<std::size_t>(i)];
+  };
+  return weightedError(
+      level, sample, weights, 0.0, [&](int i) { return probe(i).captureMeters; },
+      [&](int i) { return angularErrorDeg(probe(i).proxy, probe(i).captureMeters, sample); });
+}
+
+SurveySampleError blendedSampleError(const LevelRayCaster& level, const EngineModel& model,
+                                     const ReflectionSample& sample) {
+  const EngineBlend blend = model.blend(sample.xMeters, sample.eyeMeters);
+  const auto probe = [&](int i) -> const EngineProbe& {
+    return model.probes[static_cast<std::size_t>(i)];
+  };
+  return weightedError(
+      level, sample, blend.weights, blend.fallbackWeight,
+      [&](int i) { return probe(i).captureMeters; },
+      [&](int i) { return engineLookupErrorDeg(probe(i), sample); });
 }
 
 }  // namespace probeproxy

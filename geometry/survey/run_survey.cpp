@@ -23,6 +23,12 @@ int samplesPerCell(const WalkableFloor& floor, const SurveyOptions& o) {
       std::clamp<std::size_t>(fit, 1, static_cast<std::size_t>(o.samplesPerCell)));
 }
 
+// A partly occluded sample, or one the fallback shares, stands for the part of its floor its
+// visible probes shade.
+double shadedArea(const SurveySampleError& e) {
+  return e.areaSquareMeters * (1.0 - e.occludedWeight - e.uncoveredWeight);
+}
+
 SurveyCellError cellError(std::span<const SurveySampleError> errors) {
   SurveyCellError c;
   c.samples = static_cast<int>(errors.size());
@@ -30,10 +36,9 @@ SurveyCellError cellError(std::span<const SurveySampleError> errors) {
   double area = 0.0;
   for (const SurveySampleError& e : errors) {
     area += e.areaSquareMeters;
-    if (e.uncovered) c.uncoveredShare += e.areaSquareMeters;
+    c.uncoveredShare += e.uncoveredWeight * e.areaSquareMeters;
     c.occludedShare += e.occludedWeight * e.areaSquareMeters;
-    if (!std::isnan(e.errorDeg))
-      visible.push_back({e.errorDeg, e.areaSquareMeters * (1.0 - e.occludedWeight)});
+    if (!std::isnan(e.errorDeg)) visible.push_back({e.errorDeg, shadedArea(e)});
   }
   if (area > 0.0) {
     c.uncoveredShare /= area;
@@ -50,11 +55,10 @@ SurveyFigures figures(std::span<const SurveySampleError> errors, double toleranc
   double area = 0.0, over = 0.0, uncovered = 0.0, occluded = 0.0;
   for (const SurveySampleError& e : errors) {
     area += e.areaSquareMeters;
-    if (e.uncovered) uncovered += e.areaSquareMeters;
+    uncovered += e.uncoveredWeight * e.areaSquareMeters;
     occluded += e.occludedWeight * e.areaSquareMeters;
     if (std::isnan(e.errorDeg)) continue;
-    // A partly occluded sample stands for the part of its floor its visible probes shade.
-    const double seen = e.areaSquareMeters * (1.0 - e.occludedWeight);
+    const double seen = shadedArea(e);
     visible.push_back({e.errorDeg, seen});
     if (e.errorDeg > toleranceDeg) over += seen;
   }
@@ -69,20 +73,19 @@ SurveyFigures figures(std::span<const SurveySampleError> errors, double toleranc
   return f;
 }
 
-}  // namespace
-
-SurveyResult surveyProbes(std::span<const SurveyProbe> probes, const LevelRayCaster& level,
-                          const SurveyOptions& o) {
+// The survey over the floor the seeds reach, each sample's error from `errorOf`.
+template <typename SampleError>
+SurveyResult surveySamples(std::vector<glm::dvec3> seeds, std::size_t probes,
+                           const LevelRayCaster& level, const SurveyOptions& o,
+                           const SampleError& errorOf) {
   const auto start = std::chrono::steady_clock::now();
   o.check();
-  std::vector<glm::dvec3> seeds = o.seedPointsMeters;
-  if (seeds.empty())
-    for (const SurveyProbe& p : probes) seeds.push_back(p.captureMeters);
-
+  if (!o.seedPointsMeters.empty()) seeds = o.seedPointsMeters;
   if (seeds.empty())
     throw InputError("survey", "no seed points: the scene has no probes and none were given");
   SurveyResult result;
   result.toleranceDeg = o.toleranceDeg;
+  result.engine = o.engine;
   result.floor = walkableFloor(level, seeds, o.floor);
   if (result.floor.cells.empty())
     throw InputError("survey", "no walkable floor under any of the " +
@@ -99,11 +102,9 @@ SurveyResult surveyProbes(std::span<const SurveyProbe> probes, const LevelRayCas
   so.seed = o.seed;
   const std::vector<FloorSample> samples = buildFloorSamples(level, result.floor, so);
 
-  std::vector<InfluenceVolume> volumes;
-  for (const SurveyProbe& p : probes) volumes.push_back(p.influence);
   std::vector<SurveySampleError> errors(samples.size());
   tbb::parallel_for(std::size_t{0}, samples.size(), [&](std::size_t i) {
-    errors[i] = blendedSampleError(level, probes, volumes, samples[i].sample, o.blend);
+    errors[i] = errorOf(samples[i].sample);
     errors[i].areaSquareMeters = samples[i].areaSquareMeters;
   });
 
@@ -114,21 +115,53 @@ SurveyResult surveyProbes(std::span<const SurveyProbe> probes, const LevelRayCas
     result.cells[c] = cellError(std::span(errors).subspan(c * perCell, perCell));
 
   result.figures = figures(errors, o.toleranceDeg);
-  result.figures.probes = probes.size();
+  result.figures.probes = probes;
   result.figures.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
+}
+
+}  // namespace
+
+SurveyResult surveyProbes(std::span<const SurveyProbe> probes, const LevelRayCaster& level,
+                          const SurveyOptions& o) {
+  std::vector<glm::dvec3> captures;
+  std::vector<InfluenceVolume> volumes;
+  for (const SurveyProbe& p : probes) {
+    captures.push_back(p.captureMeters);
+    volumes.push_back(p.influence);
+  }
+  return surveySamples(std::move(captures), probes.size(), level, o,
+                       [&](const ReflectionSample& sample) {
+                         return blendedSampleError(level, probes, volumes, sample, o.blend);
+                       });
+}
+
+SurveyResult surveyModel(const EngineModel& model, std::span<const glm::dvec3> seedPointsMeters,
+                         const LevelRayCaster& level, const SurveyOptions& o) {
+  return surveySamples(
+      {seedPointsMeters.begin(), seedPointsMeters.end()}, model.probes.size(), level, o,
+      [&](const ReflectionSample& sample) { return blendedSampleError(level, model, sample); });
 }
 
 SurveyResult runSurvey(const Scene& scene, const LevelRayCaster& level, const SurveyOptions& o,
                        const std::function<void(std::size_t, std::size_t)>& onProbeBuilt) {
   const auto start = std::chrono::steady_clock::now();
   o.check();
-  const std::vector<ProxyShape> shapes = surveyProxyShapes(scene, level, o, onProbeBuilt);
-  std::vector<SurveyProbe> probes;
-  for (std::size_t i = 0; i < scene.probes.size(); ++i)
-    probes.push_back({scene.probes[i].captureMeters, scene.probes[i].influence, shapes[i]});
-  SurveyResult result = surveyProbes(probes, level, o);
+  SurveyResult result;
+  if (o.engine == Engine::Generic) {
+    const std::vector<ProxyShape> shapes = surveyProxyShapes(scene, level, o, onProbeBuilt);
+    std::vector<SurveyProbe> probes;
+    for (std::size_t i = 0; i < scene.probes.size(); ++i)
+      probes.push_back({scene.probes[i].captureMeters, scene.probes[i].influence, shapes[i]});
+    result = surveyProbes(probes, level, o);
+  } else {
+    const EngineModel model =
+        engineModel(o.engine, surveyPresets(scene, level, o, onProbeBuilt), o.blend);
+    std::vector<glm::dvec3> captures;
+    for (const Probe& p : scene.probes) captures.push_back(p.captureMeters);
+    result = surveyModel(model, captures, level, o);
+  }
   result.scene = scene.file.empty() ? std::string("scene") : scene.file.stem().stem().string();
   result.figures.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

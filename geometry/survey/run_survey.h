@@ -7,6 +7,7 @@
 // thread count.
 
 #include "core/scene/scene.h"
+#include "geometry/engines/engine_model.h"
 #include "geometry/raycast/level_ray_caster.h"
 #include "geometry/survey/blended_error.h"
 #include "geometry/survey/survey_options.h"
@@ -17,15 +18,22 @@
 
 namespace probeproxy {
 
-// Checks the options, resolves each probe's proxy (survey_proxies.h) and surveys. Throws
+// Checks the options, resolves each probe's proxy (survey_proxies.h) or, under an engine's
+// model (options.engine), each probe's presets for that engine, and surveys. Throws
 // InputError when no seed point stands over walkable floor.
 // `onProbeBuilt(done, total)` reports the proxy builds, the slow part on real levels.
 SurveyResult runSurvey(const Scene& scene, const LevelRayCaster& level,
                        const SurveyOptions& options,
                        const std::function<void(std::size_t, std::size_t)>& onProbeBuilt = {});
 
-// The same with the probes given: what runSurvey does once the proxies are known.
+// The same with the probes given: what runSurvey does once the proxies are known (the generic
+// model; options.engine is not read).
 SurveyResult surveyProbes(std::span<const SurveyProbe> probes, const LevelRayCaster& level,
                           const SurveyOptions& options);
+
+// The same under an engine's model: the floor seeded from options.seedPointsMeters, else from
+// `seedPointsMeters` (the scene's capture points).
+SurveyResult surveyModel(const EngineModel& model, std::span<const glm::dvec3> seedPointsMeters,
+                         const LevelRayCaster& level, const SurveyOptions& options);
 
 }  // namespace probeproxy

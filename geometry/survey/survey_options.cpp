@@ -19,6 +19,10 @@ void SurveyOptions::check() const {
   requireInRange<std::size_t>("max_samples", maxSamples, 1, 1'000'000'000);
   requireInRange("eye_height_m", eyeHeightMeters, 1e-3, floor.headClearanceMeters);
   requireInRange("max_view_attempts", maxViewAttempts, 1, 1024);
+  if (engine != Engine::Generic && proxies != SurveyProxies::Scene)
+    throw InputError("option proxy",
+                     "an engine model looks each probe up through the preset a build exports "
+                     "for that engine: use proxy scene (or the generic engine)");
 }
 
 }  // namespace probeproxy

@@ -4,8 +4,9 @@
 // inputs with the same one-line message.
 
 #include "core/blend/blend_weights.h"
-#include "geometry/probe_proxies/build_probe_proxy.h"
+#include "geometry/engines/engine.h"
 #include "geometry/floor/walkable_floor.h"
+#include "geometry/probe_proxies/build_probe_proxy.h"
 
 #include <glm/vec3.hpp>
 
@@ -36,6 +37,10 @@ struct SurveyOptions {
   SurveyProxies proxies = SurveyProxies::Scene;
   std::filesystem::path proxiesJson;  // a `build` export whose kept proxies to use; empty: none
   ProxyBuildOptions build;            // for probes whose proxy is `auto` (and BestAabb)
+  // Whose renderer to measure: Generic is the scene's proxies under `blend`; any other engine
+  // gets the presets a build exports for it (proxiesJson's, or every probe built now) and
+  // blends them by its own rules (geometry/engines/). `proxies` must then be Scene.
+  Engine engine = Engine::Generic;
 
   void check() const;
 };

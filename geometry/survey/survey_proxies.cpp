@@ -1,9 +1,9 @@
 #include "geometry/survey/survey_proxies.h"
 
 #include "core/errors/input_error.h"
+#include "geometry/export/runtime_probe_shape.h"
 #include "geometry/probe_proxies/authored_proxy_shape.h"
 #include "geometry/probe_proxies/build_scene_proxies.h"
-#include "geometry/export/runtime_probe_shape.h"
 
 #include <optional>
 
@@ -11,16 +11,25 @@ namespace probeproxy {
 
 namespace {
 
-std::vector<ProxyShape> fromExport(const Scene& scene, const std::filesystem::path& file) {
-  const RuntimeExport runtime = readRuntimeExport(file);
-  std::vector<ProxyShape> shapes;
+// The export's probes in scene order.
+RuntimeExport exportInSceneOrder(const Scene& scene, const std::filesystem::path& file) {
+  RuntimeExport runtime = readRuntimeExport(file);
+  std::vector<RuntimeProbe> ordered;
   for (const Probe& probe : scene.probes) {
     const RuntimeProbe* found = nullptr;
     for (const RuntimeProbe& p : runtime.probes)
       if (p.name == probe.name) found = &p;
     if (!found) throw InputError(file, "no probe named '" + probe.name + "' (the scene has it)");
-    shapes.push_back(runtimeProbeShape(*found, file));
+    ordered.push_back(*found);
   }
+  runtime.probes = std::move(ordered);
+  return runtime;
+}
+
+std::vector<ProxyShape> fromExport(const Scene& scene, const std::filesystem::path& file) {
+  std::vector<ProxyShape> shapes;
+  for (const RuntimeProbe& p : exportInSceneOrder(scene, file).probes)
+    shapes.push_back(runtimeProbeShape(p, file));
   return shapes;
 }
 
@@ -62,6 +71,12 @@ std::vector<ProxyShape> fromBuilds(
 }
 
 }  // namespace
+
+RuntimeExport surveyPresets(const Scene& scene, const LevelRayCaster& level, const SurveyOptions& o,
+                            const std::function<void(std::size_t, std::size_t)>& onProbeBuilt) {
+  if (!o.proxiesJson.empty()) return exportInSceneOrder(scene, o.proxiesJson);
+  return makeRuntimeExport(scene, buildSceneProxies(scene, level, o.build, onProbeBuilt));
+}
 
 std::vector<ProxyShape> surveyProxyShapes(
     const Scene& scene, const LevelRayCaster& level, const SurveyOptions& o,

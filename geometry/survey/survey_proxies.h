@@ -5,6 +5,7 @@
 
 #include "core/proxy/proxy_shape.h"
 #include "core/scene/scene.h"
+#include "geometry/export/runtime_export.h"
 #include "geometry/raycast/level_ray_caster.h"
 #include "geometry/survey/survey_options.h"
 
@@ -19,5 +20,12 @@ namespace probeproxy {
 std::vector<ProxyShape> surveyProxyShapes(
     const Scene& scene, const LevelRayCaster& level, const SurveyOptions& options,
     const std::function<void(std::size_t, std::size_t)>& onProbeBuilt = {});
+
+// The presets an engine model reads, one probe per scene probe in scene order: proxiesJson's
+// (InputError when it lacks a probe of the scene), else every probe built now (authored ones
+// too: their candidates give the box engines their boxes) and exported as `build` exports.
+RuntimeExport surveyPresets(const Scene& scene, const LevelRayCaster& level,
+                            const SurveyOptions& options,
+                            const std::function<void(std::size_t, std::size_t)>& onProbeBuilt = {});
 
 }  // namespace probeproxy

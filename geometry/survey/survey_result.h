@@ -3,6 +3,7 @@
 // drawn from. Plain data. Shares are of the walkable floor's area; errors in degrees are over
 // the floor that is covered and whose true hits some weighted probe sees.
 
+#include "geometry/engines/engine.h"
 #include "geometry/floor/walkable_floor.h"
 
 #include <cstddef>
@@ -19,7 +20,8 @@ struct SurveyFigures {
   double medianDeg = std::numeric_limits<double>::quiet_NaN();  // area-weighted
   double p95Deg = std::numeric_limits<double>::quiet_NaN();     // area-weighted
   double overToleranceShare = 0.0;  // floor whose error exceeds the tolerance
-  double uncoveredShare = 0.0;      // floor no influence volume covers
+  double uncoveredShare = 0.0;      // floor no probe reaches (under an engine model, the
+                                    // fallback's share of each sample's reflection)
   double occludedShare = 0.0;       // blend weight of probes that cannot see the true hit
   double seconds = 0.0;             // wall time of the whole survey, proxies included
 };
@@ -28,8 +30,9 @@ struct SurveyFigures {
 struct SurveySampleError {
   double errorDeg = std::numeric_limits<double>::quiet_NaN();  // NaN: uncovered or occluded
   double areaSquareMeters = 0.0;                               // of floor this sample stands for
-  double occludedWeight = 0.0;  // blend weight of the probes that cannot see the true hit
-  bool uncovered = false;
+  double occludedWeight = 0.0;   // blend weight of the probes that cannot see the true hit
+  double uncoveredWeight = 0.0;  // the sky / ambient fallback's share: 1 where no probe reaches
+  bool uncovered = false;        // no probe reaches the sample at all
 };
 
 struct SurveyCellError {  // per floor cell (WalkableFloor::cells, same order)
@@ -44,7 +47,8 @@ struct SurveyResult {
   SurveyFigures figures;
   WalkableFloor floor;
   std::vector<SurveyCellError> cells;
-  double toleranceDeg = 0.0;  // what over_tolerance_share was measured against
+  double toleranceDeg = 0.0;        // what over_tolerance_share was measured against
+  Engine engine = Engine::Generic;  // whose renderer the figures are for
 };
 
 }  // namespace probeproxy

@@ -305,7 +305,7 @@ TEST(SurveyReport, JsonHasTheDesignNamesInOrder) {
   const nlohmann::ordered_json j = nlohmann::ordered_json::parse(jobs::surveyReportJson(r));
   std::vector<std::string> keys;
   for (const auto& item : j.items()) keys.push_back(item.key());
-  EXPECT_EQ(keys, (std::vector<std::string>{"scene", "walkable_m2", "samples", "probes",
+  EXPECT_EQ(keys, (std::vector<std::string>{"scene", "engine", "walkable_m2", "samples", "probes",
                                             "median_deg", "p95_deg", "over_tolerance_share",
                                             "uncovered_share", "occluded_share", "seconds"}));
   EXPECT_TRUE(j["p95_deg"].is_null()) << "no visible floor: no figure, not a made-up one";

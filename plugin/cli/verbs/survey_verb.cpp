@@ -19,6 +19,7 @@ struct SurveyVerbOptions {
   bool json = false;
   std::string scheme = "lagarde";
   std::string proxy = "scene";
+  std::string engine = "generic";
   jobs::SurveyJobOptions job;
 };
 
@@ -35,6 +36,7 @@ int runSurveyVerb(SurveyVerbOptions o) {
     throw InputError("--scheme", "expected lagarde or enlighten, got '" + o.scheme + "'");
   o.job.survey.blend.scheme = *scheme;
   o.job.survey.proxies = surveyProxies(o.proxy);
+  o.job.survey.engine = parseEngine(o.engine);
   o.job.survey.proxiesJson = o.proxies;
   o.job.input.file = o.scene;
   o.job.outFolder = o.out;
@@ -61,6 +63,11 @@ Verb addSurveyVerb(CLI::App& app) {
   verb->add_option("scene", o->scene, "scene file (*.scene.json)")->required();
   verb->add_flag("--json", o->json, "print the figures as JSON on stdout");
   verb->add_option("--out", o->out, "folder for survey.json and the error maps (PNG)");
+  verb->add_option("--engine", o->engine,
+                   "whose renderer to measure: generic (the scene's proxies, --scheme blend), "
+                   "unity, unity-hdrp, unreal, godot3, godot4, bevy or eevee (the presets a "
+                   "build exports for that engine, blended by its rules; docs/engines.md)")
+      ->capture_default_str();
   verb->add_option("--scheme", o->scheme,
                    "blend weights: lagarde (seed 000) or enlighten (seed 004)")
       ->capture_default_str();

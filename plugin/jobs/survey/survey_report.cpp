@@ -20,6 +20,7 @@ std::string surveyReportJson(const SurveyResult& r) {
   const SurveyFigures& f = r.figures;
   nlohmann::ordered_json j;
   j["scene"] = r.scene;
+  j["engine"] = std::string(engineName(r.engine));
   j["walkable_m2"] = number(f.walkableSquareMeters);
   j["samples"] = f.samples;
   j["probes"] = f.probes;
@@ -39,7 +40,7 @@ void printSurveyTable(std::ostream& out, const SurveyResult& r) {
     std::snprintf(line, sizeof line, format, value);
     out << "  " << name << line << "\n";
   };
-  out << "survey of " << r.scene << "\n";
+  out << "survey of " << r.scene << " (engine " << engineName(r.engine) << ")\n";
   row("walkable floor       ", "%.1f m^2", f.walkableSquareMeters);
   row("floor samples        ", "%.0f", static_cast<double>(f.samples));
   row("probes               ", "%.0f", static_cast<double>(f.probes));

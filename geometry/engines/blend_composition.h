@@ -1,0 +1,36 @@
+#pragma once
+// The ways engines compose the probes that reach a shaded point, given each probe's own weight
+// (its fade at the point) in the order the engine visits them. Each returns the weights that
+// end up on screen and the sky / ambient fallback's share.
+
+#include "geometry/engines/engine_model.h"
+
+#include <span>
+
+namespace probeproxy {
+
+struct ProbeFade {
+  int probe = 0;      // index into EngineModel::probes
+  double fade = 0.0;  // the probe's own weight at the point, in [0, 1]
+};
+
+// Front to back: each probe takes its fade of what is left (Unreal's
+// ImageBasedReflections.a *= 1 - DistanceAlpha; Unity's deferred probes drawn over each other,
+// back to front, are the same in the reverse order). The fallback gets what is left at the end.
+EngineBlend frontToBack(std::span<const ProbeFade> ordered);
+
+// Fill to one: each probe takes its fade, cut to what the ones before left (HDRP's
+// UpdateLightingHierarchyWeights, EEVEE's accumulate_light); the fallback the rest. Once the
+// sum reaches `fullAt` nothing more is added, the fallback included (EEVEE stops at 0.999).
+EngineBlend fillToOne(std::span<const ProbeFade> ordered, double fullAt = 1.0);
+
+// Up to the largest fade so far: each probe takes max(0, fade - accumulated), the accumulated
+// weight becoming the largest fade seen (Godot 4's reflection_blend = max(0, blend -
+// reflection_accum.a)); the fallback 1 - the largest fade.
+EngineBlend upToLargestFade(std::span<const ProbeFade> ordered);
+
+// Normalized: fade / sum of fades; the fallback only where every fade is 0 (Godot 3's
+// reflection_accum.rgb / reflection_accum.a, else the environment).
+EngineBlend normalizedFades(std::span<const ProbeFade> fades);
+
+}  // namespace probeproxy

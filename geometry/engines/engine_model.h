@@ -1,0 +1,103 @@
+#pragma once
+// What a renderer does with the probes it was given, as plain data and one function: the
+// probes as the engine holds them (capture point, the shape a reflection is projected on, how
+// the cubemap is looked up) and, for a shaded point, which of them reach it with what weight
+// and how much is left to the sky / ambient fallback. World frame (Z up), metres.
+//
+// The level-wide error under a model (geometry/survey/blended_error.h) is the weight-averaged
+// angle between each probe's lookup and the true hit, as for the generic model; the fallback's
+// share is the part of the reflection no probe provides (counted as uncovered, not as error).
+
+#include "core/blend/blend_weights.h"
+#include "core/proxy/proxy_shape.h"
+#include "core/scene/influence_volume.h"
+#include "geometry/engines/engine.h"
+#include "geometry/evaluation/reflection_sample.h"
+#include "geometry/export/runtime_export.h"
+
+#include <glm/mat3x3.hpp>
+#include <glm/vec3.hpp>
+
+#include <functional>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace probeproxy {
+
+// How the engine intersects a reflection ray with its projection shape.
+enum class Projection {
+  Reference,  // probeproxy's own lookup (core/parallax/reference_lookup.h): a shading point
+              // outside the shape is a miss
+  BoxSlab,    // the engines' box projection: t = min over axes of the far slab crossing, in the
+              // box's own frame (UnityStandardUtils.cginc BoxProjectedCubemapDirection, Godot's
+              // reflection_process, Unreal's GetLookupVectorForBoxCapture, HDRP's
+              // IntersectBoxProxy, EEVEE's line_unit_box_intersect_dist): from outside the box
+              // too, as the shaders do
+};
+
+struct EngineProbe {
+  int sceneProbe = 0;             // the probe's index in the scene (and in the export)
+  glm::dvec3 captureMeters{0.0};  // where the cubemap was captured: its texels are seen from here
+  ProxyShape projection;          // what the reflection ray is intersected with; InfiniteShape:
+                                  // no parallax correction (the lookup is r)
+  Projection method = Projection::BoxSlab;
+  // The engine looks the cubemap up with lookupFromWorld * (P - lookupOriginMeters), P where
+  // the ray leaves `projection`. Most engines: the identity and the capture point. Bevy looks
+  // up in the probe's own scaled space from the box centre.
+  glm::dvec3 lookupOriginMeters{0.0};
+  glm::dmat3 lookupFromWorld{1.0};
+};
+
+struct EngineWeight {
+  int probe = 0;        // index into EngineModel::probes
+  double weight = 0.0;  // in (0, 1]
+};
+
+struct EngineBlend {
+  std::vector<EngineWeight> weights;  // in the engine's order; zero weights left out
+  double fallbackWeight = 1.0;        // the sky / ambient's share: 1 - sum(weights), >= 0
+};
+
+struct EngineModel {
+  Engine engine = Engine::Generic;
+  std::vector<EngineProbe> probes;
+  // The blend at a shaded point x seen from a camera at `eye` (Godot 4 orders probes by their
+  // depth from the camera). Deterministic; safe to call from many threads.
+  std::function<EngineBlend(glm::dvec3 xMeters, glm::dvec3 eyeMeters)> blend;
+};
+
+// The generic model over given shapes: Lagarde's or Enlighten's weights (core/blend/
+// blend_weights.h) taken kBlendLiftMeters above the floor point, each probe looked up through
+// its own proxy from its capture point. The three spans are in scene order, of equal length.
+EngineModel genericModel(std::span<const glm::dvec3> capturesMeters,
+                         std::span<const InfluenceVolume> influences,
+                         std::span<const ProxyShape> shapes, const BlendOptions& blend);
+
+// The model of `engine` over an export's presets: what a studio imports. A probe without a
+// preset for that engine (no box candidate was built) is not in the engine at all. Generic
+// takes each probe's kept proxy and `blend`.
+EngineModel engineModel(Engine engine, const RuntimeExport& presets, const BlendOptions& blend);
+
+// One file per engine (geometry/engines/<name>_model.cpp).
+EngineModel unityModel(const RuntimeExport& presets);
+EngineModel unityHdrpModel(const RuntimeExport& presets);
+EngineModel unrealModel(const RuntimeExport& presets);
+EngineModel godot3Model(const RuntimeExport& presets);
+EngineModel godot4Model(const RuntimeExport& presets);
+EngineModel bevyModel(const RuntimeExport& presets);
+EngineModel eeveeModel(const RuntimeExport& presets);
+
+// The engine's lookup direction for the ray (x, r) (r unit); none for a miss.
+std::optional<glm::dvec3> engineLookup(const EngineProbe& probe, glm::dvec3 xMeters, glm::dvec3 r);
+
+// angle(lookup, H - C) in degrees, C the capture point (r when the ray reaches the sky); NaN
+// for a miss. The generic model's probes give angularErrorDeg exactly.
+double engineLookupErrorDeg(const EngineProbe& probe, const ReflectionSample& sample);
+
+// Floor points sit on the influence volumes' lower boundary (a box from floor to ceiling);
+// the generic model takes weights this far above the floor, as validate's floor rules do.
+// Engine models take them at the shaded point itself, as their shaders do.
+inline constexpr double kBlendLiftMeters = 0.05;
+
+}  // namespace probeproxy

@@ -1,0 +1,27 @@
+#pragma once
+// What Godot 3 and Godot 4 share: a ReflectionProbe's box is both where it applies and what it
+// projects on (the shaders' reflection_process(): out of the box, `return`; box_project: hit
+// against +-box_extents, lookup = hit - box_offset), centred on the node.
+
+#include "geometry/engines/engine_model.h"
+#include "geometry/engines/preset_boxes.h"
+
+#include <glm/vec3.hpp>
+
+#include <optional>
+#include <vector>
+
+namespace probeproxy {
+
+struct GodotProbes {
+  std::vector<EngineProbe> probes;
+  std::vector<PresetBox> boxes;  // same order
+};
+
+// Every probe with a godot_reflection_probe preset, as Godot holds it.
+GodotProbes godotProbes(const RuntimeExport& presets);
+
+// local_pos = the point in the node's frame; none where any |local_pos| > box_extents.
+std::optional<glm::dvec3> godotLocalPosition(const BoxShape& box, glm::dvec3 xMeters);
+
+}  // namespace probeproxy

@@ -1,0 +1,83 @@
+// Unity's built-in render pipeline with deferred shading, where reflection probes are applied
+// per pixel ("When using deferred shading, reflection probes are rendered per-pixel (instead of
+// one or two probes affecting whole object)", ScriptReference ReflectionProbe.blendDistance).
+// Forward rendering picks two probes per renderer for the whole object (Manual "Blend
+// Reflection Probes in the Built-In Render Pipeline"): a floor mesh spanning many probes gets
+// two of them everywhere, which no layout can serve; that path is not modelled.
+//
+// DefaultResourcesExtra/Internal-DeferredReflections.shader, frag():
+//   - each probe is drawn as its box grown by blendDistance on every side, and box projection
+//     intersects that grown box: boxMin = unity_SpecCube0_BoxMin - blendDistance, boxMax + ...;
+//   - its alpha is falloff = saturate(1 - length(distanceFromAABB(worldPos, boxMin, boxMax)) /
+//     blendDistance): 1 inside the box, fading to 0 blendDistance outside it;
+//   - the probes are drawn over the skybox (a full-screen quad first), each blended over what is
+//     there by its alpha. Unity's C++ side, which sorts them, is not public; we take the order
+//     the Manual describes for overlapping probes (a more important probe "overrides" a less
+//     important one) and, at equal importance, the smaller box drawn later, on top.
+// The export does not write blendDistance (the Manual does not say which side of the box it
+// fades on), so an imported probe keeps Unity's default, 1 m.
+
+#include "geometry/engines/blend_composition.h"
+#include "geometry/engines/engine_model.h"
+#include "geometry/engines/preset_boxes.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <numeric>
+
+namespace probeproxy {
+
+namespace {
+constexpr double kUnityDefaultBlendDistanceMeters = 1.0;  // ReflectionProbe.blendDistance
+}  // namespace
+
+EngineModel unityModel(const RuntimeExport& presets) {
+  EngineModel model;
+  model.engine = Engine::Unity;
+  std::vector<BoxShape> boxes;
+  const double blendDistance = kUnityDefaultBlendDistanceMeters;
+  for (std::size_t i = 0; i < presets.probes.size(); ++i) {
+    const auto& preset = presets.probes[i].engines.unity;
+    if (!preset) continue;
+    const PresetBox held = unityPresetBox(*preset);
+    EngineProbe p;
+    p.sceneProbe = static_cast<int>(i);
+    p.captureMeters = held.captureMeters;
+    p.lookupOriginMeters = held.captureMeters;
+    if (preset->boxProjection) {
+      BoxShape grown = held.box;
+      grown.halfExtentsMeters += blendDistance;
+      p.projection = grown;
+    } else {
+      p.projection = InfiniteShape{};
+    }
+    model.probes.push_back(std::move(p));
+    boxes.push_back(held.box);
+  }
+  // Front to back: the smaller box first (drawn last, on top); ties in scene order.
+  std::vector<int> order(boxes.size());
+  std::iota(order.begin(), order.end(), 0);
+  const auto volume = [&](int i) {
+    const glm::dvec3 h = boxes[static_cast<std::size_t>(i)].halfExtentsMeters;
+    return h.x * h.y * h.z;
+  };
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return volume(a) < volume(b); });
+  model.blend = [boxes = std::move(boxes), order = std::move(order), blendDistance](glm::dvec3 x,
+                                                                                    glm::dvec3) {
+    std::vector<ProbeFade> fades;
+    for (const int i : order) {
+      const BoxShape& box = boxes[static_cast<std::size_t>(i)];
+      const glm::dvec3 low = box.centerMeters - box.halfExtentsMeters;
+      const glm::dvec3 high = box.centerMeters + box.halfExtentsMeters;
+      const glm::dvec3 outside = glm::max(glm::max(x - high, low - x), glm::dvec3(0.0));
+      const double fade = std::clamp(1.0 - glm::length(outside) / blendDistance, 0.0, 1.0);
+      if (fade > 0.0) fades.push_back({i, fade});
+    }
+    return frontToBack(fades);
+  };
+  return model;
+}
+
+}  // namespace probeproxy

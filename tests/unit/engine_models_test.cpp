@@ -1,0 +1,356 @@
+// Engine models (geometry/engines/): each engine's weights at crafted points against the
+// engine's formula written out from its shader, the order it composes probes in, what its
+// fallback gets, and its lookups against a box room's exact answers.
+
+#include "core/errors/input_error.h"
+#include "geometry/builtin/box_room.h"
+#include "geometry/engines/blend_composition.h"
+#include "geometry/engines/engine_model.h"
+#include "geometry/evaluation/evaluate_shape.h"
+#include "geometry/evaluation/reflection_samples.h"
+#include "geometry/survey/blended_error.h"
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace probeproxy {
+namespace {
+
+constexpr glm::dquat kUnturned{1, 0, 0, 0};
+
+// A box influence with a 1 m fade on every axis inside `box`.
+BoxInfluence fadingInside(const BoxShape& box) {
+  BoxInfluence b;
+  b.centerMeters = box.centerMeters;
+  b.halfExtentsMeters = box.halfExtentsMeters;
+  b.worldFromBox = box.worldFromBox;
+  b.innerHalfExtentsMeters = box.halfExtentsMeters - 1.0;
+  return b;
+}
+
+// A probe with every box engine's preset made from `box`, as `build` exports it.
+RuntimeProbe probeWithPresets(const std::string& name, const BoxShape& box, glm::dvec3 capture,
+                              const InfluenceVolume& influence) {
+  RuntimeProbe p;
+  p.name = name;
+  p.captureMeters = capture;
+  p.method = Method::Aabb;
+  p.box = box;
+  p.influence = influence;
+  p.engines.unity = unityReflectionProbe(box, capture);
+  p.engines.unrealBox = unrealBoxReflectionCapture(box, capture, influence);
+  p.engines.godot = godotReflectionProbe(box, capture, influence);
+  p.engines.bevy = bevyLightProbe(box, capture, influence);
+  return p;
+}
+
+RuntimeExport exportOf(std::vector<RuntimeProbe> probes) {
+  RuntimeExport e;
+  e.probes = std::move(probes);
+  return e;
+}
+
+// One probe whose box, influence and capture point are the box's centre.
+RuntimeExport oneProbe(const BoxShape& box) {
+  return exportOf({probeWithPresets("a", box, box.centerMeters, fadingInside(box))});
+}
+
+std::map<int, double> weightsOf(const EngineBlend& b) {
+  std::map<int, double> m;
+  for (const EngineWeight& w : b.weights) m[w.probe] = w.weight;
+  return m;
+}
+
+double smoothstep(double e0, double e1, double x) {
+  const double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
+  return t * t * (3.0 - 2.0 * t);
+}
+
+const BoxShape kBox{{2.0, 2.0, 1.5}, {2.0, 2.0, 1.5}, kUnturned};  // [0, 4]^2 x [0, 3]
+const glm::dvec3 kEye{-5.0, 2.0, 1.7};
+
+TEST(BlendComposition, EachOrderAgainstItsShaderLoopWrittenOut) {
+  const std::vector<ProbeFade> fades = {{0, 0.5}, {1, 0.8}, {2, 0.3}};
+  // Front to back: 0.5; 0.8 of the 0.5 left; 0.3 of the 0.1 left; sky 0.07.
+  EngineBlend b = frontToBack(fades);
+  std::map<int, double> w = weightsOf(b);
+  EXPECT_NEAR(w[0], 0.5, 1e-15);
+  EXPECT_NEAR(w[1], 0.4, 1e-15);
+  EXPECT_NEAR(w[2], 0.03, 1e-15);
+  EXPECT_NEAR(b.fallbackWeight, 0.07, 1e-15);
+  // Fill to one: 0.5, then min(0.8, 0.5), then nothing; no sky.
+  b = fillToOne(fades);
+  EXPECT_EQ(weightsOf(b), (std::map<int, double>{{0, 0.5}, {1, 0.5}}));
+  EXPECT_EQ(b.fallbackWeight, 0.0);
+  // Stopping at 0.999: 0.9995 is full, and the sky gets nothing either.
+  b = fillToOne(std::vector<ProbeFade>{{0, 0.9995}, {1, 1.0}}, 0.999);
+  EXPECT_EQ(weightsOf(b), (std::map<int, double>{{0, 0.9995}}));
+  EXPECT_EQ(b.fallbackWeight, 0.0);
+  // Up to the largest fade: 0.5, then 0.8 - 0.5, then max(0, 0.3 - 0.8) = 0; sky 1 - 0.8.
+  b = upToLargestFade(fades);
+  ASSERT_EQ(b.weights.size(), 2u);
+  EXPECT_EQ(b.weights[0].weight, 0.5);
+  EXPECT_NEAR(b.weights[1].weight, 0.3, 1e-15);
+  EXPECT_NEAR(b.fallbackWeight, 0.2, 1e-15);
+  // Normalized: fade over the sum 1.6; no sky unless every fade is 0.
+  b = normalizedFades(fades);
+  EXPECT_NEAR(weightsOf(b)[1], 0.5, 1e-15);
+  EXPECT_EQ(b.fallbackWeight, 0.0);
+  EXPECT_EQ(normalizedFades(std::vector<ProbeFade>{{0, 0.0}}).fallbackWeight, 1.0);
+}
+
+TEST(EngineNames, EveryNameRoundTripsAndAnUnknownOneIsRefusedWithTheList) {
+  for (const Engine e : kEngines) EXPECT_EQ(engineFromName(engineName(e)), e);
+  EXPECT_EQ(parseEngine("unity-hdrp"), Engine::UnityHdrp);
+  try {
+    parseEngine("godot");
+    FAIL() << "godot is not an engine name";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "--engine: expected one of generic, unity, unity-hdrp, unreal, godot3, godot4, "
+              "bevy, eevee, got 'godot'");
+  }
+}
+
+TEST(UnityModel, FadesOutsideTheBoxOverTheDefaultBlendDistanceSmallerBoxOnTop) {
+  const EngineModel model = unityModel(oneProbe(kBox));
+  EXPECT_EQ(weightsOf(model.blend({2, 2, 1}, kEye)), (std::map<int, double>{{0, 1.0}}));
+  // Internal-DeferredReflections: falloff = saturate(1 - |distance to the box| / 1 m).
+  const EngineBlend half = model.blend({4.5, 2, 1}, kEye);
+  EXPECT_NEAR(weightsOf(half)[0], 0.5, 1e-12);
+  EXPECT_NEAR(half.fallbackWeight, 0.5, 1e-12);
+  // A small box inside the large one is drawn later, over it: inside it, it alone; 0.25 m
+  // outside it, 0.75 of it over 0.25 of the large one.
+  const BoxShape small{{1.5, 1.5, 1.5}, {0.5, 0.5, 1.5}, kUnturned};
+  const EngineModel nested = unityModel(
+      exportOf({probeWithPresets("large", kBox, kBox.centerMeters, fadingInside(kBox)),
+                probeWithPresets("small", small, small.centerMeters, fadingInside(small))}));
+  EXPECT_EQ(weightsOf(nested.blend({1.5, 1.5, 1}, kEye)), (std::map<int, double>{{1, 1.0}}));
+  const std::map<int, double> seam = weightsOf(nested.blend({2.25, 1.5, 1}, kEye));
+  EXPECT_NEAR(seam.at(1), 0.75, 1e-12);
+  EXPECT_NEAR(seam.at(0), 0.25, 1e-12);
+}
+
+TEST(UnityModel, ProjectsOnTheBoxGrownByTheBlendDistance) {
+  const EngineModel model = unityModel(oneProbe(kBox));
+  // From (2, 2, 1) along +x the grown box's face is x = 5: lookup (5, 2, 1) - (2, 2, 1.5).
+  const std::optional<glm::dvec3> d = engineLookup(model.probes[0], {2, 2, 1}, {1, 0, 0});
+  ASSERT_TRUE(d);
+  EXPECT_NEAR(glm::distance(*d, glm::dvec3(3.0, 0.0, -0.5)), 0.0, 1e-12);
+}
+
+TEST(UnityHdrpModel, FadesLinearlyInsideEachFaceAndSmallerInfluenceFillsFirst) {
+  const EngineModel model = unityHdrpModel(oneProbe(kBox));
+  // InfluenceBoxWeight: min over faces of distance / blend distance; at x = 3.5 the +x face is
+  // 0.5 m away with a 1 m blend: 0.5; the sky the rest.
+  const EngineBlend b = model.blend({3.5, 2, 1.5}, kEye);
+  EXPECT_NEAR(weightsOf(b)[0], 0.5, 1e-12);
+  EXPECT_NEAR(b.fallbackWeight, 0.5, 1e-12);
+  const BoxShape small{{3.0, 2.0, 1.5}, {1.0, 2.0, 1.5}, kUnturned};
+  BoxInfluence smallInfluence = fadingInside(small);
+  smallInfluence.innerHalfExtentsMeters = {0.5, 1.0, 1.0};
+  const EngineModel two = unityHdrpModel(
+      exportOf({probeWithPresets("large", kBox, kBox.centerMeters, fadingInside(kBox)),
+                probeWithPresets("small", small, small.centerMeters, smallInfluence)}));
+  // At x = 2.25: the small volume's -x face is 0.25 m away, blend 0.5: 0.5, first; the large
+  // one's weight 1 is cut to the 0.5 left.
+  const std::map<int, double> w = weightsOf(two.blend({2.25, 2, 1.5}, kEye));
+  EXPECT_NEAR(w.at(1), 0.5, 1e-12);
+  EXPECT_NEAR(w.at(0), 0.5, 1e-12);
+  ASSERT_EQ(two.blend({2.25, 2, 1.5}, kEye).weights.front().probe, 1);
+}
+
+TEST(UnrealModel, SmoothstepOverSevenTenthsOfTheTransitionFromTheShrunkBox) {
+  const EngineModel model = unrealModel(oneProbe(kBox));  // T = 1 m (the smallest fade)
+  EXPECT_EQ(weightsOf(model.blend({3.4, 2, 1.5}, kEye)), (std::map<int, double>{{0, 1.0}}));
+  // On the +x face: 0.5 m from the box shrunk by T / 2; alpha 1 - smoothstep(0, 0.7, 0.5).
+  const EngineBlend face = model.blend({4.0, 2, 1.5}, kEye);
+  EXPECT_NEAR(weightsOf(face)[0], 1.0 - smoothstep(0.0, 0.7, 0.5), 1e-12);
+  EXPECT_NEAR(weightsOf(face)[0], 0.1982507, 1e-6);
+  EXPECT_NEAR(face.fallbackWeight, smoothstep(0.0, 0.7, 0.5), 1e-12);
+  EXPECT_TRUE(model.blend({4.2, 2, 1.5}, kEye).weights.empty());  // 0.2 T outside: nothing
+  // Front to back, the smaller capture first.
+  const BoxShape small{{3.0, 2.0, 1.5}, {1.0, 2.0, 1.5}, kUnturned};
+  const EngineModel two = unrealModel(
+      exportOf({probeWithPresets("large", kBox, kBox.centerMeters, fadingInside(kBox)),
+                probeWithPresets("small", small, small.centerMeters, fadingInside(small))}));
+  const EngineBlend b = two.blend({2.0, 2, 1.5}, kEye);  // the small one's -x face
+  const double alpha = 1.0 - smoothstep(0.0, 0.7, 0.5);
+  ASSERT_EQ(b.weights.size(), 2u);
+  EXPECT_EQ(b.weights[0].probe, 1);
+  EXPECT_NEAR(b.weights[0].weight, alpha, 1e-12);
+  EXPECT_NEAR(b.weights[1].weight, 1.0 - alpha, 1e-12);
+}
+
+TEST(Godot3Model, TheRoundedCurveNormalizedOverEveryBoxHoldingThePoint) {
+  // blend = max(inner); blend = mix(length(inner), blend, blend); squared; 1 - that.
+  const auto curve = [](glm::dvec3 inner) {
+    double b = std::max({inner.x, inner.y, inner.z});
+    b = glm::length(inner) * (1.0 - b) + b * b;
+    return std::max(0.0, 1.0 - b * b);
+  };
+  const BoxShape right{{3.0, 2.0, 1.5}, {2.0, 2.0, 1.5}, kUnturned};
+  const EngineModel model = godot3Model(
+      exportOf({probeWithPresets("a", kBox, kBox.centerMeters, fadingInside(kBox)),
+                probeWithPresets("b", right, right.centerMeters, fadingInside(right))}));
+  const glm::dvec3 x{2.5, 2.5, 1.0};
+  const double a = curve(glm::abs((x - kBox.centerMeters) / kBox.halfExtentsMeters));
+  const double b = curve(glm::abs((x - right.centerMeters) / right.halfExtentsMeters));
+  const std::map<int, double> w = weightsOf(model.blend(x, kEye));
+  EXPECT_NEAR(w.at(0), a / (a + b), 1e-12);
+  EXPECT_NEAR(w.at(1), b / (a + b), 1e-12);
+  // One box alone gets everything however close to its face; on the face the curve is 0 and
+  // the environment shows.
+  EXPECT_EQ(weightsOf(model.blend({0.1, 2, 1.5}, kEye)), (std::map<int, double>{{0, 1.0}}));
+  EXPECT_EQ(model.blend({0.0, 2, 1.5}, kEye).fallbackWeight, 1.0);
+}
+
+TEST(Godot4Model, BlendDistanceSquaredProductAndTheFarthestProbeFirst) {
+  const EngineModel model = godot4Model(oneProbe(kBox));  // blend_distance 1 m
+  // At x = 3.5: axis x 1 - (1.5 - 2 + 1) / 1 = 0.5, y and z clamped to 1; product squared.
+  const EngineBlend b = model.blend({3.5, 2, 1.5}, kEye);
+  EXPECT_NEAR(weightsOf(b)[0], 0.25, 1e-12);
+  EXPECT_NEAR(b.fallbackWeight, 0.75, 1e-12);
+  // Two boxes, the point 0.5 m inside the right one's -x face (blend 0.25) and deep in the
+  // left one (1): seen from the left the right box is farther, visited first and keeps its
+  // 0.25; seen from the right the left box comes first and takes all.
+  const BoxShape right{{4.5, 2.0, 1.5}, {2.0, 2.0, 1.5}, kUnturned};
+  const EngineModel two = godot4Model(
+      exportOf({probeWithPresets("left", kBox, kBox.centerMeters, fadingInside(kBox)),
+                probeWithPresets("right", right, right.centerMeters, fadingInside(right))}));
+  const glm::dvec3 x{3.0, 2.0, 1.5};
+  std::map<int, double> w = weightsOf(two.blend(x, {-5.0, 2.0, 1.7}));
+  EXPECT_NEAR(w.at(1), 0.25, 1e-12);
+  EXPECT_NEAR(w.at(0), 0.75, 1e-12);
+  w = weightsOf(two.blend(x, {12.0, 2.0, 1.7}));
+  EXPECT_EQ(w, (std::map<int, double>{{0, 1.0}}));
+}
+
+TEST(BevyModel, FalloffRampsToTheCubesFacesAndTheEnvironmentFillsWhatIsLeft) {
+  const BoxShape cube{{2.0, 2.0, 2.0}, {2.0, 2.0, 2.0}, kUnturned};
+  const EngineModel model = bevyModel(oneProbe(cube));  // falloff = 1 m / 2 m = 0.5 per axis
+  // light_probe_iterator_next: saturate((1 - 2 |p|) / (2 falloff)), p = 1.5 / 4 on x: 0.25.
+  const EngineBlend b = model.blend({3.5, 2, 2}, kEye);
+  EXPECT_NEAR(weightsOf(b)[0], 0.25, 1e-12);
+  EXPECT_NEAR(b.fallbackWeight, 0.75, 1e-12);
+  EXPECT_EQ(weightsOf(model.blend({2, 2, 2}, kEye)), (std::map<int, double>{{0, 1.0}}));
+}
+
+TEST(BevyModel, LooksUpInTheScaledCubeSoOnlyACubeIsRight) {
+  // A cube with the capture point at its centre: the sample direction is the hit's.
+  const BoxShape cube{{2.0, 2.0, 2.0}, {2.0, 2.0, 2.0}, kUnturned};
+  const EngineProbe exact = bevyModel(oneProbe(cube)).probes[0];
+  const glm::dvec3 x{2.5, 1.5, 0.5}, r = glm::normalize(glm::dvec3(1, 2, 3));
+  const glm::dvec3 hit = x + (4.0 - x.z) / r.z * r;  // the ceiling z = 4 first
+  EXPECT_LT(glm::length(glm::cross(glm::normalize(*engineLookup(exact, x, r)),
+                                   glm::normalize(hit - cube.centerMeters))),
+            1e-12);
+  // A box twice as long in x: the sample direction is (hit - centre) / size per axis.
+  const BoxShape box{{4.0, 2.0, 2.0}, {4.0, 2.0, 2.0}, kUnturned};
+  const EngineProbe stretched = bevyModel(oneProbe(box)).probes[0];
+  const glm::dvec3 hitBox = x + (4.0 - x.z) / r.z * r;
+  const glm::dvec3 expected = (hitBox - box.centerMeters) / (2.0 * box.halfExtentsMeters);
+  EXPECT_NEAR(glm::distance(*engineLookup(stretched, x, r), expected), 0.0, 1e-12);
+}
+
+TEST(EeveeModel, AttenuationAlongEveryAxisFloorIncludedSmallestFirstWorldFills) {
+  // Capture at the centre: the influence is the scene's box; falloff = 1 m / 1.5 m, so fac =
+  // saturate(1.5 - 1.5 |local|) per axis.
+  const EngineModel model = eeveeModel(oneProbe(kBox));
+  EXPECT_EQ(weightsOf(model.blend(kBox.centerMeters, kEye)), (std::map<int, double>{{0, 1.0}}));
+  const EngineBlend side = model.blend({3.5, 2.0, 1.5}, kEye);  // local x 0.75
+  EXPECT_NEAR(weightsOf(side)[0], 1.5 - 1.5 * 0.75, 1e-12);
+  EXPECT_NEAR(side.fallbackWeight, 1.0 - (1.5 - 1.5 * 0.75), 1e-12);
+  // On the floor (local z = -1) the probe gives nothing: the world probe shows.
+  EXPECT_EQ(model.blend({2.0, 2.0, 0.0}, kEye).fallbackWeight, 1.0);
+  // A capture point off centre: the influence grows to cover the scene's volume from it.
+  const EngineModel off =
+      eeveeModel(exportOf({probeWithPresets("a", kBox, {1.0, 2.0, 1.5}, fadingInside(kBox))}));
+  const BoxShape& parallax = std::get<BoxShape>(off.probes[0].projection);
+  EXPECT_EQ(parallax.centerMeters, glm::dvec3(1.0, 2.0, 1.5));
+  EXPECT_GT(off.blend({3.9, 2.0, 1.5}, kEye).weights.size(), 0u);
+}
+
+// A 10 x 4 x 3 m room whose probe's box is the room, captured at its centre: every engine that
+// projects on the room itself looks up the true hit, so the blended error is 0 wherever a probe
+// weighs; Unity projects on the room grown by its 1 m blend distance and Bevy on a stretched
+// cube, so they are off. The mirror is 1 m over the floor, inside every engine's fade.
+TEST(EngineModels, AnExactBoxRoomIsExactWhereTheEngineProjectsOnTheRoom) {
+  const BoxShape room{{5.0, 2.0, 1.5}, {5.0, 2.0, 1.5}, kUnturned};
+  const LevelRayCaster level(boxRoom({0, 0, 0}, {10, 4, 3}));
+  const RuntimeExport presets = oneProbe(room);
+  ReflectionSample s;
+  s.xMeters = {3.0, 1.5, 1.0};
+  s.reflected = glm::normalize(glm::dvec3(1.0, 0.3, 0.2));  // meets the x = 10 wall
+  s.eyeMeters = s.xMeters + 2.0 * glm::dvec3(-s.reflected.x, -s.reflected.y, s.reflected.z);
+  traceTrueHit(level, s);
+  const glm::dvec3 c = room.centerMeters;
+  const glm::dvec3 toHit = s.trueHitMeters - c;
+  ASSERT_NEAR(s.trueHitMeters.x, 10.0, 1e-6);
+  // Unity: the x = 11 face of the grown box. Bevy: the hit over the box's full size per axis.
+  const glm::dvec3 unityHit = s.xMeters + (11.0 - s.xMeters.x) / s.reflected.x * s.reflected;
+  const double unity = angleBetweenDeg(unityHit - c, toHit);
+  const double bevy = angleBetweenDeg(toHit / (2.0 * room.halfExtentsMeters), toHit);
+  EXPECT_GT(bevy, 10.0);
+  for (const Engine e : kEngines) {
+    SCOPED_TRACE(std::string(engineName(e)));
+    const SurveySampleError err =
+        blendedSampleError(level, engineModel(e, presets, BlendOptions{}), s);
+    const double expected = e == Engine::Unity ? unity : e == Engine::Bevy ? bevy : 0.0;
+    EXPECT_NEAR(err.errorDeg, expected, 1e-5);
+  }
+}
+
+// The same room's floor lies on the probe box's bottom face. Engines that fade inside the box
+// (HDRP, Godot 3's curve, Godot 4's blend distance, Bevy's falloff, EEVEE's attenuation) give
+// it no probe at all: the sky shows. Unreal's transition leaves 0.198 on the face, Unity fades
+// outside the box, and the generic model takes its weights 5 cm over the floor.
+TEST(EngineModels, AFloorOnTheBoxFaceIsLeftToTheSkyByEnginesThatFadeInside) {
+  const BoxShape room{{5.0, 2.0, 1.5}, {5.0, 2.0, 1.5}, kUnturned};
+  const RuntimeExport presets = oneProbe(room);
+  const glm::dvec3 floor{3.0, 1.5, 0.0};
+  const std::map<Engine, double> sky = {
+      {Engine::Generic, 0.0},   {Engine::Unity, 0.0},
+      {Engine::UnityHdrp, 1.0}, {Engine::Unreal, 1.0 - (1.0 - smoothstep(0.0, 0.7, 0.5))},
+      {Engine::Godot3, 1.0},    {Engine::Godot4, 1.0},
+      {Engine::Bevy, 1.0},      {Engine::Eevee, 1.0}};
+  for (const Engine e : kEngines) {
+    SCOPED_TRACE(std::string(engineName(e)));
+    EXPECT_NEAR(engineModel(e, presets, BlendOptions{}).blend(floor, kEye).fallbackWeight,
+                sky.at(e), 1e-12);
+  }
+}
+
+TEST(EngineModels, TheGenericModelIsTheSurveysOwnBlend) {
+  const LevelRayCaster level(boxRoom({0, 0, 0}, {10, 4, 3}));
+  BoxInfluence left, right;
+  left.centerMeters = {3.0, 2.0, 1.5};
+  right.centerMeters = {7.0, 2.0, 1.5};
+  left.halfExtentsMeters = right.halfExtentsMeters = {3.0, 2.0, 1.5};
+  left.innerHalfExtentsMeters = right.innerHalfExtentsMeters = {1.0, 2.0, 1.5};
+  const std::vector<SurveyProbe> probes = {
+      {{3.0, 2.0, 1.5}, left, BoxShape{{5.0, 2.0, 1.5}, {5.0, 2.0, 1.5}, kUnturned}},
+      {{7.0, 2.0, 1.5}, right, InfiniteShape{}}};
+  const std::vector<InfluenceVolume> volumes = {left, right};
+  const std::vector<glm::dvec3> captures = {probes[0].captureMeters, probes[1].captureMeters};
+  const std::vector<ProxyShape> shapes = {probes[0].proxy, probes[1].proxy};
+  const EngineModel model = genericModel(captures, volumes, shapes, BlendOptions{});
+  for (double x = 0.5; x < 10.0; x += 0.75) {
+    ReflectionSample s;
+    s.xMeters = {x, 2.0, 0.0};
+    s.reflected = glm::normalize(glm::dvec3(1.0, 0.2, 1.0));
+    s.eyeMeters = s.xMeters + glm::dvec3(-s.reflected.x, -s.reflected.y, s.reflected.z);
+    traceTrueHit(level, s);
+    const SurveySampleError a = blendedSampleError(level, probes, volumes, s, BlendOptions{});
+    const SurveySampleError b = blendedSampleError(level, model, s);
+    EXPECT_EQ(a.errorDeg, b.errorDeg) << "x = " << x;
+    EXPECT_EQ(a.uncoveredWeight, b.uncoveredWeight);
+  }
+}
+
+}  // namespace
+}  // namespace probeproxy
