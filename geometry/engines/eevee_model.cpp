@@ -14,12 +14,7 @@
 //   - probe_evaluate_cube(): the ray from the shading point is intersected with the parallax
 //     box (line_unit_box_intersect_dist) or sphere, and the lookup is hit - probe position.
 //
-// The preset a studio makes from the export, since EEVEE centres both volumes on the capture
-// point: influence box in the influence volume's axes, each half-extent the capture point's
-// larger distance to that axis' faces (so the scene's whole outer range is covered); falloff
-// = the scene's fade (engine_probes.h transitionDistanceMeters) over the shortest half-extent;
-// parallax box = the influence box scaled by the one factor that fits it best, in least
-// squares, to the capture point's distances to the faces of the box the other engines get.
+// The preset is the export's eevee_reflection_cubemap (engine_probes.h says how it is made).
 
 #include "geometry/engines/blend_composition.h"
 #include "geometry/engines/engine_model.h"
@@ -37,77 +32,20 @@ namespace probeproxy {
 
 namespace {
 
-constexpr double kSmallestFalloff = 1e-8;  // EEVEE_lightprobes_cube_data_from_object
-constexpr double kFull = 0.999;            // fallback_cubemap's loop and world test
+constexpr double kFull = 0.999;  // fallback_cubemap's loop and world test
 
-struct EeveeProbe {
-  glm::dvec3 positionMeters{0.0};
-  glm::dquat worldFromProbe{1, 0, 0, 0};
-  glm::dvec3 influenceHalfExtentsMeters{1.0};  // sphere: all three the radius
-  bool sphere = false;
-  double attenuation = 1.0;  // 1 / falloff
-};
-
-// The support of a box along a unit direction, from a point: how far its farthest face is.
-double reachAlong(const BoxShape& box, glm::dvec3 from, glm::dvec3 direction) {
-  double reach = glm::dot(box.centerMeters - from, direction);
-  for (int axis = 0; axis < 3; ++axis) {
-    glm::dvec3 boxAxis(0.0);
-    boxAxis[axis] = 1.0;
-    reach +=
-        box.halfExtentsMeters[axis] * std::abs(glm::dot(box.worldFromBox * boxAxis, direction));
-  }
-  return reach;
-}
-
-EeveeProbe eeveeProbe(const InfluenceVolume& influence, glm::dvec3 capture, double fade) {
-  EeveeProbe e;
-  e.positionMeters = capture;
-  if (const auto* box = std::get_if<BoxInfluence>(&influence)) {
-    e.worldFromProbe = box->worldFromBox;
-    const glm::dvec3 offset = glm::conjugate(box->worldFromBox) * (capture - box->centerMeters);
-    e.influenceHalfExtentsMeters = box->halfExtentsMeters + glm::abs(offset);
-  } else {
-    const auto& sphere = std::get<SphereInfluence>(influence);
-    e.sphere = true;
-    e.influenceHalfExtentsMeters =
-        glm::dvec3(sphere.radiusMeters + glm::length(capture - sphere.centerMeters));
-  }
-  const glm::dvec3 h = e.influenceHalfExtentsMeters;
-  const double falloff = std::clamp(fade / std::min({h.x, h.y, h.z}), kSmallestFalloff, 1.0);
-  e.attenuation = 1.0 / falloff;
-  return e;
-}
-
-// Parallax half-extents k * influence, k fitted to the capture point's mean distance to the
-// proxy box's faces along each of the probe's axes.
-BoxShape parallaxBox(const EeveeProbe& e, const BoxShape& proxy) {
-  double numerator = 0.0, denominator = 0.0;
-  for (int axis = 0; axis < 3; ++axis) {
-    glm::dvec3 unit(0.0);
-    unit[axis] = 1.0;
-    const glm::dvec3 direction = e.worldFromProbe * unit;
-    const double wanted = 0.5 * (reachAlong(proxy, e.positionMeters, direction) +
-                                 reachAlong(proxy, e.positionMeters, -direction));
-    numerator += e.influenceHalfExtentsMeters[axis] * wanted;
-    denominator += e.influenceHalfExtentsMeters[axis] * e.influenceHalfExtentsMeters[axis];
-  }
-  return {e.positionMeters, (numerator / denominator) * e.influenceHalfExtentsMeters,
-          e.worldFromProbe};
-}
-
-double attenuation(const EeveeProbe& e, glm::dvec3 x) {
-  const glm::dvec3 local =
-      glm::conjugate(e.worldFromProbe) * (x - e.positionMeters) / e.influenceHalfExtentsMeters;
-  if (e.sphere) return std::clamp(e.attenuation - e.attenuation * glm::length(local), 0.0, 1.0);
-  const glm::dvec3 axes = glm::clamp(e.attenuation - e.attenuation * glm::abs(local), 0.0, 1.0);
+double attenuation(const EeveeReflectionCubemap& e, glm::dvec3 x) {
+  const double a = 1.0 / e.falloff;
+  const glm::dvec3 local = glm::conjugate(e.rotation) * (x - e.location) / e.scale;
+  if (e.sphere) return std::clamp(a - a * glm::length(local), 0.0, 1.0);
+  const glm::dvec3 axes = glm::clamp(a - a * glm::abs(local), 0.0, 1.0);
   return std::min({axes.x, axes.y, axes.z});
 }
 
-// mat4_to_scale of the inverse influence matrix: |diag(1 / h) R^T (1, 1, 1) / sqrt(3)|.
-double inverseScale(const EeveeProbe& e) {
-  const glm::dvec3 u = glm::conjugate(e.worldFromProbe) * glm::dvec3(1.0 / std::sqrt(3.0));
-  return glm::length(u / e.influenceHalfExtentsMeters);
+// mat4_to_scale of the inverse influence matrix: |diag(1 / scale) R^T (1, 1, 1) / sqrt(3)|.
+double inverseScale(const EeveeReflectionCubemap& e) {
+  const glm::dvec3 u = glm::conjugate(e.rotation) * glm::dvec3(1.0 / std::sqrt(3.0));
+  return glm::length(u / e.scale);
 }
 
 }  // namespace
@@ -115,20 +53,18 @@ double inverseScale(const EeveeProbe& e) {
 EngineModel eeveeModel(const RuntimeExport& presets) {
   EngineModel model;
   model.engine = Engine::Eevee;
-  std::vector<EeveeProbe> held;
+  std::vector<EeveeReflectionCubemap> held;
   for (std::size_t i = 0; i < presets.probes.size(); ++i) {
-    const RuntimeProbe& probe = presets.probes[i];
-    if (!probe.engines.unrealBox) continue;
-    const PresetBox proxy = unrealPresetBox(*probe.engines.unrealBox);
-    const EeveeProbe e =
-        eeveeProbe(probe.influence, probe.captureMeters, transitionDistanceMeters(probe.influence));
+    const auto& preset = presets.probes[i].engines.eevee;
+    if (!preset) continue;
     EngineProbe p;
     p.sceneProbe = static_cast<int>(i);
-    p.captureMeters = e.positionMeters;
-    p.lookupOriginMeters = e.positionMeters;
-    p.projection = parallaxBox(e, proxy.box);
+    p.captureMeters = preset->location;
+    p.lookupOriginMeters = preset->location;
+    p.projection =
+        BoxShape{preset->location, preset->parallaxDistance * preset->scale, preset->rotation};
     model.probes.push_back(std::move(p));
-    held.push_back(e);
+    held.push_back(*preset);
   }
   std::vector<int> order(held.size());
   std::iota(order.begin(), order.end(), 0);

@@ -19,6 +19,33 @@ PresetBox unityPresetBox(const UnityReflectionProbe& preset) {
   out.captureMeters = worldPointFromFile(unity, preset.position);
   out.box.centerMeters = out.captureMeters + worldPointFromFile(unity, preset.center);
   out.box.halfExtentsMeters = worldHalfExtentsFromFile(unity, preset.size / 2.0);
+  out.fadeMeters = preset.blendDistance;
+  return out;
+}
+
+HdrpHeld unityHdrpHeld(const UnityHdrpReflectionProbe& preset) {
+  const FileFrame unity = unityFrame();
+  HdrpHeld out;
+  out.sphere = preset.sphere;
+  out.influenceBox.centerMeters = worldPointFromFile(unity, preset.position);
+  out.influenceBox.worldFromBox = worldRotationFromFile(unity, preset.rotation);
+  out.influenceBox.halfExtentsMeters = worldHalfExtentsFromFile(unity, preset.boxSize / 2.0);
+  // A box's own axes turn with the frame: Unity's own axis i is the world's own axis
+  // axis[i], reversed where sign[i] < 0, and then its + face is the world's - face.
+  for (int i = 0; i < 3; ++i) {
+    const int w = unity.axis[static_cast<std::size_t>(i)];
+    const bool kept = unity.sign[static_cast<std::size_t>(i)] > 0.0;
+    out.blendPositive[w] = worldLengthFromFile(
+        unity, kept ? preset.blendDistancePositive[i] : preset.blendDistanceNegative[i]);
+    out.blendNegative[w] = worldLengthFromFile(
+        unity, kept ? preset.blendDistanceNegative[i] : preset.blendDistancePositive[i]);
+  }
+  out.sphereRadiusMeters = worldLengthFromFile(unity, preset.sphereRadius);
+  out.sphereBlendMeters = worldLengthFromFile(unity, preset.blendDistancePositive.x);
+  out.proxy.centerMeters = worldPointFromFile(unity, preset.proxyPosition);
+  out.proxy.worldFromBox = worldRotationFromFile(unity, preset.proxyRotation);
+  out.proxy.halfExtentsMeters = worldHalfExtentsFromFile(unity, preset.proxySize / 2.0);
+  out.captureMeters = worldPointFromFile(unity, preset.capturePosition);
   return out;
 }
 

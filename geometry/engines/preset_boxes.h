@@ -17,8 +17,23 @@ struct PresetBox {
   double fadeMeters = 0.0;        // the preset's one fade distance (0 where it has none)
 };
 
-// Unity: box = [position + center -+ size / 2], axis-aligned; the capture point is position.
+// Unity: box = [position + center -+ size / 2], axis-aligned; the capture point is position;
+// fade = blendDistance (outside the box: Unity grows the box by it).
 PresetBox unityPresetBox(const UnityReflectionProbe& preset);
+
+// Unity HDRP: the influence (world frame; a box's blend distances per face of its own axes,
+// inward), the proxy box and the capture position.
+struct HdrpHeld {
+  bool sphere = false;
+  BoxShape influenceBox;          // box: centre, half-extents, rotation
+  glm::dvec3 blendPositive{0.0};  // per own axis, the + face's blend distance, metres
+  glm::dvec3 blendNegative{0.0};
+  double sphereRadiusMeters = 0.0;  // sphere: centre influenceBox.centerMeters
+  double sphereBlendMeters = 0.0;
+  BoxShape proxy;
+  glm::dvec3 captureMeters{0.0};
+};
+HdrpHeld unityHdrpHeld(const UnityHdrpReflectionProbe& preset);
 
 // Unreal: corners = location + rotation * (+-scale_3d) (cm); capture = location + capture_offset;
 // fade = box_transition_distance.

@@ -12,12 +12,8 @@
 // probes in order and each takes its alpha cut to what is left of 1; the sky takes the rest.
 // LightLoop.cs sorts environment lights by the log of their influence volume, smallest first.
 //
-// The preset a studio makes from the export: the influence volume as the scene has it (blend
-// distance on each face = outer - inner half-extent), the proxy volume the box the other box
-// engines get (unreal_box_reflection_capture: the kept proxy when it is a box, else the best
-// box candidate), the capture point the scene's.
+// The preset is the export's unity_hdrp_reflection_probe (engine_probes.h says how it is made).
 
-#include "core/scene/influence_volume.h"
 #include "geometry/engines/blend_composition.h"
 #include "geometry/engines/engine_model.h"
 #include "geometry/engines/preset_boxes.h"
@@ -27,6 +23,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace probeproxy {
@@ -35,23 +32,28 @@ namespace {
 
 constexpr double kSmallestBlendMeters = 0.0001;  // the shaders' max(0.0001, blend distance)
 
-double hdrpInfluenceWeight(const InfluenceVolume& influence, glm::dvec3 x) {
-  if (const auto* box = std::get_if<BoxInfluence>(&influence)) {
-    const glm::dvec3 p = glm::conjugate(box->worldFromBox) * (x - box->centerMeters);
-    const glm::dvec3 blend =
-        glm::max(box->halfExtentsMeters - box->innerHalfExtentsMeters, kSmallestBlendMeters);
-    const glm::dvec3 negative = (box->halfExtentsMeters + p) / blend;
-    const glm::dvec3 positive = (box->halfExtentsMeters - p) / blend;
-    const double falloff =
-        std::min({negative.x, negative.y, negative.z, positive.x, positive.y, positive.z});
-    return std::clamp(falloff, 0.0, 1.0);
+double hdrpInfluenceWeight(const HdrpHeld& h, glm::dvec3 x) {
+  if (h.sphere) {
+    const double blend = std::max(h.sphereBlendMeters, kSmallestBlendMeters);
+    const double beyond = std::max(
+        glm::length(x - h.influenceBox.centerMeters) - (h.sphereRadiusMeters - blend), 0.0);
+    return std::clamp(1.0 - beyond / blend, 0.0, 1.0);
   }
-  const auto& sphere = std::get<SphereInfluence>(influence);
-  const double blend =
-      std::max(sphere.radiusMeters - sphere.innerRadiusMeters, kSmallestBlendMeters);
-  const double beyond =
-      std::max(glm::length(x - sphere.centerMeters) - (sphere.radiusMeters - blend), 0.0);
-  return std::clamp(1.0 - beyond / blend, 0.0, 1.0);
+  const BoxShape& box = h.influenceBox;
+  const glm::dvec3 p = glm::conjugate(box.worldFromBox) * (x - box.centerMeters);
+  const glm::dvec3 negative =
+      (box.halfExtentsMeters + p) / glm::max(h.blendNegative, kSmallestBlendMeters);
+  const glm::dvec3 positive =
+      (box.halfExtentsMeters - p) / glm::max(h.blendPositive, kSmallestBlendMeters);
+  const double falloff =
+      std::min({negative.x, negative.y, negative.z, positive.x, positive.y, positive.z});
+  return std::clamp(falloff, 0.0, 1.0);
+}
+
+double influenceVolume(const HdrpHeld& h) {
+  if (h.sphere) return 4.0 / 3.0 * M_PI * std::pow(h.sphereRadiusMeters, 3.0);
+  const glm::dvec3 e = h.influenceBox.halfExtentsMeters;
+  return 8.0 * e.x * e.y * e.z;
 }
 
 }  // namespace
@@ -59,30 +61,29 @@ double hdrpInfluenceWeight(const InfluenceVolume& influence, glm::dvec3 x) {
 EngineModel unityHdrpModel(const RuntimeExport& presets) {
   EngineModel model;
   model.engine = Engine::UnityHdrp;
-  std::vector<InfluenceVolume> influences;
+  std::vector<HdrpHeld> held;
   for (std::size_t i = 0; i < presets.probes.size(); ++i) {
-    const RuntimeProbe& probe = presets.probes[i];
-    if (!probe.engines.unrealBox) continue;
-    const PresetBox proxy = unrealPresetBox(*probe.engines.unrealBox);
+    const auto& preset = presets.probes[i].engines.unityHdrp;
+    if (!preset) continue;
+    const HdrpHeld h = unityHdrpHeld(*preset);
     EngineProbe p;
     p.sceneProbe = static_cast<int>(i);
-    p.captureMeters = proxy.captureMeters;
-    p.lookupOriginMeters = proxy.captureMeters;
-    p.projection = proxy.box;
+    p.captureMeters = h.captureMeters;
+    p.lookupOriginMeters = h.captureMeters;
+    p.projection = h.proxy;
     model.probes.push_back(std::move(p));
-    influences.push_back(probe.influence);
+    held.push_back(h);
   }
-  std::vector<int> order(influences.size());
+  std::vector<int> order(held.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    return influenceCubicMeters(influences[static_cast<std::size_t>(a)]) <
-           influenceCubicMeters(influences[static_cast<std::size_t>(b)]);
+    return influenceVolume(held[static_cast<std::size_t>(a)]) <
+           influenceVolume(held[static_cast<std::size_t>(b)]);
   });
-  model.blend = [influences = std::move(influences), order = std::move(order)](glm::dvec3 x,
-                                                                               glm::dvec3) {
+  model.blend = [held = std::move(held), order = std::move(order)](glm::dvec3 x, glm::dvec3) {
     std::vector<ProbeFade> fades;
     for (const int i : order) {
-      const double fade = hdrpInfluenceWeight(influences[static_cast<std::size_t>(i)], x);
+      const double fade = hdrpInfluenceWeight(held[static_cast<std::size_t>(i)], x);
       if (fade > 0.0) fades.push_back({i, fade});
     }
     return fillToOne(fades);

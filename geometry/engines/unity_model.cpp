@@ -14,8 +14,8 @@
 //     there by its alpha. Unity's C++ side, which sorts them, is not public; we take the order
 //     the Manual describes for overlapping probes (a more important probe "overrides" a less
 //     important one) and, at equal importance, the smaller box drawn later, on top.
-// The export does not write blendDistance (the Manual does not say which side of the box it
-// fades on), so an imported probe keeps Unity's default, 1 m.
+// The export writes the measured box shrunk by blendDistance (engine_probes.h), so Unity
+// projects on the measured box; an export without blend_distance leaves Unity's default, 1 m.
 
 #include "geometry/engines/blend_composition.h"
 #include "geometry/engines/engine_model.h"
@@ -29,50 +29,44 @@
 
 namespace probeproxy {
 
-namespace {
-constexpr double kUnityDefaultBlendDistanceMeters = 1.0;  // ReflectionProbe.blendDistance
-}  // namespace
-
 EngineModel unityModel(const RuntimeExport& presets) {
   EngineModel model;
   model.engine = Engine::Unity;
-  std::vector<BoxShape> boxes;
-  const double blendDistance = kUnityDefaultBlendDistanceMeters;
+  std::vector<PresetBox> held;
   for (std::size_t i = 0; i < presets.probes.size(); ++i) {
     const auto& preset = presets.probes[i].engines.unity;
     if (!preset) continue;
-    const PresetBox held = unityPresetBox(*preset);
+    const PresetBox box = unityPresetBox(*preset);
     EngineProbe p;
     p.sceneProbe = static_cast<int>(i);
-    p.captureMeters = held.captureMeters;
-    p.lookupOriginMeters = held.captureMeters;
+    p.captureMeters = box.captureMeters;
+    p.lookupOriginMeters = box.captureMeters;
     if (preset->boxProjection) {
-      BoxShape grown = held.box;
-      grown.halfExtentsMeters += blendDistance;
+      BoxShape grown = box.box;
+      grown.halfExtentsMeters += box.fadeMeters;
       p.projection = grown;
     } else {
       p.projection = InfiniteShape{};
     }
     model.probes.push_back(std::move(p));
-    boxes.push_back(held.box);
+    held.push_back(box);
   }
   // Front to back: the smaller box first (drawn last, on top); ties in scene order.
-  std::vector<int> order(boxes.size());
+  std::vector<int> order(held.size());
   std::iota(order.begin(), order.end(), 0);
   const auto volume = [&](int i) {
-    const glm::dvec3 h = boxes[static_cast<std::size_t>(i)].halfExtentsMeters;
+    const glm::dvec3 h = held[static_cast<std::size_t>(i)].box.halfExtentsMeters;
     return h.x * h.y * h.z;
   };
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return volume(a) < volume(b); });
-  model.blend = [boxes = std::move(boxes), order = std::move(order), blendDistance](glm::dvec3 x,
-                                                                                    glm::dvec3) {
+  model.blend = [held = std::move(held), order = std::move(order)](glm::dvec3 x, glm::dvec3) {
     std::vector<ProbeFade> fades;
     for (const int i : order) {
-      const BoxShape& box = boxes[static_cast<std::size_t>(i)];
-      const glm::dvec3 low = box.centerMeters - box.halfExtentsMeters;
-      const glm::dvec3 high = box.centerMeters + box.halfExtentsMeters;
+      const PresetBox& h = held[static_cast<std::size_t>(i)];
+      const glm::dvec3 low = h.box.centerMeters - h.box.halfExtentsMeters;
+      const glm::dvec3 high = h.box.centerMeters + h.box.halfExtentsMeters;
       const glm::dvec3 outside = glm::max(glm::max(x - high, low - x), glm::dvec3(0.0));
-      const double fade = std::clamp(1.0 - glm::length(outside) / blendDistance, 0.0, 1.0);
+      const double fade = std::clamp(1.0 - glm::length(outside) / h.fadeMeters, 0.0, 1.0);
       if (fade > 0.0) fades.push_back({i, fade});
     }
     return frontToBack(fades);

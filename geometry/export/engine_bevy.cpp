@@ -11,8 +11,8 @@
 namespace probeproxy {
 
 namespace {
-constexpr double kSamePointMeters = 1e-6;  // capture point "at" the box centre
-constexpr double kSameLength = 1e-9;       // relative: a cube, not a box
+constexpr double kSamePointMeters = 1e-6;    // capture point "at" the box centre
+constexpr double kSameLength = 1e-9;         // relative: a cube, not a box
 constexpr double kIdentityRotation = 1e-12;  // |w| this close to 1: not turned
 }  // namespace
 

@@ -55,15 +55,45 @@ struct EngineSource {
 // worldPos - cubemapCenter + nrdir * t, cubemapCenter being the probe's position: the capture
 // point. So: world box = [position + center -+ size / 2], axis-aligned in Unity's world; only an
 // `aabb` candidate is exported. The box is both the influence and the projection volume.
-// blendDistance (ScriptReference: "Distance around probe used for blending (used in deferred
-// probes)", default 1) is not exported: Unity does not document on which side of the box it
-// fades.
+// blendDistance ("Distance around probe used for blending (used in deferred probes)", default
+// 1): Internal-DeferredReflections.shader fades each probe *outside* its box over that distance
+// and projects on the box grown by it. So the export writes the measured box shrunk by
+// blendDistance on every side: Unity projects on exactly the measured box and fades to 0 at its
+// faces. blendDistance = transitionDistanceMeters(influence), at least kUnityMinBlendMeters
+// (Unity divides by it) and at most half the box's shortest half-extent.
 struct UnityReflectionProbe {
   EngineSource source;
-  glm::dvec3 position{0.0};  // Transform.position: the capture point, metres
-  glm::dvec3 center{0.0};    // ReflectionProbe.center: box centre - position, metres
-  glm::dvec3 size{0.0};      // ReflectionProbe.size: full size (2 x half-extents), metres
+  glm::dvec3 position{0.0};    // Transform.position: the capture point, metres
+  glm::dvec3 center{0.0};      // ReflectionProbe.center: box centre - position, metres
+  glm::dvec3 size{0.0};        // ReflectionProbe.size: full size of the shrunk box, metres
+  double blendDistance = 1.0;  // ReflectionProbe.blendDistance, metres
   bool boxProjection = true;
+};
+
+inline constexpr double kUnityMinBlendMeters = 0.01;
+
+// Unity HDRP Reflection Probe (HDProbe: influence volume, proxy volume and capture position
+// apart; Manual "Reflection Probe", HDRP). Unity's axes (as UnityReflectionProbe), metres.
+// The influence is a box (influence.boxSize, full size, and per-face blend distances
+// boxBlendDistancePositive / Negative, measured inward from each face:
+// VolumeProjection.hlsl InfluenceBoxWeight) or a sphere (sphereRadius, sphereBlendDistance),
+// centred on the probe's Transform; the proxy a ReflectionProxyVolume box with its own
+// transform; the cubemap is captured at capturePosition (world). Made from the scene's
+// influence volume (blend on each face = outer - inner half-extent; Unity's x is the world's
+// -x, so the positive and negative faces of x swap) and the box the other box engines get.
+struct UnityHdrpReflectionProbe {
+  EngineSource source;
+  glm::dvec3 position{0.0};               // Transform.position: the influence's centre
+  glm::dquat rotation{1, 0, 0, 0};        // Transform.rotation, Unity axes
+  bool sphere = false;                    // influence shape: box, or sphere
+  glm::dvec3 boxSize{0.0};                // influence.boxSize, full size (box)
+  glm::dvec3 blendDistancePositive{0.0};  // per face, inward (box); sphere: x is the blend
+  glm::dvec3 blendDistanceNegative{0.0};
+  double sphereRadius = 0.0;        // influence.sphereRadius (sphere)
+  glm::dvec3 capturePosition{0.0};  // where the cubemap is captured, Unity world
+  glm::dvec3 proxyPosition{0.0};    // ReflectionProxyVolume's Transform.position: box centre
+  glm::dquat proxyRotation{1, 0, 0, 0};
+  glm::dvec3 proxySize{0.0};  // ReflectionProxyVolume box size, full
 };
 
 // Unreal BoxReflectionCapture (UBoxReflectionCaptureComponent). Engine/Shaders/Private/
@@ -142,19 +172,48 @@ struct BevyLightProbe {
   bool exact = true;
 };
 
+// Blender 3.x EEVEE Reflection Cubemap light probe (eevee_lightprobes.c,
+// EEVEE_lightprobes_cube_data_from_object): Blender's axes are the world's (Z up, metres). The
+// object's location is the capture point and the centre of both volumes; the influence is the
+// object's transform scaled by influence_distance (1 here, so Object.scale holds the influence's
+// half-extents, or its radius for an ellipsoid), fading over `falloff` of the way to each face
+// (along Z too); the custom parallax volume is the same transform scaled by parallax_distance:
+// a uniformly scaled copy. Made from the scene's influence volume (covered whole from the
+// capture point: each half-extent the capture point's larger distance to that axis' faces),
+// its fade (transitionDistanceMeters over the shortest half-extent) and the box the other box
+// engines get (parallax_distance fitted in least squares to the capture point's mean distance
+// to that box's faces along each axis).
+struct EeveeReflectionCubemap {
+  EngineSource source;
+  glm::dvec3 location{0.0};         // Object.location: the capture point, metres
+  glm::dquat rotation{1, 0, 0, 0};  // Object.rotation_quaternion
+  glm::dvec3 scale{1.0};            // Object.scale: the influence's half-extents (radius x3)
+  bool sphere = false;              // LightProbe.influence_type: 'BOX' or 'ELIPSOID'
+  double falloff = 1.0;             // LightProbe.falloff, in (0, 1]
+  double parallaxDistance = 1.0;    // LightProbe.parallax_distance (use_custom_parallax,
+                                    // parallax_type 'BOX')
+};
+
 // Which shape each engine gets (make_runtime_export.cpp, enginesFor): the kept proxy when it is
 // a box (keptBox); Unity only when that box is also axis-aligned. Otherwise, as before, the
 // candidate of the kind the engine takes with the lowest p95. Empty where there is none.
 struct RuntimeEngines {
   std::optional<UnityReflectionProbe> unity;                  // kept box if aabb, else best `aabb`
+  std::optional<UnityHdrpReflectionProbe> unityHdrp;          // proxy: the box Unreal gets
   std::optional<UnrealBoxReflectionCapture> unrealBox;        // kept box, else best `aabb`/`obb`
   std::optional<UnrealSphereReflectionCapture> unrealSphere;  // best true sphere
   std::optional<GodotReflectionProbe> godot;                  // kept box, else best `aabb`/`obb`
   std::optional<BevyLightProbe> bevy;                         // kept box, else best `aabb`/`obb`
+  std::optional<EeveeReflectionCubemap> eevee;                // parallax fitted to that box
 };
 
 // One small free function per engine (engine_<name>.cpp). World frame in, engine frame out.
-UnityReflectionProbe unityReflectionProbe(const BoxShape& aabb, glm::dvec3 captureMeters);
+UnityReflectionProbe unityReflectionProbe(const BoxShape& aabb, glm::dvec3 captureMeters,
+                                          const InfluenceVolume& influence);
+UnityHdrpReflectionProbe unityHdrpReflectionProbe(const BoxShape& proxy, glm::dvec3 captureMeters,
+                                                  const InfluenceVolume& influence);
+EeveeReflectionCubemap eeveeReflectionCubemap(const BoxShape& proxy, glm::dvec3 captureMeters,
+                                              const InfluenceVolume& influence);
 UnrealBoxReflectionCapture unrealBoxReflectionCapture(const BoxShape& box, glm::dvec3 captureMeters,
                                                       const InfluenceVolume& influence);
 UnrealSphereReflectionCapture unrealSphereReflectionCapture(const SphereShape& sphere,

@@ -101,10 +101,11 @@ RuntimeEngines enginesFor(const ProbeProxyBuild& build, const Probe& probe) {
   const std::optional<BoxShape> keptAsBox = keptBox(kept.shape);
 
   if (keptAsBox && isAabb(*keptAsBox)) {
-    engines.unity = unityReflectionProbe(*keptAsBox, probe.captureMeters);
+    engines.unity = unityReflectionProbe(*keptAsBox, probe.captureMeters, probe.influence);
     engines.unity->source = sourceOf(kept, true);
   } else if (const auto i = bestCandidate(cs, isAabb)) {
-    engines.unity = unityReflectionProbe(std::get<BoxShape>(cs[*i].shape), probe.captureMeters);
+    engines.unity = unityReflectionProbe(std::get<BoxShape>(cs[*i].shape), probe.captureMeters,
+                                         probe.influence);
     engines.unity->source = sourceOf(cs[*i], *i == build.kept);
   }
 
@@ -124,6 +125,10 @@ RuntimeEngines enginesFor(const ProbeProxyBuild& build, const Probe& probe) {
     engines.godot->source = source;
     engines.bevy = bevyLightProbe(*box, probe.captureMeters, probe.influence);
     engines.bevy->source = source;
+    engines.unityHdrp = unityHdrpReflectionProbe(*box, probe.captureMeters, probe.influence);
+    engines.unityHdrp->source = source;
+    engines.eevee = eeveeReflectionCubemap(*box, probe.captureMeters, probe.influence);
+    engines.eevee->source = source;
   }
   if (const auto i = bestCandidate(cs, isTrueSphere)) {
     engines.unrealSphere =

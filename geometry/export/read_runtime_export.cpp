@@ -43,7 +43,9 @@ double finiteNumber(const At& at) { return probeproxy::finiteNumber(at.value, at
 double positiveNumber(const At& at) { return probeproxy::positiveNumber(at.value, at.path); }
 glm::dvec3 vec3(const At& at) { return finiteVec3(at.value, at.path); }
 glm::dvec3 positiveVec3(const At& at) { return probeproxy::positiveVec3(at.value, at.path); }
-glm::dquat unitQuaternionWxyz(const At& at) { return probeproxy::unitQuaternionWxyz(at.value, at.path); }
+glm::dquat unitQuaternionWxyz(const At& at) {
+  return probeproxy::unitQuaternionWxyz(at.value, at.path);
+}
 glm::dquat quaternionXyzw(const At& at) { return unitQuaternionXyzw(at.value, at.path); }
 
 double numberOrNull(const At& at) {  // null: not measured
@@ -194,8 +196,8 @@ class Reader {
         const auto index = t.value[static_cast<std::size_t>(k)].get<std::uint64_t>();
         if (index >= convex.verticesMeters.size()) {
           failJsonExpected(t.path,
-                       "vertex indices below " + std::to_string(convex.verticesMeters.size()),
-                       t.value);
+                           "vertex indices below " + std::to_string(convex.verticesMeters.size()),
+                           t.value);
         }
         tri[k] = static_cast<unsigned>(index);
       }
@@ -249,9 +251,35 @@ RuntimeEngines engines(const At& at) {
     p.position = vec3(u.member("position"));
     p.center = vec3(u.member("center"));
     p.size = vec3(u.member("size"));
+    // Exports before blend_distance was written leave Unity its default.
+    if (u.has("blend_distance")) p.blendDistance = positiveNumber(u.member("blend_distance"));
     p.boxProjection = boolean(u.member("box_projection"));
     return p;
   });
+  // Entries later exports added: absent reads as none.
+  if (at.has("unity_hdrp_reflection_probe")) {
+    e.unityHdrp = optionalEngine<UnityHdrpReflectionProbe>(
+        at, "unity_hdrp_reflection_probe", [](const At& u) {
+          UnityHdrpReflectionProbe p;
+          p.position = vec3(u.member("position"));
+          p.rotation = quaternionXyzw(u.member("rotation_xyzw"));
+          p.sphere = oneOf(u.member("influence_shape"), {"box", "sphere"}) == "sphere";
+          if (p.sphere) {
+            p.sphereRadius = positiveNumber(u.member("sphere_radius"));
+            p.blendDistancePositive = p.blendDistanceNegative =
+                glm::dvec3(finiteNumber(u.member("sphere_blend_distance")));
+          } else {
+            p.boxSize = positiveVec3(u.member("box_size"));
+            p.blendDistancePositive = vec3(u.member("box_blend_distance_positive"));
+            p.blendDistanceNegative = vec3(u.member("box_blend_distance_negative"));
+          }
+          p.capturePosition = vec3(u.member("capture_position"));
+          p.proxyPosition = vec3(u.member("proxy_position"));
+          p.proxyRotation = quaternionXyzw(u.member("proxy_rotation_xyzw"));
+          p.proxySize = positiveVec3(u.member("proxy_size"));
+          return p;
+        });
+  }
   e.unrealBox = optionalEngine<UnrealBoxReflectionCapture>(
       at, "unreal_box_reflection_capture", [](const At& u) {
         UnrealBoxReflectionCapture p;
@@ -292,6 +320,23 @@ RuntimeEngines engines(const At& at) {
     p.exact = boolean(b.member("exact"));
     return p;
   });
+  if (at.has("eevee_reflection_cubemap")) {
+    e.eevee =
+        optionalEngine<EeveeReflectionCubemap>(at, "eevee_reflection_cubemap", [](const At& b) {
+          EeveeReflectionCubemap p;
+          p.location = vec3(b.member("location"));
+          p.rotation = quaternionXyzw(b.member("rotation_xyzw"));
+          p.scale = positiveVec3(b.member("scale"));
+          p.sphere = oneOf(b.member("influence_type"), {"BOX", "ELIPSOID"}) == "ELIPSOID";
+          oneOf(b.member("parallax_type"), {"BOX"});
+          if (positiveNumber(b.member("influence_distance")) != 1.0)
+            failJson(b.member("influence_distance").path,
+                     "expected 1 (Object.scale holds the size)");
+          p.falloff = positiveNumber(b.member("falloff"));
+          p.parallaxDistance = positiveNumber(b.member("parallax_distance"));
+          return p;
+        });
+  }
   return e;
 }
 
@@ -340,7 +385,6 @@ RuntimeExport runtimeFromDocument(const Json& root) {
   }
   return runtime;
 }
-
 
 }  // namespace
 

@@ -63,7 +63,14 @@
 //                                        // "kept_proxy" and "error" of the candidate it was made
 //                                        // from: kept_proxy true when it is the kept proxy
 //                                        // (a box, or a convex within 1 um of one, kept_box.h)
-//       "unity_reflection_probe": { .., "position", "center", "size", "box_projection" },
+//       "unity_reflection_probe": { .., "position", "center", "size", "blend_distance",
+//                                   "box_projection" },
+//       "unity_hdrp_reflection_probe": { .., "position", "rotation_xyzw", "influence_shape",
+//                                        "box_size", "box_blend_distance_positive",
+//                                        "box_blend_distance_negative" (box) or
+//                                        "sphere_radius", "sphere_blend_distance" (sphere),
+//                                        "capture_position", "proxy_position",
+//                                        "proxy_rotation_xyzw", "proxy_size" },
 //       "unreal_box_reflection_capture": { .., "location", "rotation_xyzw", "scale_3d",
 //                                          "capture_offset", "box_transition_distance" },
 //       "unreal_sphere_reflection_capture": { .., "location", "influence_radius",
@@ -71,14 +78,21 @@
 //       "godot_reflection_probe": { .., "origin", "rotation_xyzw", "size", "origin_offset",
 //                                   "blend_distance", "box_projection", "exact" },
 //       "bevy_light_probe": { .., "translation", "rotation_xyzw", "scale", "falloff",
-//                             "parallax_correction": "auto", "capture_at_centre", "exact" }
+//                             "parallax_correction": "auto", "capture_at_centre", "exact" },
+//       "eevee_reflection_cubemap": { .., "location", "rotation_xyzw", "scale",
+//                                     "influence_type", "influence_distance": 1, "falloff",
+//                                     "use_custom_parallax": true, "parallax_type": "BOX",
+//                                     "parallax_distance" }
 //     }
 //   } ]
 // }
 //
 // The box engines get the kept proxy when it is a box (Unity: an axis-aligned one); otherwise
-// Unity the best `aabb` candidate (lowest p95), the other box engines the best `aabb` or `obb`;
-// Unreal's sphere capture the best `sphere` candidate with equal radii.
+// Unity the best `aabb` candidate (lowest p95), the other box engines the best `aabb` or `obb`
+// (HDRP as its proxy volume, EEVEE to fit its parallax volume to); Unreal's sphere capture the
+// best `sphere` candidate with equal radii. Unity's size is that box shrunk by blend_distance
+// (Unity projects on the box grown by it). A reader takes an export without the HDRP and EEVEE
+// entries or Unity's blend_distance (earlier exports) as none and Unity's default 1 m.
 // box_transition_distance (cm) and blend_distance (m): transitionDistanceMeters (engine_probes.h),
 // the smallest fade of the influence over the axes that fade; Bevy's falloff is that distance
 // over each half-size (clamped to [0, 1]). Numbers in the

@@ -169,8 +169,30 @@ JsonLayoutValue enginesJson(const RuntimeEngines& e) {
                                         return {{"position", engineVec3(p.position)},
                                                 {"center", engineVec3(p.center)},
                                                 {"size", engineVec3(p.size)},
+                                                {"blend_distance", jsonCoordinate(p.blendDistance)},
                                                 {"box_projection", boolJson(p.boxProjection)}};
                                       })},
+       {"unity_hdrp_reflection_probe",
+        optionalEngine<UnityHdrpReflectionProbe>(
+            e.unityHdrp,
+            [](const UnityHdrpReflectionProbe& p) -> Members {
+              Members m = {{"position", engineVec3(p.position)},
+                           {"rotation_xyzw", engineQuat(p.rotation)},
+                           {"influence_shape", jsonString(p.sphere ? "sphere" : "box")}};
+              if (p.sphere) {
+                m.push_back({"sphere_radius", jsonCoordinate(p.sphereRadius)});
+                m.push_back({"sphere_blend_distance", jsonCoordinate(p.blendDistancePositive.x)});
+              } else {
+                m.push_back({"box_size", engineVec3(p.boxSize)});
+                m.push_back({"box_blend_distance_positive", engineVec3(p.blendDistancePositive)});
+                m.push_back({"box_blend_distance_negative", engineVec3(p.blendDistanceNegative)});
+              }
+              m.push_back({"capture_position", engineVec3(p.capturePosition)});
+              m.push_back({"proxy_position", engineVec3(p.proxyPosition)});
+              m.push_back({"proxy_rotation_xyzw", engineQuat(p.proxyRotation)});
+              m.push_back({"proxy_size", engineVec3(p.proxySize)});
+              return m;
+            })},
        {"unreal_box_reflection_capture",
         optionalEngine<UnrealBoxReflectionCapture>(
             e.unrealBox,
@@ -208,10 +230,23 @@ JsonLayoutValue enginesJson(const RuntimeEngines& e) {
                                                  {"scale", engineVec3(p.scale)},
                                                  {"falloff", engineVec3(p.falloff)},
                                                  {"parallax_correction", jsonString("auto")},
-                                                 {"capture_at_centre",
-                                                  boolJson(p.captureAtCentre)},
+                                                 {"capture_at_centre", boolJson(p.captureAtCentre)},
                                                  {"exact", boolJson(p.exact)}};
-                                       })}},
+                                       })},
+       {"eevee_reflection_cubemap",
+        optionalEngine<EeveeReflectionCubemap>(
+            e.eevee,
+            [](const EeveeReflectionCubemap& p) -> Members {
+              return {{"location", engineVec3(p.location)},
+                      {"rotation_xyzw", engineQuat(p.rotation)},
+                      {"scale", engineVec3(p.scale)},
+                      {"influence_type", jsonString(p.sphere ? "ELIPSOID" : "BOX")},
+                      {"influence_distance", jsonCoordinate(1.0)},
+                      {"falloff", jsonCoordinate(p.falloff)},
+                      {"use_custom_parallax", boolJson(true)},
+                      {"parallax_type", jsonString("BOX")},
+                      {"parallax_distance", jsonCoordinate(p.parallaxDistance)}};
+            })}},
       /*oneItemPerLine=*/true);
 }
 

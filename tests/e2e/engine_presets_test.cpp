@@ -74,7 +74,9 @@ Exported exportLevel(const Level& level, const std::string& engine) {
   return e;
 }
 
-glm::dvec3 vec3(const nlohmann::json& v) { return {v[0].get<double>(), v[1].get<double>(), v[2].get<double>()}; }
+glm::dvec3 vec3(const nlohmann::json& v) {
+  return {v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
+}
 
 // [x, y, z, w], as every engine entry writes it.
 glm::dquat quatXyzw(const nlohmann::json& v) {
@@ -159,11 +161,12 @@ struct Worst {
 
 class EnginePreset : public ::testing::TestWithParam<Level> {};
 
-// Unity: left-handed, Y up, metres; Unity (u, v, w) is world (-u, -w, v). The box is
-// [position + center -+ size / 2], axis-aligned in Unity's world (UnityStandardUtils.cginc,
-// BoxProjectedCubemapDirection: boxMin / boxMax in world space); the lookup is made from
+// Unity: left-handed, Y up, metres; Unity (u, v, w) is world (-u, -w, v). The box projected
+// on is [position + center -+ (size / 2 + blend_distance)], axis-aligned in Unity's world
+// (UnityStandardUtils.cginc, BoxProjectedCubemapDirection: boxMin / boxMax in world space;
+// Internal-DeferredReflections.shader grows them by the blend distance); the lookup is made from
 // `position` (cubemapCenter), which must be the capture point.
-TEST_P(EnginePreset, UnityBoxIsPositionPlusCenterWithFullSize) {
+TEST_P(EnginePreset, UnityBoxIsPositionPlusCenterWithFullSizeGrownByTheBlendDistance) {
   const Exported e = exportLevel(GetParam(), "unity");
   const auto world = [](glm::dvec3 u) { return glm::dvec3(-u.x, -u.z, u.y); };
   Worst worst;
@@ -173,15 +176,15 @@ TEST_P(EnginePreset, UnityBoxIsPositionPlusCenterWithFullSize) {
     ++worst.entries;
     const glm::dvec3 position = vec3(entry["position"]);
     const glm::dvec3 center = vec3(entry["center"]);
-    const glm::dvec3 half = vec3(entry["size"]) / 2.0;
+    const glm::dvec3 half = vec3(entry["size"]) / 2.0 + entry["blend_distance"].get<double>();
     std::vector<glm::dvec3> unity;
     for (const glm::dvec3& c : corners(position + center, glm::dquat(1, 0, 0, 0), half))
       unity.push_back(world(c));
     const BoxShape box = sourceBox(e.builds[i], entry);
     EXPECT_LT(std::abs(std::abs(box.worldFromBox.w) - 1.0), 1e-12) << "Unity got a turned box";
     worst.corners = std::max(worst.corners, cornerDistance(unity, worldCorners(box)));
-    worst.capture = std::max(worst.capture,
-                             glm::distance(world(position), e.scene.probes[i].captureMeters));
+    worst.capture =
+        std::max(worst.capture, glm::distance(world(position), e.scene.probes[i].captureMeters));
     EXPECT_TRUE(entry["box_projection"].get<bool>());
   }
   EXPECT_LE(worst.corners, kToleranceMeters);
@@ -209,12 +212,14 @@ TEST_P(EnginePreset, UnrealBoxIsTheUnitBoxUnderScale3DInCentimetres) {
       std::vector<glm::dvec3> unreal;
       for (const glm::dvec3& c : corners(location, rotation, vec3(entry["scale_3d"])))
         unreal.push_back(world(c));
-      worst.corners =
-          std::max(worst.corners, cornerDistance(unreal, worldCorners(sourceBox(e.builds[i], entry))));
+      worst.corners = std::max(worst.corners,
+                               cornerDistance(unreal, worldCorners(sourceBox(e.builds[i], entry))));
       const glm::dvec3 capture = world(location + vec3(entry["capture_offset"]));
-      worst.capture = std::max(worst.capture, glm::distance(capture, e.scene.probes[i].captureMeters));
-      worst.fade = std::max(worst.fade, std::abs(entry["box_transition_distance"].get<double>() / 100.0 -
-                                                 influenceFadeMeters(e.scene.probes[i].influence)));
+      worst.capture =
+          std::max(worst.capture, glm::distance(capture, e.scene.probes[i].captureMeters));
+      worst.fade =
+          std::max(worst.fade, std::abs(entry["box_transition_distance"].get<double>() / 100.0 -
+                                        influenceFadeMeters(e.scene.probes[i].influence)));
     }
     const nlohmann::json& sphere = engines["unreal_sphere_reflection_capture"];
     if (!sphere.is_null()) {
@@ -270,7 +275,8 @@ TEST_P(EnginePreset, GodotBoxIsCentredOnTheNodeWithOriginOffsetInItsFrame) {
     EXPECT_EQ(entry["exact"].get<bool>(), !moved) << e.builds[i].probe;
     if (!moved) {
       const glm::dvec3 capture = world(origin + basis * offset);
-      worst.capture = std::max(worst.capture, glm::distance(capture, e.scene.probes[i].captureMeters));
+      worst.capture =
+          std::max(worst.capture, glm::distance(capture, e.scene.probes[i].captureMeters));
     }
     worst.fade = std::max(worst.fade, std::abs(entry["blend_distance"].get<double>() -
                                                influenceFadeMeters(e.scene.probes[i].influence)));
@@ -320,7 +326,8 @@ TEST_P(EnginePreset, BevyBoxIsTheUnitCubeUnderItsTransform) {
     const glm::dquat rotation = quatXyzw(entry["rotation_xyzw"]);
     const glm::dvec3 scale = vec3(entry["scale"]);
     std::vector<glm::dvec3> bevy;
-    for (const glm::dvec3& c : corners(translation, rotation, scale / 2.0)) bevy.push_back(world(c));
+    for (const glm::dvec3& c : corners(translation, rotation, scale / 2.0))
+      bevy.push_back(world(c));
     worst.corners =
         std::max(worst.corners, cornerDistance(bevy, worldCorners(sourceBox(e.builds[i], entry))));
     const double fade = influenceFadeMeters(e.scene.probes[i].influence);
@@ -345,7 +352,8 @@ TEST_P(EnginePreset, BevyBoxIsTheUnitCubeUnderItsTransform) {
       const glm::dvec3 hit = glm::dvec3(worldFromLight * glm::dvec4(hitLocal, 1.0));
       const glm::dvec3 ideal = glm::normalize(hit - bevyAxes(capture));
       const glm::dvec3 sampled = glm::normalize(hitLocal);
-      worstDeg = std::max(worstDeg, glm::degrees(std::acos(std::clamp(glm::dot(ideal, sampled), -1.0, 1.0))));
+      worstDeg = std::max(worstDeg,
+                          glm::degrees(std::acos(std::clamp(glm::dot(ideal, sampled), -1.0, 1.0))));
     }
     worstLookupDeg = std::max(worstLookupDeg, worstDeg);
     if (entry["exact"].get<bool>()) {

@@ -41,10 +41,12 @@ RuntimeProbe probeWithPresets(const std::string& name, const BoxShape& box, glm:
   p.method = Method::Aabb;
   p.box = box;
   p.influence = influence;
-  p.engines.unity = unityReflectionProbe(box, capture);
+  p.engines.unity = unityReflectionProbe(box, capture, influence);
+  p.engines.unityHdrp = unityHdrpReflectionProbe(box, capture, influence);
   p.engines.unrealBox = unrealBoxReflectionCapture(box, capture, influence);
   p.engines.godot = godotReflectionProbe(box, capture, influence);
   p.engines.bevy = bevyLightProbe(box, capture, influence);
+  p.engines.eevee = eeveeReflectionCubemap(box, capture, influence);
   return p;
 }
 
@@ -116,31 +118,36 @@ TEST(EngineNames, EveryNameRoundTripsAndAnUnknownOneIsRefusedWithTheList) {
   }
 }
 
-TEST(UnityModel, FadesOutsideTheBoxOverTheDefaultBlendDistanceSmallerBoxOnTop) {
-  const EngineModel model = unityModel(oneProbe(kBox));
+TEST(UnityModel, TheExportedBoxFadesOutToTheMeasuredBoxSmallerBoxOnTop) {
+  // blendDistance = the 1 m fade, at most half the shortest half-extent (1.5 m): 0.75 m; the
+  // exported box is [0, 4]^2 x [0, 3] shrunk by it.
+  const RuntimeExport presets = oneProbe(kBox);
+  ASSERT_EQ(presets.probes[0].engines.unity->blendDistance, 0.75);
+  const EngineModel model = unityModel(presets);
   EXPECT_EQ(weightsOf(model.blend({2, 2, 1}, kEye)), (std::map<int, double>{{0, 1.0}}));
-  // Internal-DeferredReflections: falloff = saturate(1 - |distance to the box| / 1 m).
-  const EngineBlend half = model.blend({4.5, 2, 1}, kEye);
+  // Internal-DeferredReflections: falloff = saturate(1 - |distance to the box| / 0.75 m).
+  const EngineBlend half = model.blend({3.625, 2, 1.5}, kEye);
   EXPECT_NEAR(weightsOf(half)[0], 0.5, 1e-12);
   EXPECT_NEAR(half.fallbackWeight, 0.5, 1e-12);
-  // A small box inside the large one is drawn later, over it: inside it, it alone; 0.25 m
-  // outside it, 0.75 of it over 0.25 of the large one.
+  EXPECT_EQ(model.blend({4.0, 2, 1.5}, kEye).fallbackWeight, 1.0);  // the measured box's face
+  // A small box inside the large one is drawn later, over it (its blendDistance 0.25 m): inside
+  // it, it alone; 0.125 m outside it, half of it over half of the large one.
   const BoxShape small{{1.5, 1.5, 1.5}, {0.5, 0.5, 1.5}, kUnturned};
   const EngineModel nested = unityModel(
       exportOf({probeWithPresets("large", kBox, kBox.centerMeters, fadingInside(kBox)),
                 probeWithPresets("small", small, small.centerMeters, fadingInside(small))}));
   EXPECT_EQ(weightsOf(nested.blend({1.5, 1.5, 1}, kEye)), (std::map<int, double>{{1, 1.0}}));
-  const std::map<int, double> seam = weightsOf(nested.blend({2.25, 1.5, 1}, kEye));
-  EXPECT_NEAR(seam.at(1), 0.75, 1e-12);
-  EXPECT_NEAR(seam.at(0), 0.25, 1e-12);
+  const std::map<int, double> seam = weightsOf(nested.blend({1.875, 1.5, 1}, kEye));
+  EXPECT_NEAR(seam.at(1), 0.5, 1e-12);
+  EXPECT_NEAR(seam.at(0), 0.5, 1e-12);
 }
 
-TEST(UnityModel, ProjectsOnTheBoxGrownByTheBlendDistance) {
+TEST(UnityModel, ProjectsOnTheExportedBoxGrownByTheBlendDistanceTheMeasuredBox) {
   const EngineModel model = unityModel(oneProbe(kBox));
-  // From (2, 2, 1) along +x the grown box's face is x = 5: lookup (5, 2, 1) - (2, 2, 1.5).
+  // From (2, 2, 1) along +x the grown box's face is x = 4: lookup (4, 2, 1) - (2, 2, 1.5).
   const std::optional<glm::dvec3> d = engineLookup(model.probes[0], {2, 2, 1}, {1, 0, 0});
   ASSERT_TRUE(d);
-  EXPECT_NEAR(glm::distance(*d, glm::dvec3(3.0, 0.0, -0.5)), 0.0, 1e-12);
+  EXPECT_NEAR(glm::distance(*d, glm::dvec3(2.0, 0.0, -0.5)), 0.0, 1e-12);
 }
 
 TEST(UnityHdrpModel, FadesLinearlyInsideEachFaceAndSmallerInfluenceFillsFirst) {
@@ -277,8 +284,8 @@ TEST(EeveeModel, AttenuationAlongEveryAxisFloorIncludedSmallestFirstWorldFills) 
 
 // A 10 x 4 x 3 m room whose probe's box is the room, captured at its centre: every engine that
 // projects on the room itself looks up the true hit, so the blended error is 0 wherever a probe
-// weighs; Unity projects on the room grown by its 1 m blend distance and Bevy on a stretched
-// cube, so they are off. The mirror is 1 m over the floor, inside every engine's fade.
+// weighs; Bevy looks up in a stretched cube, so it is off. The mirror is 1 m over the floor,
+// inside every engine's fade.
 TEST(EngineModels, AnExactBoxRoomIsExactWhereTheEngineProjectsOnTheRoom) {
   const BoxShape room{{5.0, 2.0, 1.5}, {5.0, 2.0, 1.5}, kUnturned};
   const LevelRayCaster level(boxRoom({0, 0, 0}, {10, 4, 3}));
@@ -291,30 +298,29 @@ TEST(EngineModels, AnExactBoxRoomIsExactWhereTheEngineProjectsOnTheRoom) {
   const glm::dvec3 c = room.centerMeters;
   const glm::dvec3 toHit = s.trueHitMeters - c;
   ASSERT_NEAR(s.trueHitMeters.x, 10.0, 1e-6);
-  // Unity: the x = 11 face of the grown box. Bevy: the hit over the box's full size per axis.
-  const glm::dvec3 unityHit = s.xMeters + (11.0 - s.xMeters.x) / s.reflected.x * s.reflected;
-  const double unity = angleBetweenDeg(unityHit - c, toHit);
+  // Bevy: the hit over the box's full size per axis.
   const double bevy = angleBetweenDeg(toHit / (2.0 * room.halfExtentsMeters), toHit);
   EXPECT_GT(bevy, 10.0);
   for (const Engine e : kEngines) {
     SCOPED_TRACE(std::string(engineName(e)));
     const SurveySampleError err =
         blendedSampleError(level, engineModel(e, presets, BlendOptions{}), s);
-    const double expected = e == Engine::Unity ? unity : e == Engine::Bevy ? bevy : 0.0;
+    const double expected = e == Engine::Bevy ? bevy : 0.0;
     EXPECT_NEAR(err.errorDeg, expected, 1e-5);
   }
 }
 
 // The same room's floor lies on the probe box's bottom face. Engines that fade inside the box
-// (HDRP, Godot 3's curve, Godot 4's blend distance, Bevy's falloff, EEVEE's attenuation) give
-// it no probe at all: the sky shows. Unreal's transition leaves 0.198 on the face, Unity fades
-// outside the box, and the generic model takes its weights 5 cm over the floor.
+// (HDRP, Godot 3's curve, Godot 4's blend distance, Bevy's falloff, EEVEE's attenuation, and
+// Unity once its box is shrunk so that it fades to the measured box) give it no probe at all:
+// the sky shows. Unreal's transition leaves 0.198 on the face; the generic model takes its
+// weights 5 cm over the floor.
 TEST(EngineModels, AFloorOnTheBoxFaceIsLeftToTheSkyByEnginesThatFadeInside) {
   const BoxShape room{{5.0, 2.0, 1.5}, {5.0, 2.0, 1.5}, kUnturned};
   const RuntimeExport presets = oneProbe(room);
   const glm::dvec3 floor{3.0, 1.5, 0.0};
   const std::map<Engine, double> sky = {
-      {Engine::Generic, 0.0},   {Engine::Unity, 0.0},
+      {Engine::Generic, 0.0},   {Engine::Unity, 1.0},
       {Engine::UnityHdrp, 1.0}, {Engine::Unreal, 1.0 - (1.0 - smoothstep(0.0, 0.7, 0.5))},
       {Engine::Godot3, 1.0},    {Engine::Godot4, 1.0},
       {Engine::Bevy, 1.0},      {Engine::Eevee, 1.0}};

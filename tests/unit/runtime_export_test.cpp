@@ -229,7 +229,33 @@ void expectEnginesClose(const RuntimeEngines& a, const RuntimeEngines& b) {
   ASSERT_EQ(a.unrealSphere.has_value(), b.unrealSphere.has_value());
   ASSERT_EQ(a.godot.has_value(), b.godot.has_value());
   ASSERT_EQ(a.bevy.has_value(), b.bevy.has_value());
+  ASSERT_EQ(a.unityHdrp.has_value(), b.unityHdrp.has_value());
+  ASSERT_EQ(a.eevee.has_value(), b.eevee.has_value());
+  if (a.unityHdrp) {
+    EXPECT_EQ(a.unityHdrp->source.candidate, b.unityHdrp->source.candidate);
+    expectClose(a.unityHdrp->position, b.unityHdrp->position, kEngine);
+    expectClose(a.unityHdrp->rotation, b.unityHdrp->rotation, kEngine);
+    EXPECT_EQ(a.unityHdrp->sphere, b.unityHdrp->sphere);
+    expectClose(a.unityHdrp->boxSize, b.unityHdrp->boxSize, kEngine);
+    EXPECT_CLOSE(a.unityHdrp->sphereRadius, b.unityHdrp->sphereRadius, kEngine);
+    expectClose(a.unityHdrp->blendDistancePositive, b.unityHdrp->blendDistancePositive, kEngine);
+    expectClose(a.unityHdrp->blendDistanceNegative, b.unityHdrp->blendDistanceNegative, kEngine);
+    expectClose(a.unityHdrp->capturePosition, b.unityHdrp->capturePosition, kEngine);
+    expectClose(a.unityHdrp->proxyPosition, b.unityHdrp->proxyPosition, kEngine);
+    expectClose(a.unityHdrp->proxyRotation, b.unityHdrp->proxyRotation, kEngine);
+    expectClose(a.unityHdrp->proxySize, b.unityHdrp->proxySize, kEngine);
+  }
+  if (a.eevee) {
+    EXPECT_EQ(a.eevee->source.candidate, b.eevee->source.candidate);
+    expectClose(a.eevee->location, b.eevee->location, kEngine);
+    expectClose(a.eevee->rotation, b.eevee->rotation, kEngine);
+    expectClose(a.eevee->scale, b.eevee->scale, kEngine);
+    EXPECT_EQ(a.eevee->sphere, b.eevee->sphere);
+    EXPECT_CLOSE(a.eevee->falloff, b.eevee->falloff, kEngine);
+    EXPECT_CLOSE(a.eevee->parallaxDistance, b.eevee->parallaxDistance, kEngine);
+  }
   if (a.unity) {
+    EXPECT_CLOSE(a.unity->blendDistance, b.unity->blendDistance, kEngine);
     EXPECT_EQ(a.unity->source.candidate, b.unity->source.candidate);
     expectClose(a.unity->source.error, b.unity->source.error);
     expectClose(a.unity->position, b.unity->position, kEngine);
@@ -483,13 +509,27 @@ TEST_F(RuntimeExport, OneFrameConversionForFilesAndEngines) {
   expectClose(filePointFromWorld(gltfFrame(), {1, 2, 3}), {1, 3, -2}, 0.0);
 }
 
-TEST_F(RuntimeExport, UnityBoxIsLeftHandedYUpRelativeToTheProbe) {
-  const UnityReflectionProbe u = unityReflectionProbe(kRoomBox, kCapture);
+TEST_F(RuntimeExport, UnityBoxIsLeftHandedYUpRelativeToTheProbeShrunkByItsBlendDistance) {
+  const InfluenceVolume influence =
+      BoxInfluence{{0, 0, 1.5}, {3.0, 2.0, 1.5}, quat(1, 0, 0, 0), {2.5, 1.5, 1.0}};
+  const UnityReflectionProbe u = unityReflectionProbe(kRoomBox, kCapture, influence);
   // Unity (x, y, z) = world (-x, z, -y).
   expectClose(u.position, {-1.0, 1.2, -0.5}, 1e-15);
   expectClose(u.center, {1.0, 0.3, 0.5}, 1e-15);  // (-(-1), 0.3, -(-0.5))
-  expectClose(u.size, {6.0, 3.0, 4.0}, 0.0);      // full size: x 6, height 3, depth 4
+  // Unity fades outside the box over blendDistance (the influence's 0.5 m fade) and projects on
+  // the box grown by it: the full size x 6, height 3, depth 4 less 2 x 0.5 m.
+  EXPECT_EQ(u.blendDistance, 0.5);
+  expectClose(u.size, {5.0, 2.0, 3.0}, 1e-15);
   EXPECT_TRUE(u.boxProjection);
+  // No fade: the smallest Unity can divide by. A wide fade: half the shortest half-extent.
+  EXPECT_EQ(
+      unityReflectionProbe(kRoomBox, kCapture,
+                           BoxInfluence{{0, 0, 1.5}, {3, 2, 1.5}, quat(1, 0, 0, 0), {3, 2, 1.5}})
+          .blendDistance,
+      kUnityMinBlendMeters);
+  EXPECT_EQ(unityReflectionProbe(kRoomBox, kCapture, SphereInfluence{{0, 0, 1.5}, 5.0, 1.0})
+                .blendDistance,
+            0.75);
 }
 
 TEST_F(RuntimeExport, UnrealBoxIsLeftHandedZUpCentimetresWithHalfExtentScale) {
@@ -675,7 +715,10 @@ TEST_F(RuntimeExport, EnginesTakeTheKeptBoxElseTheBestBoxAndUnityAnAabb) {
   EXPECT_EQ(c6.unrealBox->source.error.p95Deg, 1e-5);
   expectClose(c6.unrealBox->scale3D, {300.0, 200.0, 150.0}, 1e-12);
   EXPECT_EQ(c6.unity->source.candidate, "convex_6");
-  expectClose(c6.unity->size, {6.0, 3.0, 4.0}, 1e-14);
+  // The room's size, shrunk on every side by the blend distance Unity grows it by again.
+  expectClose(c6.unity->size + 2.0 * c6.unity->blendDistance, {6.0, 3.0, 4.0}, 1e-14);
+  EXPECT_TRUE(c6.unityHdrp && c6.eevee);
+  EXPECT_EQ(c6.eevee->source.candidate, "convex_6");
 
   // Without boxes or spheres, the engines have nothing.
   std::vector<ProbeProxyBuild> builds = roomBuilds();
@@ -683,7 +726,8 @@ TEST_F(RuntimeExport, EnginesTakeTheKeptBoxElseTheBestBoxAndUnityAnAabb) {
   builds[0].kept = 1;
   const Runtime bare = makeRuntimeExport(roomScene(folder_, UpAxis::Z, 1.0), builds);
   const RuntimeEngines& none = bare.probes[0].engines;
-  EXPECT_FALSE(none.unity || none.unrealBox || none.unrealSphere || none.godot || none.bevy);
+  EXPECT_FALSE(none.unity || none.unityHdrp || none.unrealBox || none.unrealSphere || none.godot ||
+               none.bevy || none.eevee);
 }
 
 // ------------------------------------------------------------------------------------------

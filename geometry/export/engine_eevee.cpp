@@ -1,0 +1,64 @@
+#include "geometry/export/engine_probes.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace probeproxy {
+
+namespace {
+
+constexpr double kSmallestFalloff = 1e-8;  // EEVEE_lightprobes_cube_data_from_object's clamp
+
+// How far a box's farthest face is from a point along a unit direction.
+double reachAlong(const BoxShape& box, glm::dvec3 from, glm::dvec3 direction) {
+  double reach = glm::dot(box.centerMeters - from, direction);
+  for (int axis = 0; axis < 3; ++axis) {
+    glm::dvec3 boxAxis(0.0);
+    boxAxis[axis] = 1.0;
+    reach +=
+        box.halfExtentsMeters[axis] * std::abs(glm::dot(box.worldFromBox * boxAxis, direction));
+  }
+  return reach;
+}
+
+}  // namespace
+
+EeveeReflectionCubemap eeveeReflectionCubemap(const BoxShape& proxy, glm::dvec3 captureMeters,
+                                              const InfluenceVolume& influence) {
+  EeveeReflectionCubemap probe;
+  probe.location = captureMeters;
+  if (const auto* box = std::get_if<BoxInfluence>(&influence)) {
+    probe.rotation = box->worldFromBox;
+    const glm::dvec3 offset =
+        glm::conjugate(box->worldFromBox) * (captureMeters - box->centerMeters);
+    probe.scale = box->halfExtentsMeters + glm::abs(offset);
+  } else {
+    const auto& sphere = std::get<SphereInfluence>(influence);
+    probe.sphere = true;
+    probe.scale =
+        glm::dvec3(sphere.radiusMeters + glm::distance(captureMeters, sphere.centerMeters));
+  }
+  const glm::dvec3 h = probe.scale;
+  probe.falloff = std::clamp(transitionDistanceMeters(influence) / std::min({h.x, h.y, h.z}),
+                             kSmallestFalloff, 1.0);
+  // parallax_distance k: least squares of k * scale against the capture point's mean distance
+  // to the proxy's two faces along each of the probe's axes.
+  double numerator = 0.0, denominator = 0.0;
+  for (int axis = 0; axis < 3; ++axis) {
+    glm::dvec3 unit(0.0);
+    unit[axis] = 1.0;
+    const glm::dvec3 direction = probe.rotation * unit;
+    const double wanted = 0.5 * (reachAlong(proxy, captureMeters, direction) +
+                                 reachAlong(proxy, captureMeters, -direction));
+    numerator += h[axis] * wanted;
+    denominator += h[axis] * h[axis];
+  }
+  probe.parallaxDistance = numerator / denominator;
+  return probe;
+}
+
+}  // namespace probeproxy
