@@ -2,6 +2,8 @@
 
 #include "core/errors/input_error.h"
 
+#include <algorithm>
+
 namespace probeproxy {
 
 std::string_view engineName(Engine engine) {
@@ -40,6 +42,23 @@ Engine parseEngine(std::string_view name, const std::string& option) {
     names += engineName(engine);
   }
   throw InputError(option, "expected one of " + names + ", got '" + std::string(name) + "'");
+}
+
+std::vector<Engine> parseEngines(std::string_view names, const std::string& option) {
+  std::vector<Engine> engines;
+  if (names == "all") {
+    engines.assign(kEngines.begin() + 1, kEngines.end());
+    return engines;
+  }
+  std::size_t start = 0;
+  while (start <= names.size()) {
+    const std::size_t comma = std::min(names.find(',', start), names.size());
+    const Engine engine = parseEngine(names.substr(start, comma - start), option);
+    if (std::find(engines.begin(), engines.end(), engine) == engines.end())
+      engines.push_back(engine);
+    start = comma + 1;
+  }
+  return engines;
 }
 
 }  // namespace probeproxy

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace probeproxy {
 
@@ -32,5 +33,9 @@ std::optional<Engine> engineFromName(std::string_view name);
 
 // engineFromName, or InputError naming `option` and listing the names.
 Engine parseEngine(std::string_view name, const std::string& option = "--engine");
+
+// A comma-separated list of names, or "all" (every engine but generic), in the order given,
+// each once; InputError as parseEngine.
+std::vector<Engine> parseEngines(std::string_view names, const std::string& option = "--engine");
 
 }  // namespace probeproxy

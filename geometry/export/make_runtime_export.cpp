@@ -94,18 +94,79 @@ EngineSource sourceOf(const ProxyCandidate& c, bool keptProxy) {
 // the engine gets what was measured; Unity, which ignores rotation, only when it is an `aabb`.
 // Otherwise the candidate of the kind the engine takes with the lowest p95, marked as not the
 // kept proxy: its `error` beside the probe's own says what the engine loses.
-RuntimeEngines enginesFor(const ProbeProxyBuild& build, const Probe& probe) {
+// The influence with its fade scaled: inner = outer - scale * (outer - inner), per axis.
+InfluenceVolume scaledFade(const InfluenceVolume& influence, double scale) {
+  if (scale == 1.0) return influence;  // exactly: outer - (outer - inner) may round
+  if (const auto* box = std::get_if<BoxInfluence>(&influence)) {
+    BoxInfluence b = *box;
+    b.innerHalfExtentsMeters = glm::max(
+        b.halfExtentsMeters - scale * (b.halfExtentsMeters - b.innerHalfExtentsMeters), 0.0);
+    return b;
+  }
+  SphereInfluence s = std::get<SphereInfluence>(influence);
+  s.innerRadiusMeters =
+      std::max(0.0, s.radiusMeters - scale * (s.radiusMeters - s.innerRadiusMeters));
+  return s;
+}
+
+constexpr double kVerticalAxis = 1.0 - 1e-9;  // |own z . world z|: the box's z is vertical
+
+bool zIsVertical(const glm::dquat& worldFromBox) {
+  return std::abs((worldFromBox * glm::dvec3(0.0, 0.0, 1.0)).z) >= kVerticalAxis;
+}
+
+// The box with its bottom face (world) lowered by `drop`; its top stays.
+void lowerBottom(glm::dvec3& center, glm::dvec3& halfExtents, const glm::dquat& worldFromBox,
+                 double drop) {
+  if (!(drop > 0.0) || !zIsVertical(worldFromBox)) return;
+  center.z -= 0.5 * drop;
+  halfExtents.z += 0.5 * drop;
+}
+
+// The box cut to a box influence's outer range along its own x and y, where both are turned
+// alike; its height stays.
+void clipInPlan(BoxShape& box, const InfluenceVolume& influence) {
+  const auto* in = std::get_if<BoxInfluence>(&influence);
+  if (!in || std::abs(glm::dot(in->worldFromBox, box.worldFromBox)) < kVerticalAxis) return;
+  const glm::dquat boxFromWorld = glm::conjugate(box.worldFromBox);
+  const glm::dvec3 offset = boxFromWorld * (in->centerMeters - box.centerMeters);
+  for (int axis = 0; axis < 2; ++axis) {
+    const double low = std::max(-box.halfExtentsMeters[axis],
+                                offset[axis] - in->halfExtentsMeters[axis]);
+    const double high = std::min(box.halfExtentsMeters[axis],
+                                 offset[axis] + in->halfExtentsMeters[axis]);
+    if (!(high > low)) return;  // no overlap: keep the box (never the case for a probe's own)
+    const double shift = 0.5 * (low + high);
+    box.centerMeters += box.worldFromBox * (shift * glm::dvec3(axis == 0, axis == 1, 0));
+    box.halfExtentsMeters[axis] = 0.5 * (high - low);
+  }
+}
+
+RuntimeEngines enginesFor(const ProbeProxyBuild& build, const Probe& probe,
+                          const EnginePresetPolicy& policy) {
+  InfluenceVolume influence = scaledFade(probe.influence, policy.fadeScale);
+  const double drop = policy.clearTheFloor ? transitionDistanceMeters(influence) : 0.0;
+  if (auto* box = std::get_if<BoxInfluence>(&influence)) {
+    const glm::dvec3 inner = box->innerHalfExtentsMeters - box->halfExtentsMeters;
+    lowerBottom(box->centerMeters, box->halfExtentsMeters, box->worldFromBox, drop);
+    box->innerHalfExtentsMeters = glm::max(box->halfExtentsMeters + inner, 0.0);
+  }
+  const auto lowered = [&](BoxShape b) {
+    if (policy.clipToInfluence) clipInPlan(b, influence);
+    lowerBottom(b.centerMeters, b.halfExtentsMeters, b.worldFromBox, drop);
+    return b;
+  };
   RuntimeEngines engines;
   const auto& cs = build.candidates;
   const ProxyCandidate& kept = cs[build.kept];
   const std::optional<BoxShape> keptAsBox = keptBox(kept.shape);
 
   if (keptAsBox && isAabb(*keptAsBox)) {
-    engines.unity = unityReflectionProbe(*keptAsBox, probe.captureMeters, probe.influence);
+    engines.unity = unityReflectionProbe(lowered(*keptAsBox), probe.captureMeters, influence);
     engines.unity->source = sourceOf(kept, true);
   } else if (const auto i = bestCandidate(cs, isAabb)) {
-    engines.unity = unityReflectionProbe(std::get<BoxShape>(cs[*i].shape), probe.captureMeters,
-                                         probe.influence);
+    engines.unity = unityReflectionProbe(lowered(std::get<BoxShape>(cs[*i].shape)),
+                                         probe.captureMeters, influence);
     engines.unity->source = sourceOf(cs[*i], *i == build.kept);
   }
 
@@ -119,15 +180,16 @@ RuntimeEngines enginesFor(const ProbeProxyBuild& build, const Probe& probe) {
     source = sourceOf(cs[*i], *i == build.kept);
   }
   if (box) {
-    engines.unrealBox = unrealBoxReflectionCapture(*box, probe.captureMeters, probe.influence);
+    box = lowered(*box);
+    engines.unrealBox = unrealBoxReflectionCapture(*box, probe.captureMeters, influence);
     engines.unrealBox->source = source;
-    engines.godot = godotReflectionProbe(*box, probe.captureMeters, probe.influence);
+    engines.godot = godotReflectionProbe(*box, probe.captureMeters, influence);
     engines.godot->source = source;
-    engines.bevy = bevyLightProbe(*box, probe.captureMeters, probe.influence);
+    engines.bevy = bevyLightProbe(*box, probe.captureMeters, influence);
     engines.bevy->source = source;
-    engines.unityHdrp = unityHdrpReflectionProbe(*box, probe.captureMeters, probe.influence);
+    engines.unityHdrp = unityHdrpReflectionProbe(*box, probe.captureMeters, influence);
     engines.unityHdrp->source = source;
-    engines.eevee = eeveeReflectionCubemap(*box, probe.captureMeters, probe.influence);
+    engines.eevee = eeveeReflectionCubemap(*box, probe.captureMeters, influence);
     engines.eevee->source = source;
   }
   if (const auto i = bestCandidate(cs, isTrueSphere)) {
@@ -171,7 +233,10 @@ void describeShape(const ProxyShape& shape, RuntimeProbe& out) {
 
 }  // namespace
 
-RuntimeExport makeRuntimeExport(const Scene& scene, const std::vector<ProbeProxyBuild>& builds) {
+RuntimeExport makeRuntimeExport(const Scene& scene, const std::vector<ProbeProxyBuild>& builds,
+                                const EnginePresetPolicy& policy) {
+  if (!(policy.fadeScale >= 0.0 && policy.fadeScale <= 4.0))
+    throw std::invalid_argument("runtime export: fade scale outside [0, 4]");
   if (!(scene.metersPerUnit > 0.0) || !std::isfinite(scene.metersPerUnit)) {
     throw std::invalid_argument("runtime export: meters_per_unit must be a positive number");
   }
@@ -199,7 +264,7 @@ RuntimeExport makeRuntimeExport(const Scene& scene, const std::vector<ProbeProxy
     out.influence = probe->influence;
     out.enlighten = enlightenFor(probe->influence);
     out.error = kept.error;
-    out.engines = enginesFor(build, *probe);
+    out.engines = enginesFor(build, *probe, policy);
     runtime.probes.push_back(std::move(out));
   }
   return runtime;

@@ -152,10 +152,28 @@ struct RuntimeExport {
   std::vector<RuntimeProbe> probes;  // in the order of the builds
 };
 
+// How the engine presets are made from each probe's box and influence volume. `build` exports
+// the defaults; `layout --engine E` exports the policy its engine renders best (measured).
+struct EnginePresetPolicy {
+  // The influence's fade (outer minus inner range, per axis) times this: the one fade distance
+  // every engine gets (engine_probes.h, transitionDistanceMeters) and HDRP's per-face blends.
+  double fadeScale = 1.0;
+  // Lower each engine box's bottom face, and a box influence's, by that fade: engines that fade
+  // inside the box leave a floor lying on its bottom face to the sky; a mirror floor's
+  // reflections go up, so they never meet the lowered face. Only boxes whose own z is the
+  // world's vertical (an aabb, an obb turned about Z).
+  bool clearTheFloor = false;
+  // Cut each engine box, in plan, to the probe's influence volume (outer range): where the box
+  // is also where the probe applies (Unity, Unreal, Godot, Bevy), a room-sized box reaches floor
+  // other probes serve. Only where the box and the influence are turned alike.
+  bool clipToInfluence = false;
+};
+
 // The export of `builds` (one per probe, each naming a probe of `scene`, in the order given).
 // Throws std::invalid_argument for builds that break that contract (unknown or repeated probe,
-// `kept` out of range, a non-finite or empty shape).
-RuntimeExport makeRuntimeExport(const Scene& scene, const std::vector<ProbeProxyBuild>& builds);
+// `kept` out of range, a non-finite or empty shape) or a fadeScale outside [0, 4].
+RuntimeExport makeRuntimeExport(const Scene& scene, const std::vector<ProbeProxyBuild>& builds,
+                                const EnginePresetPolicy& policy = {});
 
 // The bytes of proxies.json. Deterministic.
 std::string runtimeExportJson(const RuntimeExport& runtime);
@@ -168,6 +186,9 @@ std::string runtimeExportJson(const RuntimeExport& runtime);
 //   - outFolder holds a proxies.glb but no probeproxy proxies.json beside it,
 //   - an output path is the scene file, a level mesh or an authored proxy mesh.
 void writeRuntimeExport(const Scene& scene, const std::vector<ProbeProxyBuild>& builds,
+                        const std::filesystem::path& outFolder);
+// The same for an export already made (of `scene`'s probes).
+void writeRuntimeExport(const Scene& scene, const RuntimeExport& runtime,
                         const std::filesystem::path& outFolder);
 
 // Reads proxies.json back into the world frame. Throws InputError(file, "<JSON path>: <what

@@ -116,7 +116,11 @@ void renameOrThrow(const fs::path& from, const fs::path& to) {
 
 void writeRuntimeExport(const Scene& scene, const std::vector<ProbeProxyBuild>& builds,
                         const std::filesystem::path& outFolder) {
-  const RuntimeExport runtime = makeRuntimeExport(scene, builds);
+  writeRuntimeExport(scene, makeRuntimeExport(scene, builds), outFolder);
+}
+
+void writeRuntimeExport(const Scene& scene, const RuntimeExport& runtime,
+                        const std::filesystem::path& outFolder) {
   const std::string json = runtimeExportJson(runtime);
   const LevelMesh mesh = runtimeExportMesh(runtime);
 

@@ -73,35 +73,16 @@ SurveyFigures figures(std::span<const SurveySampleError> errors, double toleranc
   return f;
 }
 
-// The survey over the floor the seeds reach, each sample's error from `errorOf`.
+// The survey of the prepared floor, each sample's error from `errorOf`.
 template <typename SampleError>
-SurveyResult surveySamples(std::vector<glm::dvec3> seeds, std::size_t probes,
-                           const LevelRayCaster& level, const SurveyOptions& o,
-                           const SampleError& errorOf) {
+SurveyResult surveyOn(const SurveyFloor& prepared, std::size_t probes, const SurveyOptions& o,
+                      const SampleError& errorOf) {
   const auto start = std::chrono::steady_clock::now();
-  o.check();
-  if (!o.seedPointsMeters.empty()) seeds = o.seedPointsMeters;
-  if (seeds.empty())
-    throw InputError("survey", "no seed points: the scene has no probes and none were given");
   SurveyResult result;
   result.toleranceDeg = o.toleranceDeg;
   result.engine = o.engine;
-  result.floor = walkableFloor(level, seeds, o.floor);
-  if (result.floor.cells.empty())
-    throw InputError("survey", "no walkable floor under any of the " +
-                                   std::to_string(seeds.size()) +
-                                   " seed points (spawn or capture points): is the level Z-up "
-                                   "and in metres, and does each seed stand over a floor?");
-
-  FloorSampleOptions so;
-  so.samplesPerCell = samplesPerCell(result.floor, o);
-  so.eyeHeightMeters = o.eyeHeightMeters;
-  so.maxViewAttempts = o.maxViewAttempts;
-  so.upwardCosine = o.floor.upwardCosine;
-  so.stepHeightMeters = o.floor.stepHeightMeters;
-  so.seed = o.seed;
-  const std::vector<FloorSample> samples = buildFloorSamples(level, result.floor, so);
-
+  result.floor = prepared.floor;
+  const std::vector<FloorSample>& samples = prepared.samples;
   std::vector<SurveySampleError> errors(samples.size());
   tbb::parallel_for(std::size_t{0}, samples.size(), [&](std::size_t i) {
     errors[i] = errorOf(samples[i].sample);
@@ -109,7 +90,7 @@ SurveyResult surveySamples(std::vector<glm::dvec3> seeds, std::size_t probes,
   });
 
   // Samples come cell by cell, the same count each.
-  const std::size_t perCell = static_cast<std::size_t>(so.samplesPerCell);
+  const std::size_t perCell = static_cast<std::size_t>(prepared.samplesPerCell);
   result.cells.resize(result.floor.cells.size());
   for (std::size_t c = 0; c < result.cells.size(); ++c)
     result.cells[c] = cellError(std::span(errors).subspan(c * perCell, perCell));
@@ -117,11 +98,41 @@ SurveyResult surveySamples(std::vector<glm::dvec3> seeds, std::size_t probes,
   result.figures = figures(errors, o.toleranceDeg);
   result.figures.probes = probes;
   result.figures.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() +
+      prepared.seconds;
   return result;
 }
 
 }  // namespace
+
+SurveyFloor prepareSurveyFloor(std::span<const glm::dvec3> seedPointsMeters,
+                               const LevelRayCaster& level, const SurveyOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  o.check();
+  const std::span<const glm::dvec3> seeds =
+      o.seedPointsMeters.empty() ? seedPointsMeters : std::span(o.seedPointsMeters);
+  if (seeds.empty())
+    throw InputError("survey", "no seed points: the scene has no probes and none were given");
+  SurveyFloor prepared;
+  prepared.floor = walkableFloor(level, seeds, o.floor);
+  if (prepared.floor.cells.empty())
+    throw InputError("survey", "no walkable floor under any of the " +
+                                   std::to_string(seeds.size()) +
+                                   " seed points (spawn or capture points): is the level Z-up "
+                                   "and in metres, and does each seed stand over a floor?");
+  FloorSampleOptions so;
+  so.samplesPerCell = samplesPerCell(prepared.floor, o);
+  so.eyeHeightMeters = o.eyeHeightMeters;
+  so.maxViewAttempts = o.maxViewAttempts;
+  so.upwardCosine = o.floor.upwardCosine;
+  so.stepHeightMeters = o.floor.stepHeightMeters;
+  so.seed = o.seed;
+  prepared.samplesPerCell = so.samplesPerCell;
+  prepared.samples = buildFloorSamples(level, prepared.floor, so);
+  prepared.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return prepared;
+}
 
 SurveyResult surveyProbes(std::span<const SurveyProbe> probes, const LevelRayCaster& level,
                           const SurveyOptions& o) {
@@ -131,17 +142,17 @@ SurveyResult surveyProbes(std::span<const SurveyProbe> probes, const LevelRayCas
     captures.push_back(p.captureMeters);
     volumes.push_back(p.influence);
   }
-  return surveySamples(std::move(captures), probes.size(), level, o,
-                       [&](const ReflectionSample& sample) {
-                         return blendedSampleError(level, probes, volumes, sample, o.blend);
-                       });
+  return surveyOn(prepareSurveyFloor(captures, level, o), probes.size(), o,
+                  [&](const ReflectionSample& sample) {
+                    return blendedSampleError(level, probes, volumes, sample, o.blend);
+                  });
 }
 
-SurveyResult surveyModel(const EngineModel& model, std::span<const glm::dvec3> seedPointsMeters,
+SurveyResult surveyModel(const EngineModel& model, const SurveyFloor& prepared,
                          const LevelRayCaster& level, const SurveyOptions& o) {
-  return surveySamples(
-      {seedPointsMeters.begin(), seedPointsMeters.end()}, model.probes.size(), level, o,
-      [&](const ReflectionSample& sample) { return blendedSampleError(level, model, sample); });
+  return surveyOn(prepared, model.probes.size(), o, [&](const ReflectionSample& sample) {
+    return blendedSampleError(level, model, sample);
+  });
 }
 
 SurveyResult runSurvey(const Scene& scene, const LevelRayCaster& level, const SurveyOptions& o,
@@ -160,7 +171,7 @@ SurveyResult runSurvey(const Scene& scene, const LevelRayCaster& level, const Su
         engineModel(o.engine, surveyPresets(scene, level, o, onProbeBuilt), o.blend);
     std::vector<glm::dvec3> captures;
     for (const Probe& p : scene.probes) captures.push_back(p.captureMeters);
-    result = surveyModel(model, captures, level, o);
+    result = surveyModel(model, prepareSurveyFloor(captures, level, o), level, o);
   }
   result.scene = scene.file.empty() ? std::string("scene") : scene.file.stem().stem().string();
   result.figures.seconds =

@@ -10,6 +10,7 @@
 #include "geometry/engines/engine_model.h"
 #include "geometry/raycast/level_ray_caster.h"
 #include "geometry/survey/blended_error.h"
+#include "geometry/survey/floor_samples.h"
 #include "geometry/survey/survey_options.h"
 #include "geometry/survey/survey_result.h"
 
@@ -31,9 +32,20 @@ SurveyResult runSurvey(const Scene& scene, const LevelRayCaster& level,
 SurveyResult surveyProbes(std::span<const SurveyProbe> probes, const LevelRayCaster& level,
                           const SurveyOptions& options);
 
-// The same under an engine's model: the floor seeded from options.seedPointsMeters, else from
-// `seedPointsMeters` (the scene's capture points).
-SurveyResult surveyModel(const EngineModel& model, std::span<const glm::dvec3> seedPointsMeters,
+// The walkable floor and its samples, which every survey of one level with the same seeds and
+// floor options shares: seeded from options.seedPointsMeters, else from `seedPointsMeters`
+// (the scene's capture points). Throws InputError as runSurvey.
+struct SurveyFloor {
+  WalkableFloor floor;
+  std::vector<FloorSample> samples;  // cell by cell, samplesPerCell each
+  int samplesPerCell = 0;
+  double seconds = 0.0;  // to prepare it
+};
+SurveyFloor prepareSurveyFloor(std::span<const glm::dvec3> seedPointsMeters,
+                               const LevelRayCaster& level, const SurveyOptions& options);
+
+// The survey of a prepared floor under an engine's model.
+SurveyResult surveyModel(const EngineModel& model, const SurveyFloor& floor,
                          const LevelRayCaster& level, const SurveyOptions& options);
 
 }  // namespace probeproxy

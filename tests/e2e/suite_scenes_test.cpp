@@ -5,10 +5,10 @@
 
 #include "core/cube/cubemap_io.h"
 #include "core/cube/write_depth_cube.h"
-#include "geometry/probe_proxies/build_scene_proxies.h"
 #include "geometry/export/kept_box.h"
 #include "geometry/export/runtime_export.h"
 #include "geometry/level/load_level.h"
+#include "geometry/probe_proxies/build_scene_proxies.h"
 #include "geometry/raycast/capture_depth_cube.h"
 #include "geometry/scene/scene_file.h"
 #include "geometry/validate/proxy_mesh_checks.h"
@@ -293,13 +293,15 @@ TEST_P(SuiteLevel, EnginePresetsAreTheKeptBox) {
       EXPECT_EQ(source->candidate, candidateName(kept)) << b.probe;
       EXPECT_EQ(source->error.p95Deg, kept.error.p95Deg) << b.probe;
     }
-    // Unity: axis-aligned, box centre = position + center, full size; left-handed Y up:
-    // Unity (u, v, w) is world (-u, -w, v).
+    // Unity: axis-aligned, box centre = position + center, full size grown by the blend
+    // distance on every side (what Unity projects on); left-handed Y up: Unity (u, v, w) is
+    // world (-u, -w, v).
     if (methodId(ProxyShape(*box)) == "aabb") {
       ASSERT_TRUE(e.unity) << b.probe;
       std::vector<glm::dvec3> unity;
-      for (const glm::dvec3& c : boxCorners(e.unity->position + e.unity->center,
-                                            glm::dquat(1, 0, 0, 0), e.unity->size / 2.0))
+      for (const glm::dvec3& c :
+           boxCorners(e.unity->position + e.unity->center, glm::dquat(1, 0, 0, 0),
+                      e.unity->size / 2.0 + e.unity->blendDistance))
         unity.push_back({-c.x, -c.z, c.y});
       EXPECT_LE(cornerDistance(unity, keptCorners), kTolerance) << b.probe << " unity";
       EXPECT_TRUE(e.unity->source.keptProxy) << b.probe;

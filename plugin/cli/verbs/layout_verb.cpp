@@ -19,6 +19,7 @@ namespace {
 struct LayoutVerbOptions {
   std::string input, out;
   std::string baseline = "none";
+  std::string engine = "generic";
   bool json = false;
   jobs::LayoutJobOptions job;
 };
@@ -32,6 +33,8 @@ LayoutBaseline layoutBaseline(const std::string& name) {
 
 int runLayoutVerb(LayoutVerbOptions o) {
   o.job.layout.baseline = layoutBaseline(o.baseline);
+  o.job.engines = parseEngines(o.engine);
+  if (o.job.engines == std::vector<Engine>{Engine::Generic}) o.job.engines.clear();
   o.job.levelOrScene = o.input;
   o.job.outFolder = o.out;
   const jobs::LayoutJobResult r =
@@ -70,6 +73,12 @@ Verb addLayoutVerb(CLI::App& app) {
   verb->add_option("--out", o->out,
                    "folder for layout.scene.json, proxies.json/.glb, layout.json and the maps");
   verb->add_flag("--json", o->json, "print layout.json on stdout");
+  verb->add_option("--engine", o->engine,
+                   "the engines the level ships to, comma-separated, or all: each gets the "
+                   "presets it renders best (of a few box cuts, fade widths and floor "
+                   "clearances) and its own figures: unity, unity-hdrp, unreal, godot3, godot4, "
+                   "bevy, eevee; generic: the convex proxies alone (docs/engines.md)")
+      ->capture_default_str();
   verb->add_option("--baseline", o->baseline,
                    "none: the layout; grid: a probe every --spacing m with aabb proxies; "
                    "spawn: a sphere of --reach m at every spawn point")

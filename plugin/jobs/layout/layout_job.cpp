@@ -28,6 +28,10 @@ namespace probeproxy::jobs {
 
 namespace {
 
+// Samples per floor cell on which an engine's preset policies are compared: a quarter of the
+// survey's 8, enough to rank them (the kept one is surveyed in full).
+constexpr int kEngineTrialSamplesPerCell = 2;
+
 namespace fs = std::filesystem;
 
 bool isSceneFile(const fs::path& file) {
@@ -191,6 +195,32 @@ std::string layoutReportJson(const LayoutJobOptions& o, const LayoutJobResult& r
   j["served_share"] = number(r.layout.servedShare);
   j["servable_share"] = number(r.layout.servableShare);
   j["layout_seconds"] = number(r.layout.seconds);
+  if (!r.engines.empty()) {
+    const auto policyJson = [](const EnginePresetPolicy& p) {
+      nlohmann::ordered_json policy;
+      policy["clip_to_influence"] = p.clipToInfluence;
+      policy["fade_scale"] = p.fadeScale;
+      policy["clear_the_floor"] = p.clearTheFloor;
+      return policy;
+    };
+    nlohmann::ordered_json engines;
+    for (const EnginePresetChoice& c : r.engines) {
+      nlohmann::ordered_json e = policyJson(c.policy);
+      e["tried"] = nlohmann::ordered_json::array();
+      for (const EnginePresetTrial& t : c.trials) {
+        nlohmann::ordered_json trial = policyJson(t.policy);
+        trial["p95_deg"] = number(t.figures.p95Deg);
+        trial["over_tolerance_share"] = number(t.figures.overToleranceShare);
+        trial["uncovered_share"] = number(t.figures.uncoveredShare);
+        e["tried"].push_back(trial);
+      }
+      SurveyResult named = c.survey;
+      named.scene = baselineName(o.layout.baseline);
+      e["survey"] = nlohmann::ordered_json::parse(surveyReportJson(named));
+      engines[std::string(engineName(c.engine))] = e;
+    }
+    j["engines"] = engines;
+  }
   j["survey"] = nlohmann::ordered_json::parse(surveyReportJson(r.survey));
   return j.dump(2) + "\n";
 }
@@ -200,6 +230,8 @@ std::string layoutReportJson(const LayoutJobOptions& o, const LayoutJobResult& r
 void LayoutJobOptions::check() const {
   layout.check();
   survey.check();
+  if (survey.engine != Engine::Generic)
+    throw InputError("option engine", "a layout's engines are LayoutJobOptions::engines");
   if (!outFolder.empty()) checkOutputFolder(outFolder);
 }
 
@@ -277,6 +309,15 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
       });
     });
   }
+  if (!o.engines.empty()) {
+    const SurveyFloor floor = prepareSurveyFloor(seeds, rayCaster, survey);
+    SurveyOptions trial = survey;
+    trial.samplesPerCell = std::min(survey.samplesPerCell, kEngineTrialSamplesPerCell);
+    const SurveyFloor trialFloor = prepareSurveyFloor(seeds, rayCaster, trial);
+    r.engines = choosePresetsForEngines(o.engines, r.scene, r.builds, rayCaster, floor,
+                                        trialFloor, survey);
+    if (o.engines.size() == 1 && !r.engines.empty()) r.survey = r.engines.front().survey;
+  }
   r.survey.scene = baselineName(o.layout.baseline);
   r.json = layoutReportJson(o, r);
 
@@ -287,7 +328,7 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
       r.written.push_back(file);
     }
     writeSceneFile(r.scene, o.outFolder / "layout.scene.json");
-    writeRuntimeExport(r.scene, r.builds, o.outFolder);
+    writeRuntimeExport(r.scene, exportForEngines(r.scene, r.builds, r.engines), o.outFolder);
     for (const char* name : {"layout.scene.json", "proxies.json", "proxies.glb", "layout.json"})
       r.written.push_back(o.outFolder / name);
     writeFileAtomically(o.outFolder / "layout.json", r.json);

@@ -12,6 +12,7 @@
 
 #include "core/proxy/proxy_candidate.h"
 #include "core/scene/scene.h"
+#include "geometry/layout/engine_presets.h"
 #include "geometry/layout/layout_options.h"
 #include "geometry/layout/run_layout.h"
 #include "geometry/survey/survey_options.h"
@@ -35,7 +36,10 @@ struct LayoutJobOptions {
   std::filesystem::path outFolder;  // layout.scene.json, proxies.json/.glb, layout.json, maps
   int threads = 0;                  // 0: all cores
   LayoutOptions layout;
-  SurveyOptions survey;  // how the result is measured; seeds as the layout's
+  SurveyOptions survey;  // how the result is measured (the generic model); seeds as the layout's
+  // The engines the level ships to: each gets the presets it renders best and its own figures
+  // (geometry/layout/engine_presets.h). With exactly one, the layout's survey is that engine's.
+  std::vector<Engine> engines;
 
   void check() const;  // throws InputError naming the option at fault
 };
@@ -43,8 +47,9 @@ struct LayoutJobOptions {
 struct LayoutJobResult {
   Scene scene;  // the layout: its probes, level paths relative to outFolder
   LayoutResult layout;
-  std::vector<ProbeProxyBuild> builds;  // scene order
-  SurveyResult survey;
+  std::vector<ProbeProxyBuild> builds;              // scene order
+  SurveyResult survey;                      // the generic model's, or the one engine's
+  std::vector<EnginePresetChoice> engines;  // each engine asked for (Generic left out)
   std::string json;                            // layout.json: the layout's and survey's figures
   std::vector<std::filesystem::path> written;  // when outFolder is set
 };

@@ -1,0 +1,116 @@
+#include "geometry/layout/engine_presets.h"
+
+#include "geometry/engines/engine_model.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <tuple>
+
+namespace probeproxy {
+
+namespace {
+
+// Floor that does not get the reflection right: over the tolerance, or the fallback's share.
+double badFloorShare(const SurveyFigures& f) { return f.overToleranceShare + f.uncoveredShare; }
+
+bool better(const SurveyFigures& a, const SurveyFigures& b) {
+  const double pa = std::isnan(a.p95Deg) ? INFINITY : a.p95Deg;
+  const double pb = std::isnan(b.p95Deg) ? INFINITY : b.p95Deg;
+  return std::make_tuple(badFloorShare(a), pa) < std::make_tuple(badFloorShare(b), pb);
+}
+
+// The entries of `engine` in `from`, into `to`.
+void takeEngine(Engine engine, const RuntimeEngines& from, RuntimeEngines& to) {
+  switch (engine) {
+    case Engine::Generic: break;
+    case Engine::Unity: to.unity = from.unity; break;
+    case Engine::UnityHdrp: to.unityHdrp = from.unityHdrp; break;
+    case Engine::Unreal:
+      to.unrealBox = from.unrealBox;
+      to.unrealSphere = from.unrealSphere;
+      break;
+    case Engine::Godot3:
+    case Engine::Godot4: to.godot = from.godot; break;  // one ReflectionProbe preset for both
+    case Engine::Bevy: to.bevy = from.bevy; break;
+    case Engine::Eevee: to.eevee = from.eevee; break;
+  }
+}
+
+}  // namespace
+
+std::vector<EnginePresetPolicy> enginePresetPolicies() {
+  std::vector<EnginePresetPolicy> policies;
+  for (const bool clip : {false, true}) {
+    policies.push_back({1.0, false, clip});  // the export `build` writes (clip aside)
+    policies.push_back({0.0, false, clip});  // no fade: nothing to clear the floor of
+    policies.push_back({1.0, true, clip});
+    policies.push_back({2.0, true, clip});
+  }
+  return policies;
+}
+
+EnginePresetChoice choosePresetsForEngine(Engine engine, const Scene& scene,
+                                          const std::vector<ProbeProxyBuild>& builds,
+                                          const LevelRayCaster& level, const SurveyFloor& floor,
+                                          const SurveyFloor& trialFloor,
+                                          const SurveyOptions& survey,
+                                          std::span<const EnginePresetPolicy> policies) {
+  if (engine == Engine::Generic)
+    throw std::invalid_argument("choosePresetsForEngine: the generic model has no presets");
+  SurveyOptions options = survey;
+  options.engine = engine;
+  // What proxies.json will hold, read back: the engine numbers rounded as written.
+  const auto presetsOf = [&](const EnginePresetPolicy& policy) {
+    return parseRuntimeExport(runtimeExportJson(makeRuntimeExport(scene, builds, policy)),
+                              kProxiesJsonName);
+  };
+  EnginePresetChoice best;
+  best.engine = engine;
+  SurveyFigures bestTrial;
+  for (const EnginePresetPolicy& policy : policies) {
+    const SurveyResult trial = surveyModel(engineModel(engine, presetsOf(policy), options.blend),
+                                           trialFloor, level, options);
+    best.trials.push_back({policy, trial.figures});
+    if (best.trials.size() == 1 || better(trial.figures, bestTrial)) {
+      best.policy = policy;
+      bestTrial = trial.figures;
+    }
+  }
+  best.survey =
+      surveyModel(engineModel(engine, presetsOf(best.policy), options.blend), floor, level,
+                  options);
+  return best;
+}
+
+std::vector<EnginePresetChoice> choosePresetsForEngines(
+    std::span<const Engine> engines, const Scene& scene,
+    const std::vector<ProbeProxyBuild>& builds, const LevelRayCaster& level,
+    const SurveyFloor& floor, const SurveyFloor& trialFloor, const SurveyOptions& survey) {
+  const std::vector<EnginePresetPolicy> all = enginePresetPolicies();
+  std::vector<EnginePresetChoice> choices;
+  for (const Engine engine : engines) {
+    if (engine == Engine::Generic) continue;
+    std::span<const EnginePresetPolicy> policies = all;
+    for (const EnginePresetChoice& c : choices)
+      if ((engine == Engine::Godot3 || engine == Engine::Godot4) &&
+          (c.engine == Engine::Godot3 || c.engine == Engine::Godot4))
+        policies = std::span(&c.policy, 1);
+    choices.push_back(
+        choosePresetsForEngine(engine, scene, builds, level, floor, trialFloor, survey,
+                               policies));
+  }
+  return choices;
+}
+
+RuntimeExport exportForEngines(const Scene& scene, const std::vector<ProbeProxyBuild>& builds,
+                               std::span<const EnginePresetChoice> choices) {
+  RuntimeExport merged = makeRuntimeExport(scene, builds);
+  for (const EnginePresetChoice& choice : choices) {
+    const RuntimeExport own = makeRuntimeExport(scene, builds, choice.policy);
+    for (std::size_t i = 0; i < merged.probes.size(); ++i)
+      takeEngine(choice.engine, own.probes[i].engines, merged.probes[i].engines);
+  }
+  return merged;
+}
+
+}  // namespace probeproxy

@@ -1,0 +1,67 @@
+#pragma once
+// The presets a layout exports for the engines it ships to (`layout --engine E[,E...]`): of a
+// few ways to make an engine's presets from the probes' boxes and influence volumes
+// (EnginePresetPolicy: boxes cut to the influence or not, the fade's width, whether boxes reach
+// below the floor), the one each engine renders best, measured by surveying each under that
+// engine's model. What is measured is what is written: each trial's presets are read back
+// from the proxies.json bytes they would write, and each engine's entries in the layout's
+// proxies.json are its kept policy's, so `survey --engine E --proxies proxies.json` on the
+// layout's scene gives the figures layout.json reports for E.
+
+#include "core/proxy/proxy_candidate.h"
+#include "core/scene/scene.h"
+#include "geometry/engines/engine.h"
+#include "geometry/export/runtime_export.h"
+#include "geometry/raycast/level_ray_caster.h"
+#include "geometry/survey/run_survey.h"
+#include "geometry/survey/survey_options.h"
+#include "geometry/survey/survey_result.h"
+
+#include <span>
+#include <vector>
+
+namespace probeproxy {
+
+struct EnginePresetTrial {
+  EnginePresetPolicy policy;
+  SurveyFigures figures;  // under the engine's model, on the trial floor
+};
+
+struct EnginePresetChoice {
+  Engine engine = Engine::Unity;
+  EnginePresetPolicy policy;              // the one kept
+  SurveyResult survey;                    // of its presets under the engine's model
+  std::vector<EnginePresetTrial> trials;  // every policy tried, in order
+};
+
+// The policies tried, in order: boxes as built, then cut to the influence in plan; for each,
+// the export `build` writes (the scene's fade), no fade, and the fade once and twice as wide
+// with the floor cleared (8). The kept one has the least floor over the tolerance or left to the
+// engine's fallback, then the lowest p95, then the first.
+std::vector<EnginePresetPolicy> enginePresetPolicies();
+
+// `engine` is not Generic; `floor` is the layout's prepared survey floor, `trialFloor` the same
+// floor with fewer samples per cell, on which the policies are compared (the kept one is then
+// surveyed on `floor`); `survey` their options; `policies` those to try (enginePresetPolicies(),
+// or one where the preset is shared with an engine already chosen: Godot 3 and Godot 4 read the
+// same godot_reflection_probe).
+EnginePresetChoice choosePresetsForEngine(Engine engine, const Scene& scene,
+                                          const std::vector<ProbeProxyBuild>& builds,
+                                          const LevelRayCaster& level, const SurveyFloor& floor,
+                                          const SurveyFloor& trialFloor,
+                                          const SurveyOptions& survey,
+                                          std::span<const EnginePresetPolicy> policies);
+
+// Every engine's choice, in the order given (Generic skipped); Godot 4 takes Godot 3's policy
+// when both are asked for.
+std::vector<EnginePresetChoice> choosePresetsForEngines(
+    std::span<const Engine> engines, const Scene& scene,
+    const std::vector<ProbeProxyBuild>& builds, const LevelRayCaster& level,
+    const SurveyFloor& floor, const SurveyFloor& trialFloor, const SurveyOptions& survey);
+
+// The export with each chosen engine's entries made by its kept policy (Unreal's box and
+// sphere captures both by Unreal's), every other entry by the default policy.
+RuntimeExport exportForEngines(const Scene& scene, const std::vector<ProbeProxyBuild>& builds,
+                               std::span<const EnginePresetChoice> choices);
+
+}  // namespace probeproxy
