@@ -19,7 +19,7 @@
 namespace probeproxy {
 
 EngineModel godot3Model(const RuntimeExport& presets) {
-  GodotProbes held = godotProbes(presets);
+  GodotProbes held = godotProbes(presets, /*godot4=*/false);
   EngineModel model;
   model.engine = Engine::Godot3;
   model.probes = std::move(held.probes);

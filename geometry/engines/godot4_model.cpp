@@ -24,7 +24,7 @@
 namespace probeproxy {
 
 EngineModel godot4Model(const RuntimeExport& presets) {
-  GodotProbes held = godotProbes(presets);
+  GodotProbes held = godotProbes(presets, /*godot4=*/true);
   EngineModel model;
   model.engine = Engine::Godot4;
   model.probes = std::move(held.probes);

@@ -5,10 +5,11 @@
 
 namespace probeproxy {
 
-GodotProbes godotProbes(const RuntimeExport& presets) {
+GodotProbes godotProbes(const RuntimeExport& presets, bool godot4) {
   GodotProbes out;
   for (std::size_t i = 0; i < presets.probes.size(); ++i) {
-    const auto& preset = presets.probes[i].engines.godot;
+    const RuntimeEngines& engines = presets.probes[i].engines;
+    const auto& preset = godot4 ? engines.godot4 : engines.godot;
     if (!preset) continue;
     const PresetBox held = godotPresetBox(*preset);
     EngineProbe p;

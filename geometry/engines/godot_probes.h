@@ -18,8 +18,9 @@ struct GodotProbes {
   std::vector<PresetBox> boxes;  // same order
 };
 
-// Every probe with a godot_reflection_probe preset, as Godot holds it.
-GodotProbes godotProbes(const RuntimeExport& presets);
+// Every probe with a preset for Godot 3 (godot_reflection_probe) or Godot 4
+// (godot4_reflection_probe), as Godot holds it.
+GodotProbes godotProbes(const RuntimeExport& presets, bool godot4);
 
 // local_pos = the point in the node's frame; none where any |local_pos| > box_extents.
 std::optional<glm::dvec3> godotLocalPosition(const BoxShape& box, glm::dvec3 xMeters);

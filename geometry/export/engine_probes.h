@@ -203,8 +203,9 @@ struct RuntimeEngines {
   std::optional<UnrealBoxReflectionCapture> unrealBox;        // kept box, else best `aabb`/`obb`
   std::optional<UnrealSphereReflectionCapture> unrealSphere;  // best true sphere
   std::optional<GodotReflectionProbe> godot;                  // kept box, else best `aabb`/`obb`
-  std::optional<BevyLightProbe> bevy;                         // kept box, else best `aabb`/`obb`
-  std::optional<EeveeReflectionCubemap> eevee;                // parallax fitted to that box
+  std::optional<GodotReflectionProbe> godot4;   // the same for Godot 4, whose layout may differ
+  std::optional<BevyLightProbe> bevy;           // kept box, else best `aabb`/`obb`
+  std::optional<EeveeReflectionCubemap> eevee;  // parallax fitted to that box
 };
 
 // One small free function per engine (engine_<name>.cpp). World frame in, engine frame out.

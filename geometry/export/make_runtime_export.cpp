@@ -131,10 +131,10 @@ void clipInPlan(BoxShape& box, const InfluenceVolume& influence) {
   const glm::dquat boxFromWorld = glm::conjugate(box.worldFromBox);
   const glm::dvec3 offset = boxFromWorld * (in->centerMeters - box.centerMeters);
   for (int axis = 0; axis < 2; ++axis) {
-    const double low = std::max(-box.halfExtentsMeters[axis],
-                                offset[axis] - in->halfExtentsMeters[axis]);
-    const double high = std::min(box.halfExtentsMeters[axis],
-                                 offset[axis] + in->halfExtentsMeters[axis]);
+    const double low =
+        std::max(-box.halfExtentsMeters[axis], offset[axis] - in->halfExtentsMeters[axis]);
+    const double high =
+        std::min(box.halfExtentsMeters[axis], offset[axis] + in->halfExtentsMeters[axis]);
     if (!(high > low)) return;  // no overlap: keep the box (never the case for a probe's own)
     const double shift = 0.5 * (low + high);
     box.centerMeters += box.worldFromBox * (shift * glm::dvec3(axis == 0, axis == 1, 0));
@@ -185,6 +185,7 @@ RuntimeEngines enginesFor(const ProbeProxyBuild& build, const Probe& probe,
     engines.unrealBox->source = source;
     engines.godot = godotReflectionProbe(*box, probe.captureMeters, influence);
     engines.godot->source = source;
+    engines.godot4 = engines.godot;
     engines.bevy = bevyLightProbe(*box, probe.captureMeters, influence);
     engines.bevy->source = source;
     engines.unityHdrp = unityHdrpReflectionProbe(*box, probe.captureMeters, influence);

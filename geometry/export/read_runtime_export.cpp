@@ -298,7 +298,7 @@ RuntimeEngines engines(const At& at) {
         p.captureOffset = vec3(u.member("capture_offset"));
         return p;
       });
-  e.godot = optionalEngine<GodotReflectionProbe>(at, "godot_reflection_probe", [](const At& g) {
+  const auto godot = [](const At& g) {
     GodotReflectionProbe p;
     p.origin = vec3(g.member("origin"));
     p.rotation = quaternionXyzw(g.member("rotation_xyzw"));
@@ -308,7 +308,12 @@ RuntimeEngines engines(const At& at) {
     p.boxProjection = boolean(g.member("box_projection"));
     p.exact = boolean(g.member("exact"));
     return p;
-  });
+  };
+  e.godot = optionalEngine<GodotReflectionProbe>(at, "godot_reflection_probe", godot);
+  // Earlier exports had one entry for Godot 3 and 4.
+  e.godot4 = at.has("godot4_reflection_probe")
+                 ? optionalEngine<GodotReflectionProbe>(at, "godot4_reflection_probe", godot)
+                 : e.godot;
   e.bevy = optionalEngine<BevyLightProbe>(at, "bevy_light_probe", [](const At& b) {
     BevyLightProbe p;
     p.translation = vec3(b.member("translation"));

@@ -77,6 +77,7 @@
 //                                             "capture_offset" },
 //       "godot_reflection_probe": { .., "origin", "rotation_xyzw", "size", "origin_offset",
 //                                   "blend_distance", "box_projection", "exact" },
+//       "godot4_reflection_probe": { ..the same, for Godot 4 },
 //       "bevy_light_probe": { .., "translation", "rotation_xyzw", "scale", "falloff",
 //                             "parallax_correction": "auto", "capture_at_centre", "exact" },
 //       "eevee_reflection_cubemap": { .., "location", "rotation_xyzw", "scale",
@@ -92,7 +93,8 @@
 // (HDRP as its proxy volume, EEVEE to fit its parallax volume to); Unreal's sphere capture the
 // best `sphere` candidate with equal radii. Unity's size is that box shrunk by blend_distance
 // (Unity projects on the box grown by it). A reader takes an export without the HDRP and EEVEE
-// entries or Unity's blend_distance (earlier exports) as none and Unity's default 1 m.
+// entries or Unity's blend_distance (earlier exports) as none and Unity's default 1 m, and an
+// export without godot4_reflection_probe as giving Godot 4 the Godot 3 entry.
 // box_transition_distance (cm) and blend_distance (m): transitionDistanceMeters (engine_probes.h),
 // the smallest fade of the influence over the axes that fade; Bevy's falloff is that distance
 // over each half-size (clamped to [0, 1]). Numbers in the

@@ -161,6 +161,18 @@ JsonLayoutValue optionalEngine(const std::optional<T>& engine,
   return jsonObject(std::move(members), /*oneItemPerLine=*/true);
 }
 
+JsonLayoutValue godotJson(const std::optional<GodotReflectionProbe>& godot) {
+  return optionalEngine<GodotReflectionProbe>(godot, [](const GodotReflectionProbe& p) -> Members {
+    return {{"origin", engineVec3(p.origin)},
+            {"rotation_xyzw", engineQuat(p.rotation)},
+            {"size", engineVec3(p.size)},
+            {"origin_offset", engineVec3(p.originOffset)},
+            {"blend_distance", jsonCoordinate(p.blendDistance)},
+            {"box_projection", boolJson(p.boxProjection)},
+            {"exact", boolJson(p.exact)}};
+  });
+}
+
 JsonLayoutValue enginesJson(const RuntimeEngines& e) {
   return jsonObject(
       {{"unity_reflection_probe", optionalEngine<UnityReflectionProbe>(
@@ -211,17 +223,8 @@ JsonLayoutValue enginesJson(const RuntimeEngines& e) {
                       {"influence_radius", jsonCoordinate(p.influenceRadius)},
                       {"capture_offset", engineVec3(p.captureOffset)}};
             })},
-       {"godot_reflection_probe", optionalEngine<GodotReflectionProbe>(
-                                      e.godot,
-                                      [](const GodotReflectionProbe& p) -> Members {
-                                        return {{"origin", engineVec3(p.origin)},
-                                                {"rotation_xyzw", engineQuat(p.rotation)},
-                                                {"size", engineVec3(p.size)},
-                                                {"origin_offset", engineVec3(p.originOffset)},
-                                                {"blend_distance", jsonCoordinate(p.blendDistance)},
-                                                {"box_projection", boolJson(p.boxProjection)},
-                                                {"exact", boolJson(p.exact)}};
-                                      })},
+       {"godot_reflection_probe", godotJson(e.godot)},
+       {"godot4_reflection_probe", godotJson(e.godot4)},
        {"bevy_light_probe",
         optionalEngine<BevyLightProbe>(e.bevy,
                                        [](const BevyLightProbe& p) -> Members {

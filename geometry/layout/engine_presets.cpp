@@ -22,17 +22,30 @@ bool better(const SurveyFigures& a, const SurveyFigures& b) {
 // The entries of `engine` in `from`, into `to`.
 void takeEngine(Engine engine, const RuntimeEngines& from, RuntimeEngines& to) {
   switch (engine) {
-    case Engine::Generic: break;
-    case Engine::Unity: to.unity = from.unity; break;
-    case Engine::UnityHdrp: to.unityHdrp = from.unityHdrp; break;
+    case Engine::Generic:
+      break;
+    case Engine::Unity:
+      to.unity = from.unity;
+      break;
+    case Engine::UnityHdrp:
+      to.unityHdrp = from.unityHdrp;
+      break;
     case Engine::Unreal:
       to.unrealBox = from.unrealBox;
       to.unrealSphere = from.unrealSphere;
       break;
     case Engine::Godot3:
-    case Engine::Godot4: to.godot = from.godot; break;  // one ReflectionProbe preset for both
-    case Engine::Bevy: to.bevy = from.bevy; break;
-    case Engine::Eevee: to.eevee = from.eevee; break;
+      to.godot = from.godot;
+      break;
+    case Engine::Godot4:
+      to.godot4 = from.godot4;
+      break;
+    case Engine::Bevy:
+      to.bevy = from.bevy;
+      break;
+    case Engine::Eevee:
+      to.eevee = from.eevee;
+      break;
   }
 }
 
@@ -76,28 +89,21 @@ EnginePresetChoice choosePresetsForEngine(Engine engine, const Scene& scene,
       bestTrial = trial.figures;
     }
   }
-  best.survey =
-      surveyModel(engineModel(engine, presetsOf(best.policy), options.blend), floor, level,
-                  options);
+  best.survey = surveyModel(engineModel(engine, presetsOf(best.policy), options.blend), floor,
+                            level, options);
   return best;
 }
 
 std::vector<EnginePresetChoice> choosePresetsForEngines(
-    std::span<const Engine> engines, const Scene& scene,
-    const std::vector<ProbeProxyBuild>& builds, const LevelRayCaster& level,
-    const SurveyFloor& floor, const SurveyFloor& trialFloor, const SurveyOptions& survey) {
+    std::span<const Engine> engines, const Scene& scene, const std::vector<ProbeProxyBuild>& builds,
+    const LevelRayCaster& level, const SurveyFloor& floor, const SurveyFloor& trialFloor,
+    const SurveyOptions& survey) {
   const std::vector<EnginePresetPolicy> all = enginePresetPolicies();
   std::vector<EnginePresetChoice> choices;
   for (const Engine engine : engines) {
     if (engine == Engine::Generic) continue;
-    std::span<const EnginePresetPolicy> policies = all;
-    for (const EnginePresetChoice& c : choices)
-      if ((engine == Engine::Godot3 || engine == Engine::Godot4) &&
-          (c.engine == Engine::Godot3 || c.engine == Engine::Godot4))
-        policies = std::span(&c.policy, 1);
     choices.push_back(
-        choosePresetsForEngine(engine, scene, builds, level, floor, trialFloor, survey,
-                               policies));
+        choosePresetsForEngine(engine, scene, builds, level, floor, trialFloor, survey, all));
   }
   return choices;
 }

@@ -42,9 +42,7 @@ std::vector<EnginePresetPolicy> enginePresetPolicies();
 
 // `engine` is not Generic; `floor` is the layout's prepared survey floor, `trialFloor` the same
 // floor with fewer samples per cell, on which the policies are compared (the kept one is then
-// surveyed on `floor`); `survey` their options; `policies` those to try (enginePresetPolicies(),
-// or one where the preset is shared with an engine already chosen: Godot 3 and Godot 4 read the
-// same godot_reflection_probe).
+// surveyed on `floor`); `survey` their options; `policies` those to try.
 EnginePresetChoice choosePresetsForEngine(Engine engine, const Scene& scene,
                                           const std::vector<ProbeProxyBuild>& builds,
                                           const LevelRayCaster& level, const SurveyFloor& floor,
@@ -52,15 +50,15 @@ EnginePresetChoice choosePresetsForEngine(Engine engine, const Scene& scene,
                                           const SurveyOptions& survey,
                                           std::span<const EnginePresetPolicy> policies);
 
-// Every engine's choice, in the order given (Generic skipped); Godot 4 takes Godot 3's policy
-// when both are asked for.
+// Every engine's choice, in the order given (Generic skipped), each from enginePresetPolicies().
 std::vector<EnginePresetChoice> choosePresetsForEngines(
-    std::span<const Engine> engines, const Scene& scene,
-    const std::vector<ProbeProxyBuild>& builds, const LevelRayCaster& level,
-    const SurveyFloor& floor, const SurveyFloor& trialFloor, const SurveyOptions& survey);
+    std::span<const Engine> engines, const Scene& scene, const std::vector<ProbeProxyBuild>& builds,
+    const LevelRayCaster& level, const SurveyFloor& floor, const SurveyFloor& trialFloor,
+    const SurveyOptions& survey);
 
 // The export with each chosen engine's entries made by its kept policy (Unreal's box and
-// sphere captures both by Unreal's), every other entry by the default policy.
+// sphere captures both by Unreal's), every other entry by the default policy. Each engine has
+// entries of its own (Godot 3's and Godot 4's too), so no choice changes another's.
 RuntimeExport exportForEngines(const Scene& scene, const std::vector<ProbeProxyBuild>& builds,
                                std::span<const EnginePresetChoice> choices);
 

@@ -6,6 +6,7 @@
 #include "geometry/builtin/box_room.h"
 #include "geometry/engines/blend_composition.h"
 #include "geometry/engines/engine_model.h"
+#include "geometry/engines/preset_boxes.h"
 #include "geometry/evaluation/evaluate_shape.h"
 #include "geometry/evaluation/reflection_samples.h"
 #include "geometry/survey/blended_error.h"
@@ -44,7 +45,7 @@ RuntimeProbe probeWithPresets(const std::string& name, const BoxShape& box, glm:
   p.engines.unity = unityReflectionProbe(box, capture, influence);
   p.engines.unityHdrp = unityHdrpReflectionProbe(box, capture, influence);
   p.engines.unrealBox = unrealBoxReflectionCapture(box, capture, influence);
-  p.engines.godot = godotReflectionProbe(box, capture, influence);
+  p.engines.godot = p.engines.godot4 = godotReflectionProbe(box, capture, influence);
   p.engines.bevy = bevyLightProbe(box, capture, influence);
   p.engines.eevee = eeveeReflectionCubemap(box, capture, influence);
   return p;
@@ -329,6 +330,79 @@ TEST(EngineModels, AFloorOnTheBoxFaceIsLeftToTheSkyByEnginesThatFadeInside) {
     EXPECT_NEAR(engineModel(e, presets, BlendOptions{}).blend(floor, kEye).fallbackWeight,
                 sky.at(e), 1e-12);
   }
+}
+
+// One probe in a 6 x 4 x 3 m room whose kept proxy is the room's box, its influence the room's
+// right two thirds (x in [-1, 3]) fading 0.5 m inside each face.
+struct OneRoomProbe {
+  Scene scene;
+  std::vector<ProbeProxyBuild> builds;
+};
+
+OneRoomProbe oneRoomProbe() {
+  OneRoomProbe r;
+  r.scene.file = "room.scene.json";
+  Probe probe;
+  probe.name = "a";
+  probe.captureMeters = {1.0, 0.0, 1.6};
+  probe.influence = BoxInfluence{{1.0, 0.0, 1.5}, {2.0, 2.0, 1.5}, kUnturned, {1.5, 1.5, 1.0}};
+  r.scene.probes.push_back(probe);
+  ProbeProxyBuild build;
+  build.probe = "a";
+  ProxyCandidate room;
+  room.origin = CandidateOrigin::Aabb;
+  room.shape = BoxShape{{0.0, 0.0, 1.5}, {3.0, 2.0, 1.5}, kUnturned};
+  room.error.p95Deg = 0.0;
+  build.candidates.push_back(room);
+  r.builds.push_back(build);
+  return r;
+}
+
+TEST(EnginePresetPolicy, TheDefaultIsTheBuildExportByteForByte) {
+  const OneRoomProbe r = oneRoomProbe();
+  EXPECT_EQ(runtimeExportJson(makeRuntimeExport(r.scene, r.builds, EnginePresetPolicy{})),
+            runtimeExportJson(makeRuntimeExport(r.scene, r.builds)));
+}
+
+TEST(EnginePresetPolicy, ClearingTheFloorLowersTheBoxesBottomByTheFadeAndNothingElse) {
+  const OneRoomProbe r = oneRoomProbe();
+  EnginePresetPolicy clear;
+  clear.clearTheFloor = true;
+  const RuntimeEngines e = makeRuntimeExport(r.scene, r.builds, clear).probes[0].engines;
+  const BoxShape box = unrealPresetBox(*e.unrealBox).box;
+  EXPECT_NEAR(box.centerMeters.z - box.halfExtentsMeters.z, -0.5, 1e-12);  // floor 0, fade 0.5
+  EXPECT_NEAR(box.centerMeters.z + box.halfExtentsMeters.z, 3.0, 1e-12);
+  EXPECT_NEAR(box.halfExtentsMeters.x, 3.0, 1e-12);
+  // HDRP's influence goes down with it, its fade kept: the floor is a full fade inside it.
+  const HdrpHeld hdrp = unityHdrpHeld(*e.unityHdrp);
+  EXPECT_NEAR(hdrp.influenceBox.centerMeters.z - hdrp.influenceBox.halfExtentsMeters.z, -0.5,
+              1e-12);
+  EXPECT_NEAR(hdrp.blendNegative.z, 0.5, 1e-12);
+  // The Godot 4 model now gives the floor under the capture point the probe's full weight.
+  const RuntimeExport plain = makeRuntimeExport(r.scene, r.builds);
+  const RuntimeExport cleared = makeRuntimeExport(r.scene, r.builds, clear);
+  const glm::dvec3 floor{1.0, 0.0, 0.0};
+  EXPECT_EQ(godot4Model(plain).blend(floor, kEye).fallbackWeight, 1.0);
+  EXPECT_EQ(godot4Model(cleared).blend(floor, kEye).fallbackWeight, 0.0);
+}
+
+TEST(EnginePresetPolicy, ClippingCutsTheBoxInPlanToTheInfluenceAndScalingWidensTheFade) {
+  const OneRoomProbe r = oneRoomProbe();
+  EnginePresetPolicy clip;
+  clip.clipToInfluence = true;
+  clip.fadeScale = 2.0;
+  const RuntimeEngines e = makeRuntimeExport(r.scene, r.builds, clip).probes[0].engines;
+  const BoxShape box = godotPresetBox(*e.godot).box;
+  EXPECT_NEAR(box.centerMeters.x - box.halfExtentsMeters.x, -1.0, 1e-9);  // the influence's
+  EXPECT_NEAR(box.centerMeters.x + box.halfExtentsMeters.x, 3.0, 1e-9);   // room's and its
+  EXPECT_NEAR(box.halfExtentsMeters.y, 2.0, 1e-9);
+  EXPECT_NEAR(box.halfExtentsMeters.z, 1.5, 1e-9);  // the height stays
+  EXPECT_NEAR(e.godot->blendDistance, 1.0, 1e-12);  // twice the 0.5 m fade
+  EXPECT_EQ(makeRuntimeExport(r.scene, r.builds, {0.0, false, false})
+                .probes[0]
+                .engines.godot->blendDistance,
+            0.0);
+  EXPECT_THROW(makeRuntimeExport(r.scene, r.builds, {5.0, false, false}), std::invalid_argument);
 }
 
 TEST(EngineModels, TheGenericModelIsTheSurveysOwnBlend) {

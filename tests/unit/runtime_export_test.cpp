@@ -228,6 +228,11 @@ void expectEnginesClose(const RuntimeEngines& a, const RuntimeEngines& b) {
   ASSERT_EQ(a.unrealBox.has_value(), b.unrealBox.has_value());
   ASSERT_EQ(a.unrealSphere.has_value(), b.unrealSphere.has_value());
   ASSERT_EQ(a.godot.has_value(), b.godot.has_value());
+  ASSERT_EQ(a.godot4.has_value(), b.godot4.has_value());
+  if (a.godot4) {
+    expectClose(a.godot4->size, b.godot4->size, kEngine);
+    EXPECT_CLOSE(a.godot4->blendDistance, b.godot4->blendDistance, kEngine);
+  }
   ASSERT_EQ(a.bevy.has_value(), b.bevy.has_value());
   ASSERT_EQ(a.unityHdrp.has_value(), b.unityHdrp.has_value());
   ASSERT_EQ(a.eevee.has_value(), b.eevee.has_value());

@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# layout_engine_checks.sh PROBEPROXY SCENE WORK
+# A layout made for every engine (`layout --engine all`) exports, per engine, the presets it
+# measured: `survey --engine E --proxies proxies.json` on the layout's scene gives layout.json's
+# figures for E exactly; each engine's kept policy is the best of its trials (the least floor
+# over the tolerance or left to the fallback, then the lowest p95); the same run twice writes the
+# same bytes.
+set -eu
+probeproxy=$1 scene=$2 work=$3
+rm -rf "$work" && mkdir -p "$work"
+for run in a b; do
+  "$probeproxy" layout "$scene" --engine all --out "$work/$run" --json >/dev/null
+done
+cmp "$work/a/proxies.json" "$work/b/proxies.json"
+cmp "$work/a/layout.scene.json" "$work/b/layout.scene.json"
+python3 - "$probeproxy" "$work/a" <<'PY'
+import json, math, subprocess, sys
+probeproxy, out = sys.argv[1:]
+layout = json.load(open(out + "/layout.json"))
+engines = layout["engines"]
+assert sorted(engines) == sorted(["unity", "unity-hdrp", "unreal", "godot3", "godot4", "bevy",
+                                  "eevee"]), sorted(engines)
+presets = json.load(open(out + "/proxies.json"))
+for name, entry in engines.items():
+    measured = entry["survey"]
+    assert measured["engine"] == name, measured
+    report = subprocess.run([probeproxy, "survey", out + "/layout.scene.json", "--engine", name,
+                             "--proxies", out + "/proxies.json", "--json"],
+                            check=True, capture_output=True, text=True).stdout
+    survey = json.loads(report)
+    for key, value in measured.items():
+        if key in ("seconds", "scene"):
+            continue
+        assert survey[key] == value, (name, key, survey[key], value)
+    def rank(t):
+        p95 = t["p95_deg"] if t["p95_deg"] is not None else math.inf
+        return (t["over_tolerance_share"] + t["uncovered_share"], p95)
+    best = min(entry["tried"], key=rank)
+    kept = {k: entry[k] for k in ("clip_to_influence", "fade_scale", "clear_the_floor")}
+    if name != "godot4":  # Godot 4 shares Godot 3's preset, so it takes Godot 3's policy
+        assert rank(best) == rank(next(t for t in entry["tried"]
+                                       if all(t[k] == v for k, v in kept.items()))), name
+print("layout engine checks passed:", ", ".join(
+    "%s %.1f%%" % (n, 100 * e["survey"]["over_tolerance_share"]) for n, e in engines.items()))
+PY
