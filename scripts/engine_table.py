@@ -1,13 +1,18 @@
 #!/usr/bin/python3
-"""The per-engine table of docs/engines.md, measured: per level, `probeproxy layout` and a grid
-baseline with the same number of probes (`--baseline grid --max-probes N`, aabb proxies), each
-written scene surveyed under every engine model (`probeproxy survey --engine E --proxies
-DIR/proxies.json`): what each engine renders from the presets the layout exports. Prints one
-Markdown table per engine: p95, floor over 5 deg and uncovered floor (the share of the
-reflection the engine leaves to its sky / ambient fallback) for the layout and the grid.
+"""The per-engine tables of docs/engines.md, measured. Per level, three runs:
+  - `probeproxy layout` (no engine): the generic layout, its proxies.json the presets `build`
+    would write; each engine's figures from `survey --engine E --proxies` on it (what a studio
+    imports today);
+  - `probeproxy layout --engine all`: the same probes, each engine's presets chosen for it
+    (layout.json "engines");
+  - `probeproxy layout --baseline grid --max-probes N --engine all`: a grid of box-projected
+    probes with the layout's count, each engine's presets chosen the same way.
+Prints one Markdown table per engine: floor over 5 deg, uncovered floor (left to the engine's
+sky / ambient fallback) and p95 for the three, and the layout-to-grid ratio of the floor over
+5 deg. With --jsonl FILE each level's figures are also appended there as they come.
 
   /usr/bin/python3 scripts/engine_table.py build/plugin/cli/probeproxy build/corpus/scenes \
-      [--levels downer toxic] [--engines godot3 unreal] [--work DIR]
+      [--levels downer toxic] [--work DIR] [--jsonl FILE]
 """
 import argparse
 import glob
@@ -16,7 +21,7 @@ import os
 import subprocess
 import tempfile
 
-ENGINES = ("generic", "unity", "unity-hdrp", "unreal", "godot3", "godot4", "bevy", "eevee")
+ENGINES = ("unity", "unity-hdrp", "unreal", "godot3", "godot4", "bevy", "eevee")
 
 
 def run_json(*command):
@@ -24,16 +29,35 @@ def run_json(*command):
     return json.loads(done.stdout)
 
 
-def survey(probeproxy, out, engine):
-    report = run_json(probeproxy, "survey", os.path.join(out, "layout.scene.json"), "--engine",
-                      engine, "--proxies", os.path.join(out, "proxies.json"), "--json")
-    return report["p95_deg"], report["over_tolerance_share"], report["uncovered_share"]
+def figures(survey):
+    return {"p95": survey["p95_deg"], "over": survey["over_tolerance_share"],
+            "uncovered": survey["uncovered_share"]}
 
 
-def cell(figures):
-    p95, over, uncovered = figures
-    p95_text = "—" if p95 is None else "%.1f" % p95
-    return "%s | %.1f%% | %.1f%%" % (p95_text, 100 * over, 100 * uncovered)
+def level_figures(probeproxy, scene, work):
+    plain, engine, grid = (os.path.join(work, kind) for kind in ("plain", "engine", "grid"))
+    layout = run_json(probeproxy, "layout", scene, "--out", plain, "--json")
+    tuned = run_json(probeproxy, "layout", scene, "--out", engine, "--json", "--engine", "all")
+    baseline = run_json(probeproxy, "layout", scene, "--out", grid, "--json", "--baseline",
+                        "grid", "--max-probes", str(layout["probes"]), "--engine", "all")
+    out = {"probes": layout["probes"], "grid_probes": baseline["probes"],
+           "generic": figures(layout["survey"]), "engines": {}}
+    for engine in ENGINES:
+        today = run_json(probeproxy, "survey", os.path.join(plain, "layout.scene.json"),
+                         "--engine", engine, "--proxies", os.path.join(plain, "proxies.json"),
+                         "--json")
+        out["engines"][engine] = {
+            "today": figures(today),
+            "layout": figures(tuned["engines"][engine]["survey"]),
+            "grid": figures(baseline["engines"][engine]["survey"]),
+            "policy": {k: tuned["engines"][engine][k]
+                       for k in ("clip_to_influence", "fade_scale", "clear_the_floor")}}
+    return out
+
+
+def cell(f):
+    p95 = "—" if f["p95"] is None else "%.1f" % f["p95"]
+    return "%.1f%% / %.1f%% / %s" % (100 * f["over"], 100 * f["uncovered"], p95)
 
 
 def main():
@@ -41,36 +65,32 @@ def main():
     parser.add_argument("probeproxy")
     parser.add_argument("scenes")
     parser.add_argument("--levels", nargs="*", default=[])
-    parser.add_argument("--engines", nargs="*", default=list(ENGINES))
     parser.add_argument("--work", help="keep every run's output here")
+    parser.add_argument("--jsonl", help="append each level's figures to this file")
     args = parser.parse_args()
 
     scenes = sorted(glob.glob(os.path.join(args.scenes, "*", "*.scene.json")))
     if args.levels:
         scenes = [s for s in scenes if os.path.basename(os.path.dirname(s)) in args.levels]
-    rows = {engine: [] for engine in args.engines}
+    results = {}
     with tempfile.TemporaryDirectory() as scratch:
-        work = args.work or scratch
-        os.makedirs(work, exist_ok=True)
         for scene in scenes:
             level = os.path.basename(os.path.dirname(scene))
-            layout_out = os.path.join(work, level + "_layout")
-            grid_out = os.path.join(work, level + "_grid")
-            layout = run_json(args.probeproxy, "layout", scene, "--out", layout_out, "--json")
-            run_json(args.probeproxy, "layout", scene, "--out", grid_out, "--json",
-                     "--baseline", "grid", "--max-probes", str(layout["probes"]))
-            for engine in args.engines:
-                row = "| %s | %s | %s |" % (level, cell(survey(args.probeproxy, layout_out, engine)),
-                                            cell(survey(args.probeproxy, grid_out, engine)))
-                rows[engine].append(row)
-                print(engine, row, flush=True)
-    for engine in args.engines:
-        print("\n**%s**\n" % engine)
-        print("| level | layout p95 | layout over 5 deg | layout uncovered | grid p95 "
-              "| grid over 5 deg | grid uncovered |")
-        print("|---|---|---|---|---|---|---|")
-        for row in rows[engine]:
-            print(row)
+            work = os.path.join(args.work or scratch, level)
+            results[level] = level_figures(args.probeproxy, scene, work)
+            if args.jsonl:
+                with open(args.jsonl, "a") as f:
+                    f.write(json.dumps({"level": level, **results[level]}) + "\n")
+    for engine in ENGINES:
+        print("\n**%s** (floor over 5 deg / uncovered / p95 deg)\n" % engine)
+        print("| level | generic layout's presets | layout for %s | same-count grid for %s "
+              "| over 5 deg, layout / grid |" % (engine, engine))
+        print("|---|---|---|---|---|")
+        for level, r in results.items():
+            e = r["engines"][engine]
+            ratio = e["layout"]["over"] / e["grid"]["over"] if e["grid"]["over"] > 0 else float("nan")
+            print("| %s | %s | %s | %s | %.2f |" % (level, cell(e["today"]), cell(e["layout"]),
+                                                  cell(e["grid"]), ratio))
 
 
 if __name__ == "__main__":

@@ -104,7 +104,7 @@ struct UnityHdrpReflectionProbe {
 // before capturing" (UReflectionCaptureComponent::CaptureOffset): world axes, not the actor's.
 // The fade (BoxScales.w = BoxTransitionDistance, cm): "Shrink the box by the transition distance
 // so that the fade happens inside the box influence area": weight = 1 - smoothstep(0, 0.7 T,
-// distance to the box shrunk by T / 2), so full weight from T / 2 inside each face, about 0.21
+// distance to the box shrunk by T / 2), so full weight from T / 2 inside each face, about 0.20
 // on the face itself, 0 only 0.2 T outside it (docs "Reflection Environment": Box Transition
 // Distance fades inside the box).
 struct UnrealBoxReflectionCapture {
