@@ -5,7 +5,10 @@
 
 #include "geometry/engines/engine_model.h"
 
+#include <algorithm>
+#include <numeric>
 #include <span>
+#include <vector>
 
 namespace probeproxy {
 
@@ -13,6 +16,27 @@ struct ProbeFade {
   int probe = 0;      // index into EngineModel::probes
   double fade = 0.0;  // the probe's own weight at the point, in [0, 1]
 };
+
+// Indices 0 .. count - 1 by `key(i)` ascending, ties in index order: the order an engine visits
+// its probes in, fixed once for the level.
+template <typename Key>
+std::vector<int> orderedBy(std::size_t count, Key key) {
+  std::vector<int> order(count);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key(a) < key(b); });
+  return order;
+}
+
+// `fadeOf(i)` of each probe in `order`, the positive ones, in that order.
+template <typename FadeOf>
+std::vector<ProbeFade> fadesInOrder(std::span<const int> order, FadeOf fadeOf) {
+  std::vector<ProbeFade> fades;
+  for (const int i : order) {
+    const double fade = fadeOf(static_cast<std::size_t>(i));
+    if (fade > 0.0) fades.push_back({i, fade});
+  }
+  return fades;
+}
 
 // Front to back: each probe takes its fade of what is left (Unreal's
 // ImageBasedReflections.a *= 1 - DistanceAlpha; Unity's deferred probes drawn over each other,

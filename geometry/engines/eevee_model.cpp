@@ -26,7 +26,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 namespace probeproxy {
 
@@ -66,19 +65,12 @@ EngineModel eeveeModel(const RuntimeExport& presets) {
     model.probes.push_back(std::move(p));
     held.push_back(*preset);
   }
-  std::vector<int> order(held.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    return inverseScale(held[static_cast<std::size_t>(a)]) >
-           inverseScale(held[static_cast<std::size_t>(b)]);
-  });
+  // The bake's bubble sort puts the largest inverse scale (the smallest influence) first.
+  std::vector<int> order = orderedBy(
+      held.size(), [&](int i) { return -inverseScale(held[static_cast<std::size_t>(i)]); });
   model.blend = [held = std::move(held), order = std::move(order)](glm::dvec3 x, glm::dvec3) {
-    std::vector<ProbeFade> fades;
-    for (const int i : order) {
-      const double fade = attenuation(held[static_cast<std::size_t>(i)], x);
-      if (fade > 0.0) fades.push_back({i, fade});
-    }
-    return fillToOne(fades, kFull);
+    return fillToOne(fadesInOrder(order, [&](std::size_t i) { return attenuation(held[i], x); }),
+                     kFull);
   };
   return model;
 }

@@ -24,7 +24,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 namespace probeproxy {
 
@@ -74,19 +73,11 @@ EngineModel unityHdrpModel(const RuntimeExport& presets) {
     model.probes.push_back(std::move(p));
     held.push_back(h);
   }
-  std::vector<int> order(held.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    return influenceVolume(held[static_cast<std::size_t>(a)]) <
-           influenceVolume(held[static_cast<std::size_t>(b)]);
-  });
+  std::vector<int> order = orderedBy(
+      held.size(), [&](int i) { return influenceVolume(held[static_cast<std::size_t>(i)]); });
   model.blend = [held = std::move(held), order = std::move(order)](glm::dvec3 x, glm::dvec3) {
-    std::vector<ProbeFade> fades;
-    for (const int i : order) {
-      const double fade = hdrpInfluenceWeight(held[static_cast<std::size_t>(i)], x);
-      if (fade > 0.0) fades.push_back({i, fade});
-    }
-    return fillToOne(fades);
+    return fillToOne(
+        fadesInOrder(order, [&](std::size_t i) { return hdrpInfluenceWeight(held[i], x); }));
   };
   return model;
 }

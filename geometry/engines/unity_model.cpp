@@ -25,7 +25,6 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <numeric>
 
 namespace probeproxy {
 
@@ -52,24 +51,18 @@ EngineModel unityModel(const RuntimeExport& presets) {
     held.push_back(box);
   }
   // Front to back: the smaller box first (drawn last, on top); ties in scene order.
-  std::vector<int> order(held.size());
-  std::iota(order.begin(), order.end(), 0);
-  const auto volume = [&](int i) {
+  std::vector<int> order = orderedBy(held.size(), [&](int i) {
     const glm::dvec3 h = held[static_cast<std::size_t>(i)].box.halfExtentsMeters;
     return h.x * h.y * h.z;
-  };
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return volume(a) < volume(b); });
+  });
   model.blend = [held = std::move(held), order = std::move(order)](glm::dvec3 x, glm::dvec3) {
-    std::vector<ProbeFade> fades;
-    for (const int i : order) {
-      const PresetBox& h = held[static_cast<std::size_t>(i)];
-      const glm::dvec3 low = h.box.centerMeters - h.box.halfExtentsMeters;
-      const glm::dvec3 high = h.box.centerMeters + h.box.halfExtentsMeters;
+    return frontToBack(fadesInOrder(order, [&](std::size_t i) {
+      const BoxShape& box = held[i].box;
+      const glm::dvec3 low = box.centerMeters - box.halfExtentsMeters;
+      const glm::dvec3 high = box.centerMeters + box.halfExtentsMeters;
       const glm::dvec3 outside = glm::max(glm::max(x - high, low - x), glm::dvec3(0.0));
-      const double fade = std::clamp(1.0 - glm::length(outside) / h.fadeMeters, 0.0, 1.0);
-      if (fade > 0.0) fades.push_back({i, fade});
-    }
-    return frontToBack(fades);
+      return std::clamp(1.0 - glm::length(outside) / held[i].fadeMeters, 0.0, 1.0);
+    }));
   };
   return model;
 }

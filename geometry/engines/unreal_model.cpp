@@ -26,7 +26,6 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
-#include <numeric>
 
 namespace probeproxy {
 
@@ -92,20 +91,12 @@ EngineModel unrealModel(const RuntimeExport& presets) {
     model.probes.push_back(std::move(p));
     captures.push_back(c);
   }
-  std::vector<int> order(captures.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    return captures[static_cast<std::size_t>(a)].radiusMeters <
-           captures[static_cast<std::size_t>(b)].radiusMeters;
-  });
+  std::vector<int> order = orderedBy(
+      captures.size(), [&](int i) { return captures[static_cast<std::size_t>(i)].radiusMeters; });
   model.blend = [captures = std::move(captures), order = std::move(order)](glm::dvec3 x,
                                                                            glm::dvec3) {
-    std::vector<ProbeFade> fades;
-    for (const int i : order) {
-      const double alpha = distanceAlpha(captures[static_cast<std::size_t>(i)], x);
-      if (alpha > 0.0) fades.push_back({i, alpha});
-    }
-    return frontToBack(fades);
+    return frontToBack(
+        fadesInOrder(order, [&](std::size_t i) { return distanceAlpha(captures[i], x); }));
   };
   return model;
 }
