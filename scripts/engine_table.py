@@ -51,7 +51,8 @@ def level_figures(probeproxy, scene, work):
             "layout": figures(tuned["engines"][engine]["survey"]),
             "grid": figures(baseline["engines"][engine]["survey"]),
             "policy": {k: tuned["engines"][engine][k]
-                       for k in ("clip_to_influence", "fade_scale", "clear_the_floor")}}
+                       for k in ("clip_to_influence", "fade_scale", "clear_the_floor",
+                                 "cube_about_capture", "influence_inside")}}
     return out
 
 

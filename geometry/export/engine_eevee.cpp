@@ -11,7 +11,8 @@ namespace probeproxy {
 
 namespace {
 
-constexpr double kSmallestFalloff = 1e-8;  // EEVEE_lightprobes_cube_data_from_object's clamp
+constexpr double kSmallestFalloff = 1e-8;      // EEVEE_lightprobes_cube_data_from_object's clamp
+constexpr double kSmallestScaleMeters = 0.01;  // a capture point on the range's face
 
 // How far a box's farthest face is from a point along a unit direction.
 double reachAlong(const BoxShape& box, glm::dvec3 from, glm::dvec3 direction) {
@@ -28,19 +29,23 @@ double reachAlong(const BoxShape& box, glm::dvec3 from, glm::dvec3 direction) {
 }  // namespace
 
 EeveeReflectionCubemap eeveeReflectionCubemap(const BoxShape& proxy, glm::dvec3 captureMeters,
-                                              const InfluenceVolume& influence) {
+                                              const InfluenceVolume& influence, bool inside) {
+  // In plan, the nearer faces or the farther ones; in height always the farther: the floor
+  // must be inside.
+  const glm::dvec3 side(inside ? -1.0 : 1.0, inside ? -1.0 : 1.0, 1.0);
   EeveeReflectionCubemap probe;
   probe.location = captureMeters;
   if (const auto* box = std::get_if<BoxInfluence>(&influence)) {
     probe.rotation = box->worldFromBox;
     const glm::dvec3 offset =
         glm::conjugate(box->worldFromBox) * (captureMeters - box->centerMeters);
-    probe.scale = box->halfExtentsMeters + glm::abs(offset);
+    probe.scale = glm::max(box->halfExtentsMeters + side * glm::abs(offset), kSmallestScaleMeters);
   } else {
     const auto& sphere = std::get<SphereInfluence>(influence);
     probe.sphere = true;
-    probe.scale =
-        glm::dvec3(sphere.radiusMeters + glm::distance(captureMeters, sphere.centerMeters));
+    probe.scale = glm::dvec3(
+        std::max(sphere.radiusMeters + side.x * glm::distance(captureMeters, sphere.centerMeters),
+                 kSmallestScaleMeters));
   }
   const glm::dvec3 h = probe.scale;
   probe.falloff = std::clamp(transitionDistanceMeters(influence) / std::min({h.x, h.y, h.z}),

@@ -213,8 +213,11 @@ UnityReflectionProbe unityReflectionProbe(const BoxShape& aabb, glm::dvec3 captu
                                           const InfluenceVolume& influence);
 UnityHdrpReflectionProbe unityHdrpReflectionProbe(const BoxShape& proxy, glm::dvec3 captureMeters,
                                                   const InfluenceVolume& influence);
+// `inside`: the influence, in plan, the largest centred on the capture point inside the scene's
+// outer range, not the smallest holding it (in height it holds the range, floor included).
 EeveeReflectionCubemap eeveeReflectionCubemap(const BoxShape& proxy, glm::dvec3 captureMeters,
-                                              const InfluenceVolume& influence);
+                                              const InfluenceVolume& influence,
+                                              bool inside = false);
 UnrealBoxReflectionCapture unrealBoxReflectionCapture(const BoxShape& box, glm::dvec3 captureMeters,
                                                       const InfluenceVolume& influence);
 UnrealSphereReflectionCapture unrealSphereReflectionCapture(const SphereShape& sphere,

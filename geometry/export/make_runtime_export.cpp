@@ -123,6 +123,22 @@ void lowerBottom(glm::dvec3& center, glm::dvec3& halfExtents, const glm::dquat& 
   halfExtents.z += 0.5 * drop;
 }
 
+// The cube centred on `capture`, world axes, its half-extent the mean distance from `capture` to
+// the box's six faces (of its world bounds).
+BoxShape cubeAbout(const BoxShape& box, glm::dvec3 capture) {
+  glm::dvec3 reach(0.0);
+  for (int axis = 0; axis < 3; ++axis) {
+    glm::dvec3 e(0.0);
+    e[axis] = 1.0;
+    const glm::dvec3 own = glm::abs(glm::conjugate(box.worldFromBox) * e);
+    reach[axis] = glm::dot(own, box.halfExtentsMeters);  // the box's world half-width there
+  }
+  const glm::dvec3 low = box.centerMeters - reach, high = box.centerMeters + reach;
+  const glm::dvec3 near = glm::max(capture - low, 0.0), far = glm::max(high - capture, 0.0);
+  const double half = std::max((near.x + near.y + near.z + far.x + far.y + far.z) / 6.0, 0.01);
+  return {capture, glm::dvec3(half), glm::dquat(1, 0, 0, 0)};
+}
+
 // The box cut to a box influence's outer range along its own x and y, where both are turned
 // alike; its height stays.
 void clipInPlan(BoxShape& box, const InfluenceVolume& influence) {
@@ -186,11 +202,14 @@ RuntimeEngines enginesFor(const ProbeProxyBuild& build, const Probe& probe,
     engines.godot = godotReflectionProbe(*box, probe.captureMeters, influence);
     engines.godot->source = source;
     engines.godot4 = engines.godot;
-    engines.bevy = bevyLightProbe(*box, probe.captureMeters, influence);
+    engines.bevy =
+        bevyLightProbe(policy.cubeAboutCapture ? cubeAbout(*box, probe.captureMeters) : *box,
+                       probe.captureMeters, influence);
     engines.bevy->source = source;
     engines.unityHdrp = unityHdrpReflectionProbe(*box, probe.captureMeters, influence);
     engines.unityHdrp->source = source;
-    engines.eevee = eeveeReflectionCubemap(*box, probe.captureMeters, influence);
+    engines.eevee =
+        eeveeReflectionCubemap(*box, probe.captureMeters, influence, policy.influenceInside);
     engines.eevee->source = source;
   }
   if (const auto i = bestCandidate(cs, isTrueSphere)) {

@@ -169,6 +169,15 @@ struct EnginePresetPolicy {
   // is also where the probe applies (Unity, Unreal, Godot, Bevy), a room-sized box reaches floor
   // other probes serve. Only where the box and the influence are turned alike.
   bool clipToInfluence = false;
+  // Bevy: each light probe the cube centred on the capture point (world axes), its half-extent
+  // the capture point's mean distance to the box's six faces. Bevy's lookup is right only for an
+  // unturned cube captured at its centre; a room that is not a cube is otherwise looked up
+  // stretched.
+  bool cubeAboutCapture = false;
+  // EEVEE: the influence, in plan, the largest box (sphere) centred on the capture point inside
+  // the scene's outer range, instead of the smallest holding it (which reaches past the near
+  // side); in height it still holds the range, floor included.
+  bool influenceInside = false;
 };
 
 // The export of `builds` (one per probe, each naming a probe of `scene`, in the order given).

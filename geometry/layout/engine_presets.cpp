@@ -51,13 +51,27 @@ void takeEngine(Engine engine, const RuntimeEngines& from, RuntimeEngines& to) {
 
 }  // namespace
 
-std::vector<EnginePresetPolicy> enginePresetPolicies() {
+std::vector<EnginePresetPolicy> enginePresetPolicies(Engine engine) {
   std::vector<EnginePresetPolicy> policies;
-  for (const bool clip : {false, true}) {
-    policies.push_back({1.0, false, clip});  // the export `build` writes (clip aside)
-    policies.push_back({0.0, false, clip});  // no fade: nothing to clear the floor of
-    policies.push_back({1.0, true, clip});
-    policies.push_back({2.0, true, clip});
+  // EEVEE fits its parallax box to the (cut) box too, so it tries both of its choices.
+  const std::vector<std::pair<bool, bool>> choices =
+      engine == Engine::Eevee ? std::vector<std::pair<bool, bool>>{{false, false},
+                                                                   {true, false},
+                                                                   {false, true},
+                                                                   {true, true}}
+                              : std::vector<std::pair<bool, bool>>{{false, false}, {false, true}};
+  for (const auto& [clip, second] : choices) {
+    // The export `build` writes; no fade (nothing to clear the floor of); wider fades, cleared.
+    for (const auto& [scale, clear] : {std::pair{1.0, false}, std::pair{0.0, false},
+                                       std::pair{1.0, true}, std::pair{2.0, true}}) {
+      EnginePresetPolicy p;
+      p.fadeScale = scale;
+      p.clearTheFloor = clear;
+      p.clipToInfluence = clip || (second && engine != Engine::Bevy && engine != Engine::Eevee);
+      p.cubeAboutCapture = second && engine == Engine::Bevy;
+      p.influenceInside = second && engine == Engine::Eevee;
+      policies.push_back(p);
+    }
   }
   return policies;
 }
@@ -98,12 +112,11 @@ std::vector<EnginePresetChoice> choosePresetsForEngines(
     std::span<const Engine> engines, const Scene& scene, const std::vector<ProbeProxyBuild>& builds,
     const LevelRayCaster& level, const SurveyFloor& floor, const SurveyFloor& trialFloor,
     const SurveyOptions& survey) {
-  const std::vector<EnginePresetPolicy> all = enginePresetPolicies();
   std::vector<EnginePresetChoice> choices;
   for (const Engine engine : engines) {
     if (engine == Engine::Generic) continue;
-    choices.push_back(
-        choosePresetsForEngine(engine, scene, builds, level, floor, trialFloor, survey, all));
+    choices.push_back(choosePresetsForEngine(engine, scene, builds, level, floor, trialFloor,
+                                             survey, enginePresetPolicies(engine)));
   }
   return choices;
 }

@@ -34,11 +34,13 @@ struct EnginePresetChoice {
   std::vector<EnginePresetTrial> trials;  // every policy tried, in order
 };
 
-// The policies tried, in order: boxes as built, then cut to the influence in plan; for each,
-// the export `build` writes (the scene's fade), no fade, and the fade once and twice as wide
-// with the floor cleared (8). The kept one has the least floor over the tolerance or left to the
-// engine's fallback, then the lowest p95, then the first.
-std::vector<EnginePresetPolicy> enginePresetPolicies();
+// The policies tried for an engine, in order: the export `build` writes (the scene's fade), no
+// fade, and the fade once and twice as wide with the floor cleared; each with the engine's own
+// second choice off, then on: Bevy's cube about the capture point, for the others the boxes cut
+// to the influence in plan (8); EEVEE both the cut and its influence inside the scene's range in
+// plan (16). The kept one has the least floor over the tolerance or left to the engine's
+// fallback, then the lowest p95, then the first.
+std::vector<EnginePresetPolicy> enginePresetPolicies(Engine engine);
 
 // `engine` is not Generic; `floor` is the layout's prepared survey floor, `trialFloor` the same
 // floor with fewer samples per cell, on which the policies are compared (the kept one is then

@@ -36,10 +36,10 @@ for name, entry in engines.items():
         p95 = t["p95_deg"] if t["p95_deg"] is not None else math.inf
         return (t["over_tolerance_share"] + t["uncovered_share"], p95)
     best = min(entry["tried"], key=rank)
-    kept = {k: entry[k] for k in ("clip_to_influence", "fade_scale", "clear_the_floor")}
-    if name != "godot4":  # Godot 4 shares Godot 3's preset, so it takes Godot 3's policy
-        assert rank(best) == rank(next(t for t in entry["tried"]
-                                       if all(t[k] == v for k, v in kept.items()))), name
+    keys = ("clip_to_influence", "fade_scale", "clear_the_floor", "cube_about_capture",
+            "influence_inside")
+    kept = next(t for t in entry["tried"] if all(t[k] == entry[k] for k in keys))
+    assert rank(best) == rank(kept), name
 print("layout engine checks passed:", ", ".join(
     "%s %.1f%%" % (n, 100 * e["survey"]["over_tolerance_share"]) for n, e in engines.items()))
 PY

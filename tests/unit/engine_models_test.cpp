@@ -398,11 +398,12 @@ TEST(EnginePresetPolicy, ClippingCutsTheBoxInPlanToTheInfluenceAndScalingWidensT
   EXPECT_NEAR(box.halfExtentsMeters.y, 2.0, 1e-9);
   EXPECT_NEAR(box.halfExtentsMeters.z, 1.5, 1e-9);  // the height stays
   EXPECT_NEAR(e.godot->blendDistance, 1.0, 1e-12);  // twice the 0.5 m fade
-  EXPECT_EQ(makeRuntimeExport(r.scene, r.builds, {0.0, false, false})
+  EXPECT_EQ(makeRuntimeExport(r.scene, r.builds, EnginePresetPolicy{0.0})
                 .probes[0]
                 .engines.godot->blendDistance,
             0.0);
-  EXPECT_THROW(makeRuntimeExport(r.scene, r.builds, {5.0, false, false}), std::invalid_argument);
+  EXPECT_THROW(makeRuntimeExport(r.scene, r.builds, EnginePresetPolicy{5.0}),
+               std::invalid_argument);
 }
 
 TEST(EngineModels, TheGenericModelIsTheSurveysOwnBlend) {

@@ -201,6 +201,8 @@ std::string layoutReportJson(const LayoutJobOptions& o, const LayoutJobResult& r
       policy["clip_to_influence"] = p.clipToInfluence;
       policy["fade_scale"] = p.fadeScale;
       policy["clear_the_floor"] = p.clearTheFloor;
+      policy["cube_about_capture"] = p.cubeAboutCapture;
+      policy["influence_inside"] = p.influenceInside;
       return policy;
     };
     nlohmann::ordered_json engines;
@@ -314,8 +316,8 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
     SurveyOptions trial = survey;
     trial.samplesPerCell = std::min(survey.samplesPerCell, kEngineTrialSamplesPerCell);
     const SurveyFloor trialFloor = prepareSurveyFloor(seeds, rayCaster, trial);
-    r.engines = choosePresetsForEngines(o.engines, r.scene, r.builds, rayCaster, floor,
-                                        trialFloor, survey);
+    r.engines =
+        choosePresetsForEngines(o.engines, r.scene, r.builds, rayCaster, floor, trialFloor, survey);
     if (o.engines.size() == 1 && !r.engines.empty()) r.survey = r.engines.front().survey;
   }
   r.survey.scene = baselineName(o.layout.baseline);
