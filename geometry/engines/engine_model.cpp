@@ -16,7 +16,8 @@ namespace probeproxy {
 namespace {
 
 // The far slab crossing of the ray (x, r) in the box's own frame: the shaders' box projection,
-// whichever side of the box x is on. fmax drops the NaN of 0 / 0 (a ray in a face's plane).
+// whichever side of the box x is on (then it may lie behind x). fmax drops the NaN of 0 / 0 (a
+// ray in a face's plane).
 std::optional<double> boxSlabExit(const BoxShape& box, glm::dvec3 x, glm::dvec3 r) {
   const glm::dquat boxFromWorld = glm::conjugate(box.worldFromBox);
   const glm::dvec3 p = boxFromWorld * (x - box.centerMeters);
@@ -26,7 +27,8 @@ std::optional<double> boxSlabExit(const BoxShape& box, glm::dvec3 x, glm::dvec3 
     const double h = box.halfExtentsMeters[axis];
     t = std::fmin(t, std::fmax((h - p[axis]) / d[axis], (-h - p[axis]) / d[axis]));
   }
-  if (!std::isfinite(t) || t < 0.0) return std::nullopt;
+  // Behind x when x is outside the box: the shaders use it as it comes, and so do we.
+  if (!std::isfinite(t)) return std::nullopt;
   return t;
 }
 

@@ -33,7 +33,7 @@ enum class Projection {
               // box's own frame (UnityStandardUtils.cginc BoxProjectedCubemapDirection, Godot's
               // reflection_process, Unreal's GetLookupVectorForBoxCapture, HDRP's
               // IntersectBoxProxy, EEVEE's line_unit_box_intersect_dist): from outside the box
-              // too, as the shaders do
+              // too, and t < 0 as it comes, as the shaders do
 };
 
 struct EngineProbe {
