@@ -12,7 +12,7 @@ sky / ambient fallback) and p95 for the three, and the layout-to-grid ratio of t
 5 deg. With --jsonl FILE each level's figures are also appended there as they come.
 
   /usr/bin/python3 scripts/engine_table.py build/plugin/cli/probeproxy build/corpus/scenes \
-      [--levels downer toxic] [--work DIR] [--jsonl FILE]
+      [--levels downer toxic] [--engines unity godot3] [--work DIR] [--jsonl FILE]
 """
 import argparse
 import glob
@@ -34,15 +34,16 @@ def figures(survey):
             "uncovered": survey["uncovered_share"]}
 
 
-def level_figures(probeproxy, scene, work):
+def level_figures(probeproxy, scene, work, engines):
     plain, engine, grid = (os.path.join(work, kind) for kind in ("plain", "engine", "grid"))
     layout = run_json(probeproxy, "layout", scene, "--out", plain, "--json")
-    tuned = run_json(probeproxy, "layout", scene, "--out", engine, "--json", "--engine", "all")
+    names = ",".join(engines)
+    tuned = run_json(probeproxy, "layout", scene, "--out", engine, "--json", "--engine", names)
     baseline = run_json(probeproxy, "layout", scene, "--out", grid, "--json", "--baseline",
-                        "grid", "--max-probes", str(layout["probes"]), "--engine", "all")
+                        "grid", "--max-probes", str(layout["probes"]), "--engine", names)
     out = {"probes": layout["probes"], "grid_probes": baseline["probes"],
            "generic": figures(layout["survey"]), "engines": {}}
-    for engine in ENGINES:
+    for engine in engines:
         today = run_json(probeproxy, "survey", os.path.join(plain, "layout.scene.json"),
                          "--engine", engine, "--proxies", os.path.join(plain, "proxies.json"),
                          "--json")
@@ -68,6 +69,7 @@ def main():
     parser.add_argument("--levels", nargs="*", default=[])
     parser.add_argument("--work", help="keep every run's output here")
     parser.add_argument("--jsonl", help="append each level's figures to this file")
+    parser.add_argument("--engines", nargs="*", default=list(ENGINES))
     args = parser.parse_args()
 
     scenes = sorted(glob.glob(os.path.join(args.scenes, "*", "*.scene.json")))
@@ -78,11 +80,11 @@ def main():
         for scene in scenes:
             level = os.path.basename(os.path.dirname(scene))
             work = os.path.join(args.work or scratch, level)
-            results[level] = level_figures(args.probeproxy, scene, work)
+            results[level] = level_figures(args.probeproxy, scene, work, args.engines)
             if args.jsonl:
                 with open(args.jsonl, "a") as f:
                     f.write(json.dumps({"level": level, **results[level]}) + "\n")
-    for engine in ENGINES:
+    for engine in args.engines:
         print("\n**%s** (floor over 5 deg / uncovered / p95 deg)\n" % engine)
         print("| level | generic layout's presets | layout for %s | same-count grid for %s "
               "| over 5 deg, layout / grid |" % (engine, engine))

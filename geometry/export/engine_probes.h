@@ -58,9 +58,11 @@ struct EngineSource {
 // blendDistance ("Distance around probe used for blending (used in deferred probes)", default
 // 1): Internal-DeferredReflections.shader fades each probe *outside* its box over that distance
 // and projects on the box grown by it. So the export writes the measured box shrunk by
-// blendDistance on every side: Unity projects on exactly the measured box and fades to 0 at its
-// faces. blendDistance = transitionDistanceMeters(influence), at least kUnityMinBlendMeters
-// (Unity divides by it) and at most half the box's shortest half-extent.
+// blendDistance on every side but the bottom: Unity projects on exactly the measured box, but
+// for a bottom face blendDistance lower (a mirror floor's reflections go up and never meet it),
+// and fades to 0 at its other faces, while a floor on the bottom keeps full weight.
+// blendDistance = transitionDistanceMeters(influence), at least kUnityMinBlendMeters (Unity
+// divides by it) and at most half the box's shortest half-extent.
 struct UnityReflectionProbe {
   EngineSource source;
   glm::dvec3 position{0.0};    // Transform.position: the capture point, metres

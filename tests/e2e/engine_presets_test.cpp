@@ -162,7 +162,8 @@ struct Worst {
 class EnginePreset : public ::testing::TestWithParam<Level> {};
 
 // Unity: left-handed, Y up, metres; Unity (u, v, w) is world (-u, -w, v). The box projected
-// on is [position + center -+ (size / 2 + blend_distance)], axis-aligned in Unity's world
+// on is [position + center -+ (size / 2 + blend_distance)]: the measured box with its bottom
+// blend_distance lower; axis-aligned in Unity's world
 // (UnityStandardUtils.cginc, BoxProjectedCubemapDirection: boxMin / boxMax in world space;
 // Internal-DeferredReflections.shader grows them by the blend distance); the lookup is made from
 // `position` (cubemapCenter), which must be the capture point.
@@ -180,7 +181,11 @@ TEST_P(EnginePreset, UnityBoxIsPositionPlusCenterWithFullSizeGrownByTheBlendDist
     std::vector<glm::dvec3> unity;
     for (const glm::dvec3& c : corners(position + center, glm::dquat(1, 0, 0, 0), half))
       unity.push_back(world(c));
-    const BoxShape box = sourceBox(e.builds[i], entry);
+    // The measured box, but its bottom blend_distance lower (Unity's size keeps the floor).
+    BoxShape box = sourceBox(e.builds[i], entry);
+    const double below = entry["blend_distance"].get<double>();
+    box.centerMeters.z -= 0.5 * below;
+    box.halfExtentsMeters.z += 0.5 * below;
     EXPECT_LT(std::abs(std::abs(box.worldFromBox.w) - 1.0), 1e-12) << "Unity got a turned box";
     worst.corners = std::max(worst.corners, cornerDistance(unity, worldCorners(box)));
     worst.capture =

@@ -294,14 +294,16 @@ TEST_P(SuiteLevel, EnginePresetsAreTheKeptBox) {
       EXPECT_EQ(source->error.p95Deg, kept.error.p95Deg) << b.probe;
     }
     // Unity: axis-aligned, box centre = position + center, full size grown by the blend
-    // distance on every side (what Unity projects on); left-handed Y up: Unity (u, v, w) is
-    // world (-u, -w, v).
+    // distance on every side (what Unity projects on: the kept box, its bottom lowered by the
+    // blend distance); left-handed Y up: Unity (u, v, w) is world (-u, -w, v).
     if (methodId(ProxyShape(*box)) == "aabb") {
       ASSERT_TRUE(e.unity) << b.probe;
+      // The projected box's bottom lies blend_distance under the kept one's (Unity's y is up).
+      const double blend = e.unity->blendDistance;
       std::vector<glm::dvec3> unity;
-      for (const glm::dvec3& c :
-           boxCorners(e.unity->position + e.unity->center, glm::dquat(1, 0, 0, 0),
-                      e.unity->size / 2.0 + e.unity->blendDistance))
+      for (const glm::dvec3& c : boxCorners(
+               e.unity->position + e.unity->center + glm::dvec3(0.0, 0.5 * blend, 0.0),
+               glm::dquat(1, 0, 0, 0), e.unity->size / 2.0 + glm::dvec3(blend, 0.5 * blend, blend)))
         unity.push_back({-c.x, -c.z, c.y});
       EXPECT_LE(cornerDistance(unity, keptCorners), kTolerance) << b.probe << " unity";
       EXPECT_TRUE(e.unity->source.keptProxy) << b.probe;

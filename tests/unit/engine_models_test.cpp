@@ -121,7 +121,7 @@ TEST(EngineNames, EveryNameRoundTripsAndAnUnknownOneIsRefusedWithTheList) {
 
 TEST(UnityModel, TheExportedBoxFadesOutToTheMeasuredBoxSmallerBoxOnTop) {
   // blendDistance = the 1 m fade, at most half the shortest half-extent (1.5 m): 0.75 m; the
-  // exported box is [0, 4]^2 x [0, 3] shrunk by it.
+  // exported box is [0, 4]^2 x [0, 3] shrunk by it but at the bottom: [0.75, 3.25]^2 x [0, 2.25].
   const RuntimeExport presets = oneProbe(kBox);
   ASSERT_EQ(presets.probes[0].engines.unity->blendDistance, 0.75);
   const EngineModel model = unityModel(presets);
@@ -312,16 +312,16 @@ TEST(EngineModels, AnExactBoxRoomIsExactWhereTheEngineProjectsOnTheRoom) {
 }
 
 // The same room's floor lies on the probe box's bottom face. Engines that fade inside the box
-// (HDRP, Godot 3's curve, Godot 4's blend distance, Bevy's falloff, EEVEE's attenuation, and
-// Unity once its box is shrunk so that it fades to the measured box) give it no probe at all:
-// the sky shows. Unreal's transition leaves 0.198 on the face; the generic model takes its
+// (HDRP, Godot 3's curve, Godot 4's blend distance, Bevy's falloff, EEVEE's attenuation) give
+// it no probe at all: the sky shows. Unreal's transition leaves 0.198 on the face; Unity fades
+// outside its box, whose bottom the export keeps at the floor; the generic model takes its
 // weights 5 cm over the floor.
 TEST(EngineModels, AFloorOnTheBoxFaceIsLeftToTheSkyByEnginesThatFadeInside) {
   const BoxShape room{{5.0, 2.0, 1.5}, {5.0, 2.0, 1.5}, kUnturned};
   const RuntimeExport presets = oneProbe(room);
   const glm::dvec3 floor{3.0, 1.5, 0.0};
   const std::map<Engine, double> sky = {
-      {Engine::Generic, 0.0},   {Engine::Unity, 1.0},
+      {Engine::Generic, 0.0},   {Engine::Unity, 0.0},
       {Engine::UnityHdrp, 1.0}, {Engine::Unreal, 1.0 - (1.0 - smoothstep(0.0, 0.7, 0.5))},
       {Engine::Godot3, 1.0},    {Engine::Godot4, 1.0},
       {Engine::Bevy, 1.0},      {Engine::Eevee, 1.0}};

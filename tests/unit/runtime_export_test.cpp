@@ -520,11 +520,12 @@ TEST_F(RuntimeExport, UnityBoxIsLeftHandedYUpRelativeToTheProbeShrunkByItsBlendD
   const UnityReflectionProbe u = unityReflectionProbe(kRoomBox, kCapture, influence);
   // Unity (x, y, z) = world (-x, z, -y).
   expectClose(u.position, {-1.0, 1.2, -0.5}, 1e-15);
-  expectClose(u.center, {1.0, 0.3, 0.5}, 1e-15);  // (-(-1), 0.3, -(-0.5))
   // Unity fades outside the box over blendDistance (the influence's 0.5 m fade) and projects on
-  // the box grown by it: the full size x 6, height 3, depth 4 less 2 x 0.5 m.
+  // the box grown by it: the full size x 6, height 3, depth 4 less 2 x 0.5 m, but the height
+  // only at the top (the bottom, the floor, stays): height 2.5, centre 0.25 m lower.
   EXPECT_EQ(u.blendDistance, 0.5);
-  expectClose(u.size, {5.0, 2.0, 3.0}, 1e-15);
+  expectClose(u.size, {5.0, 2.5, 3.0}, 1e-15);
+  expectClose(u.center, {1.0, 0.05, 0.5}, 1e-15);  // (-(-1), 0.3 - 0.25, -(-0.5))
   EXPECT_TRUE(u.boxProjection);
   // No fade: the smallest Unity can divide by. A wide fade: half the shortest half-extent.
   EXPECT_EQ(
@@ -721,7 +722,8 @@ TEST_F(RuntimeExport, EnginesTakeTheKeptBoxElseTheBestBoxAndUnityAnAabb) {
   expectClose(c6.unrealBox->scale3D, {300.0, 200.0, 150.0}, 1e-12);
   EXPECT_EQ(c6.unity->source.candidate, "convex_6");
   // The room's size, shrunk on every side by the blend distance Unity grows it by again.
-  expectClose(c6.unity->size + 2.0 * c6.unity->blendDistance, {6.0, 3.0, 4.0}, 1e-14);
+  const double b = c6.unity->blendDistance;
+  expectClose(c6.unity->size + glm::dvec3(2.0 * b, b, 2.0 * b), {6.0, 3.0, 4.0}, 1e-14);
   EXPECT_TRUE(c6.unityHdrp && c6.eevee);
   EXPECT_EQ(c6.eevee->source.candidate, "convex_6");
 
