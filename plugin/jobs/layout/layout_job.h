@@ -47,9 +47,9 @@ struct LayoutJobOptions {
 struct LayoutJobResult {
   Scene scene;  // the layout: its probes, level paths relative to outFolder
   LayoutResult layout;
-  std::vector<ProbeProxyBuild> builds;              // scene order
-  SurveyResult survey;                      // the generic model's, or the one engine's
-  std::vector<EnginePresetChoice> engines;  // each engine asked for (Generic left out)
+  std::vector<ProbeProxyBuild> builds;         // scene order
+  SurveyResult survey;                         // the generic model's, or the one engine's
+  std::vector<EnginePresetChoice> engines;     // each engine asked for (Generic left out)
   std::string json;                            // layout.json: the layout's and survey's figures
   std::vector<std::filesystem::path> written;  // when outFolder is set
 };
