@@ -178,6 +178,8 @@ struct EnginePresetPolicy {
   // the scene's outer range, instead of the smallest holding it (which reaches past the near
   // side); in height it still holds the range, floor included.
   bool influenceInside = false;
+
+  bool operator==(const EnginePresetPolicy&) const = default;
 };
 
 // The export of `builds` (one per probe, each naming a probe of `scene`, in the order given).

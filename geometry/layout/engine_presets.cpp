@@ -3,6 +3,7 @@
 #include "geometry/engines/engine_model.h"
 
 #include <cmath>
+#include <deque>
 #include <stdexcept>
 #include <tuple>
 
@@ -76,21 +77,38 @@ std::vector<EnginePresetPolicy> enginePresetPolicies(Engine engine) {
   return policies;
 }
 
-EnginePresetChoice choosePresetsForEngine(Engine engine, const Scene& scene,
-                                          const std::vector<ProbeProxyBuild>& builds,
-                                          const LevelRayCaster& level, const SurveyFloor& floor,
-                                          const SurveyFloor& trialFloor,
-                                          const SurveyOptions& survey,
-                                          std::span<const EnginePresetPolicy> policies) {
+namespace {
+
+// The presets each policy makes, as proxies.json will read them back (the engine numbers
+// rounded as written), made once however many engines try the policy.
+class PresetsByPolicy {
+ public:
+  PresetsByPolicy(const Scene& scene, const std::vector<ProbeProxyBuild>& builds)
+      : scene_(scene), builds_(builds) {}
+
+  const RuntimeExport& operator()(const EnginePresetPolicy& policy) {
+    for (const auto& [made, presets] : made_)
+      if (made == policy) return presets;
+    made_.emplace_back(
+        policy, parseRuntimeExport(runtimeExportJson(makeRuntimeExport(scene_, builds_, policy)),
+                                   kProxiesJsonName));
+    return made_.back().second;
+  }
+
+ private:
+  const Scene& scene_;
+  const std::vector<ProbeProxyBuild>& builds_;
+  std::deque<std::pair<EnginePresetPolicy, RuntimeExport>> made_;  // stable references
+};
+
+EnginePresetChoice choose(Engine engine, PresetsByPolicy& presetsOf, const LevelRayCaster& level,
+                          const SurveyFloor& floor, const SurveyFloor& trialFloor,
+                          const SurveyOptions& survey,
+                          std::span<const EnginePresetPolicy> policies) {
   if (engine == Engine::Generic)
     throw std::invalid_argument("choosePresetsForEngine: the generic model has no presets");
   SurveyOptions options = survey;
   options.engine = engine;
-  // What proxies.json will hold, read back: the engine numbers rounded as written.
-  const auto presetsOf = [&](const EnginePresetPolicy& policy) {
-    return parseRuntimeExport(runtimeExportJson(makeRuntimeExport(scene, builds, policy)),
-                              kProxiesJsonName);
-  };
   EnginePresetChoice best;
   best.engine = engine;
   SurveyFigures bestTrial;
@@ -108,15 +126,28 @@ EnginePresetChoice choosePresetsForEngine(Engine engine, const Scene& scene,
   return best;
 }
 
+}  // namespace
+
+EnginePresetChoice choosePresetsForEngine(Engine engine, const Scene& scene,
+                                          const std::vector<ProbeProxyBuild>& builds,
+                                          const LevelRayCaster& level, const SurveyFloor& floor,
+                                          const SurveyFloor& trialFloor,
+                                          const SurveyOptions& survey,
+                                          std::span<const EnginePresetPolicy> policies) {
+  PresetsByPolicy presetsOf(scene, builds);
+  return choose(engine, presetsOf, level, floor, trialFloor, survey, policies);
+}
+
 std::vector<EnginePresetChoice> choosePresetsForEngines(
     std::span<const Engine> engines, const Scene& scene, const std::vector<ProbeProxyBuild>& builds,
     const LevelRayCaster& level, const SurveyFloor& floor, const SurveyFloor& trialFloor,
     const SurveyOptions& survey) {
+  PresetsByPolicy presetsOf(scene, builds);  // most policies are tried by every engine
   std::vector<EnginePresetChoice> choices;
   for (const Engine engine : engines) {
     if (engine == Engine::Generic) continue;
-    choices.push_back(choosePresetsForEngine(engine, scene, builds, level, floor, trialFloor,
-                                             survey, enginePresetPolicies(engine)));
+    choices.push_back(
+        choose(engine, presetsOf, level, floor, trialFloor, survey, enginePresetPolicies(engine)));
   }
   return choices;
 }
