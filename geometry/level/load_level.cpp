@@ -198,10 +198,10 @@ LevelMesh loadLevelMeshFile(const std::filesystem::path& file, UpAxis fileUp,
   AssimpErrorLog errors;
   // Before any Assimp code reads the file: its glTF importer's signature check already takes
   // a GLB chunk's length as given.
-  if (const std::string ext = lowerExtension(file); ext == ".gltf" || ext == ".glb") {
-    const std::string claim = gltfClaimProblem(file);
-    if (!claim.empty()) throw InputError(file, "malformed mesh: " + claim);
-  }
+  const std::string ext = lowerExtension(file);
+  const bool gltf = ext == ".gltf" || ext == ".glb";
+  const GltfClaims claims = gltf ? gltfClaims(file) : GltfClaims{};
+  if (!claims.problem.empty()) throw InputError(file, "malformed mesh: " + claims.problem);
   Assimp::Importer importer;
   requireExtensionImporterAccepts(importer, file);
   // Polygons are triangulated; nothing is welded, fixed or removed, so what we measure is the
@@ -215,6 +215,17 @@ LevelMesh loadLevelMeshFile(const std::filesystem::path& file, UpAxis fileUp,
   }
   if (!errors.firstError().empty())
     throw InputError(file, "malformed mesh: " + errors.firstError());
+  if (gltf) {
+    std::vector<std::size_t> trianglesRead;
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+      const aiMesh& mesh = *scene->mMeshes[m];
+      trianglesRead.push_back(
+          std::size_t(std::count_if(mesh.mFaces, mesh.mFaces + mesh.mNumFaces,
+                                    [](const aiFace& f) { return f.mNumIndices == 3; })));
+    }
+    const std::string lost = gltfTrianglesLostProblem(claims, trianglesRead);
+    if (!lost.empty()) throw InputError(file, "malformed mesh: " + lost);
+  }
 
   LevelMesh level;
   if (scene->mRootNode != nullptr) {

@@ -59,6 +59,47 @@ std::uint64_t binaryCount(const char* at, int size, Encoding encoding) {
   return value;
 }
 
+// An ASCII instance is one line (the PLY standard's layout, and what CGAL's reader takes):
+// exactly the values its properties declare, a list's count first. A line short of a value
+// would shift every later value into the wrong property. Blank lines are skipped. Moves `at`
+// past the line.
+std::string asciiInstanceProblem(const std::string& bytes, std::size_t& at, const Element& element,
+                                 std::uint64_t index) {
+  std::string line;
+  while (at < bytes.size() && line.find_first_not_of(" \t\r") == std::string::npos) {
+    std::size_t lineEnd = bytes.find('\n', at);
+    if (lineEnd == std::string::npos) lineEnd = bytes.size();
+    line = bytes.substr(at, lineEnd - at);
+    at = lineEnd + 1;
+  }
+  if (line.find_first_not_of(" \t\r") == std::string::npos) return kIncomplete;
+  std::istringstream words(line);
+  std::vector<std::string> values{std::istream_iterator<std::string>(words), {}};
+  const std::string where = "PLY element " + element.name + " " + std::to_string(index);
+  const auto miscount = [&](const char* fewerOrMore) {
+    return where + ": its line holds " + std::to_string(values.size()) + " values, " +
+           fewerOrMore + " than its properties declare (one element to a line)";
+  };
+  std::size_t next = 0;
+  for (const Property& property : element.properties) {
+    if (next >= values.size()) return miscount("fewer");
+    if (property.countSize == 0) {
+      ++next;
+      continue;
+    }
+    char* rest = nullptr;
+    const std::uint64_t items = std::strtoull(values[next].c_str(), &rest, 10);
+    if (values[next][0] == '-' || *rest != '\0')
+      return where + ": list count '" + values[next] + "' is not a count";
+    if (items > values.size() - next - 1) {
+      return where + ": a list of " + std::to_string(items) + " items, past the end of its line";
+    }
+    next += 1 + items;
+  }
+  if (next != values.size()) return miscount("more");
+  return {};
+}
+
 }  // namespace
 
 std::string plyClaimProblem(const std::filesystem::path& file) {
@@ -130,12 +171,7 @@ std::string plyClaimProblem(const std::filesystem::path& file) {
   // The data: skip each value; at each list, the count must fit in what is left.
   std::size_t at = body;
   const std::size_t end = bytes.size();
-  const auto skipToken = [&] {
-    while (at < end && std::isspace(static_cast<unsigned char>(bytes[at]))) ++at;
-    const std::size_t start = at;
-    while (at < end && !std::isspace(static_cast<unsigned char>(bytes[at]))) ++at;
-    return bytes.substr(start, at - start);
-  };
+
   for (const Element& element : elements) {
     // Every instance takes a byte at the least; one of no property (every one of a type CGAL
     // ignores) takes none, but CGAL still loops over as many as the header claims (found by
@@ -147,41 +183,29 @@ std::string plyClaimProblem(const std::filesystem::path& file) {
     }
     if (element.properties.empty()) continue;
     for (std::uint64_t i = 0; i < element.count; ++i) {
+      if (encoding == Encoding::Ascii) {
+        if (std::string p = asciiInstanceProblem(bytes, at, element, i); !p.empty()) return p;
+        continue;
+      }
       for (const Property& property : element.properties) {
         // Data cut short: CGAL would go on reading counts from a stream at its end (found by
         // fuzz_level_ply: a count of garbage, then a loop as long as it says).
-        if (at >= end) return kIncomplete;
-        std::uint64_t items = 0, itemBytes = 0;
-        if (encoding == Encoding::Ascii) {
-          if (property.countSize == 0) {
-            skipToken();
-            continue;
-          }
-          items = std::strtoull(skipToken().c_str(), nullptr, 10);
-          itemBytes = 2;  // a digit and a separator, at the least
-        } else {
-          if (at + std::max(property.countSize, property.size) > end) return kIncomplete;
-          if (property.countSize == 0) {
-            at += property.size;
-            continue;
-          }
-          items = binaryCount(bytes.data() + at, property.countSize, encoding);
-          if (property.countSigned && (items >> (8 * property.countSize - 1)) != 0) {
-            return "PLY element " + element.name + " " + std::to_string(i) +
-                   ": a list of a negative number of items";
-          }
-          at += property.countSize;
-          itemBytes = property.size;
+        if (at + std::max(property.countSize, property.size) > end) return kIncomplete;
+        if (property.countSize == 0) {
+          at += property.size;
+          continue;
         }
-        if (items > (end - at) / itemBytes) {
+        const std::uint64_t items = binaryCount(bytes.data() + at, property.countSize, encoding);
+        if (property.countSigned && (items >> (8 * property.countSize - 1)) != 0) {
+          return "PLY element " + element.name + " " + std::to_string(i) +
+                 ": a list of a negative number of items";
+        }
+        at += property.countSize;
+        if (items > (end - at) / std::uint64_t(property.size)) {
           return "PLY element " + element.name + " " + std::to_string(i) + ": a list of " +
                  std::to_string(items) + " items, past the end of the file";
         }
-        if (encoding == Encoding::Ascii) {
-          for (std::uint64_t k = 0; k < items; ++k) skipToken();
-        } else {
-          at += items * itemBytes;
-        }
+        at += items * std::uint64_t(property.size);
       }
     }
   }

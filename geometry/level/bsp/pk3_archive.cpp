@@ -52,8 +52,8 @@ std::vector<std::byte> readFileFromPk3(const std::filesystem::path& archive,
     throw InputError(archive, "\"" + name + "\": " + zip_strerror(zip.get()));
   }
   // The size the archive claims, checked before the buffer is taken: a few kilobytes of zip can
-  // claim (and a deflate stream can inflate to) gigabytes. libzip stops at the claimed size and
-  // checks the CRC, so a stream that inflates past its claim does not get further.
+  // claim (and a deflate stream can inflate to) gigabytes. The reads below stop at the claimed
+  // size, so a stream that inflates past its claim does not get further.
   if (stat.size > inputLimits().maxFileBytes()) {
     throw InputError(archive, fileLimitProblem("\"" + name + "\" inflated", stat.size));
   }
@@ -74,6 +74,18 @@ std::vector<std::byte> readFileFromPk3(const std::filesystem::path& archive,
   if (done != stat.size) {
     throw InputError(archive, "\"" + name + "\": archive entry ends after " + std::to_string(done) +
                                   " of " + std::to_string(stat.size) + " bytes");
+  }
+  // libzip compares the CRC only when a read reaches the end of the entry, which reading
+  // exactly the claimed size never does.
+  char past = 0;
+  const zip_int64_t more = zip_fread(file.get(), &past, 1);
+  if (more < 0) {
+    throw InputError(archive, "\"" + name + "\": " + zip_file_strerror(file.get()) +
+                                  " (its bytes are not those the archive recorded)");
+  }
+  if (more > 0) {
+    throw InputError(archive, "\"" + name + "\": archive entry holds more than the " +
+                                  std::to_string(stat.size) + " bytes it claims");
   }
   return bytes;
 }
