@@ -2,6 +2,7 @@
 
 #include "core/errors/input_error.h"
 #include "core/image/write_exr.h"
+#include "core/io/regular_file.h"
 #include "core/scene/scene_limits.h"
 
 #include <OpenImageIO/imageio.h>
@@ -24,9 +25,7 @@ constexpr int kMaxImageSide = 65536;
 }  // namespace
 
 RgbImage readRgbImage(const std::filesystem::path& file, const std::string& what, SrgbImages srgb) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec))
-    throw InputError(file, what + " file is missing");
+  requireRegularFile(file, what + " file");
   std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(file.string());
   if (!in) throw InputError(file, "cannot read image: " + OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();

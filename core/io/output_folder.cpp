@@ -21,8 +21,8 @@ void checkOutputFolder(const std::filesystem::path& folder) {
     existing = existing.parent_path();
   }
   if (!fs::is_directory(existing, error)) {
-    throw InputError(folder, "output folder cannot be made: " + existing.string() +
-                                 " is not a folder");
+    throw InputError(folder,
+                     "output folder cannot be made: " + existing.string() + " is not a folder");
   }
   // Permission bits do not tell (root may write anywhere, except in /proc or on a read-only
   // mount): make and remove a folder where the output would go.

@@ -63,6 +63,10 @@ bool isOurProxiesJson(const fs::path& file) {
 void refuseForeignOutputs(const fs::path& json, const fs::path& glb) {
   std::error_code ec;
   const bool jsonExists = fs::exists(json, ec);
+  for (const fs::path& output : {json, glb}) {
+    if (fs::exists(output, ec) && !fs::is_regular_file(output, ec))
+      throw InputError(output, std::string("exists and is not a file") + kMoveIt);
+  }
   if (jsonExists && !isOurProxiesJson(json)) {
     throw InputError(json, std::string("exists and is not a probeproxy runtime export (no \"") +
                                kRuntimeExportFormatId + "\" member)" + kMoveIt);

@@ -17,12 +17,13 @@ ProxyBuildOptions LayoutOptions::coarseCandidateProxyOptions() {
 }
 
 void LayoutOptions::check() const {
-  requirePositive("tolerance_deg", toleranceDeg);
+  requireInRange("tolerance_deg", toleranceDeg, 1e-9, 180.0);
   requireInRange("spacing", spacingMeters, 0.25, 100.0);
   requireInRange("max_candidates", maxCandidates, std::size_t{1}, std::size_t{1'000'000});
   if (reachMeters != 0.0) requireInRange("reach", reachMeters, 0.5, 1000.0);
   requireInRange("capture_height", captureHeightMeters, 0.05, 10.0);
-  requireNonNegative("blend_band", blendBandMeters);
+  // Wider than any room: the bands reach over the level and past the limits of a scene.
+  requireInRange("blend_band", blendBandMeters, 0.0, kMaxBlendBandMeters);
   requireInRange("samples_per_cell", samplesPerCell, 1, 64);
   requireInRange<std::size_t>("max_probes", maxProbes, 0, 100'000);
   if (keepAuthored && baseline != LayoutBaseline::None)

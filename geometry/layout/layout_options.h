@@ -17,6 +17,8 @@ enum class LayoutBaseline {
   Spawn,  // a probe at every spawn point, a sphere of `reachMeters` (or 10 m), auto proxies
 };
 
+inline constexpr double kMaxBlendBandMeters = 50.0;
+
 struct LayoutOptions {
   LayoutBaseline baseline = LayoutBaseline::None;
   double toleranceDeg = 5.0;  // a floor sample is served where one probe's error is this or less

@@ -1,6 +1,7 @@
 #include "geometry/layout/run_layout.h"
 
 #include "core/errors/input_error.h"
+#include "core/io/memory_budget.h"
 #include "geometry/layout/bands_in_sight.h"
 #include "geometry/layout/candidate_service.h"
 #include "geometry/layout/capture_sight.h"
@@ -137,6 +138,26 @@ void dropProbes(const std::set<std::size_t>& gone, std::vector<LayoutProbe>& pro
   optional = std::move(optionalLeft);
 }
 
+// The candidate tables at their worst, every capture point seeing every floor sample: its
+// sight (4 bytes a sample) and its cell of the in-sight cache (1 byte a cell); for each of up to
+// three fit regions, the samples served (4 bytes), the selection's seen flags (1 byte) and
+// share of each cell (4 bytes). Checked before any is made: a 200 m open floor asked for 17 GiB
+// and died of std::bad_alloc after a minute.
+void requireCandidateTablesFit(std::size_t captures, std::size_t samples, std::size_t cells) {
+  const std::uint64_t perCapture = 4 * samples + cells + 3 * (5 * samples + 4 * cells);
+  const std::uint64_t budget = usableMemoryBytes() / 10 * 8;
+  if (std::uint64_t(captures) * perCapture <= budget) return;
+  const std::uint64_t fits = budget / perCapture;
+  throw InputError("layout",
+                   "judging " + std::to_string(captures) + " capture points on " +
+                       std::to_string(samples) + " floor samples may take up to " +
+                       gibibytesText(std::uint64_t(captures) * perCapture) + ", more than the " +
+                       gibibytesText(budget) + " this process can use; " +
+                       (fits >= 1 ? "lower --max-candidates (" + std::to_string(fits) + " fit) or "
+                                  : std::string()) +
+                       "lay the level out in parts");
+}
+
 void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3> seedsMeters,
                         const WalkableFloor& floor, const LayoutOptions& o,
                         const std::function<void(std::size_t, std::size_t)>& onDone,
@@ -153,6 +174,7 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
       layoutCandidates(level, floor, o.spacingMeters, o.captureHeightMeters, o.maxCandidates);
   const std::vector<LayoutCandidate>& candidates = grid.points;
   r.spacingMeters = grid.spacingMeters;
+  requireCandidateTablesFit(candidates.size(), samples.size(), floor.cells.size());
   // Thousands of candidates ask for the floor they serve: one floor graph answers them all.
   LayoutOptions withGraph = o;
   withGraph.candidateProxy.samples.floorGraph =

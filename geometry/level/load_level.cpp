@@ -1,9 +1,11 @@
 #include "geometry/level/load_level.h"
 
 #include "core/errors/input_error.h"
+#include "core/io/regular_file.h"
 #include "core/scene/scene_limits.h"
 #include "geometry/level/bsp/bsp_level.h"
 #include "geometry/level/gltf_claims.h"
+#include "geometry/level/obj_material_libraries.h"
 #include "geometry/level/polygon_soup_file.h"
 
 #include <assimp/BaseImporter.h>
@@ -36,9 +38,8 @@ void requireReadableMeshFile(const std::filesystem::path& file) {
     throw InputError(
         file, "unsupported mesh format '" + ext + "' (expected .glb, .gltf, .obj, .ply or .off)");
   }
+  requireRegularFile(file, "mesh file");
   std::error_code ec;
-  if (!std::filesystem::exists(file, ec)) throw InputError(file, "mesh file not found");
-  if (!std::filesystem::is_regular_file(file, ec)) throw InputError(file, "not a regular file");
   const std::uintmax_t bytes = std::filesystem::file_size(file, ec);
   if (bytes == 0) throw InputError(file, "mesh file is empty");
   if (bytes > inputLimits().maxFileBytes())
@@ -201,6 +202,7 @@ LevelMesh loadLevelMeshFile(const std::filesystem::path& file, UpAxis fileUp,
   const std::string ext = lowerExtension(file);
   const bool gltf = ext == ".gltf" || ext == ".glb";
   const GltfClaims claims = gltf ? gltfClaims(file) : GltfClaims{};
+  if (ext == ".obj") requireReadableMaterialLibraries(file);
   if (!claims.problem.empty()) throw InputError(file, "malformed mesh: " + claims.problem);
   Assimp::Importer importer;
   requireExtensionImporterAccepts(importer, file);

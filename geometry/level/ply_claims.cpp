@@ -77,8 +77,8 @@ std::string asciiInstanceProblem(const std::string& bytes, std::size_t& at, cons
   std::vector<std::string> values{std::istream_iterator<std::string>(words), {}};
   const std::string where = "PLY element " + element.name + " " + std::to_string(index);
   const auto miscount = [&](const char* fewerOrMore) {
-    return where + ": its line holds " + std::to_string(values.size()) + " values, " +
-           fewerOrMore + " than its properties declare (one element to a line)";
+    return where + ": its line holds " + std::to_string(values.size()) + " values, " + fewerOrMore +
+           " than its properties declare (one element to a line)";
   };
   std::size_t next = 0;
   for (const Property& property : element.properties) {

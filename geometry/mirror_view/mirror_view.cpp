@@ -1,6 +1,7 @@
 #include "geometry/mirror_view/mirror_view.h"
 
 #include "core/errors/input_error.h"
+#include "core/io/regular_file.h"
 #include "geometry/scene/json_document.h"
 
 #include <glm/geometric.hpp>
@@ -74,6 +75,7 @@ struct Reader {
 };
 
 std::string readText(const std::filesystem::path& file) {
+  requireRegularFile(file, "mirror view file");
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(file, "cannot open mirror view file");
   std::ostringstream bytes;

@@ -1,6 +1,7 @@
 #include "geometry/scene/json_document.h"
 
 #include "core/errors/input_error.h"
+#include "core/io/regular_file.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -213,6 +214,9 @@ struct FileCloser {
 }  // namespace
 
 std::string readJsonFile(const std::filesystem::path& file) {
+  // A missing file is fopen's to name, as any other failure to open.
+  std::error_code exists;
+  if (std::filesystem::exists(file, exists)) requireRegularFile(file, "JSON file");
   const std::unique_ptr<std::FILE, FileCloser> stream(std::fopen(file.c_str(), "rb"));
   if (!stream) throw InputError(file, "cannot open: " + std::generic_category().message(errno));
   std::error_code error;

@@ -200,7 +200,7 @@ TEST_F(CubemapLayouts, BadImagesAreOneLineInputErrors) {
     readCubemapImage(folder_ / "missing.exr");
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_EQ(e.problem(), "cubemap image file is missing");
+    EXPECT_EQ(e.problem(), "cubemap image file not found");
     EXPECT_EQ(e.file(), folder_ / "missing.exr");
   }
   EXPECT_THROW(readCubemapImage(folder_ / "missing_{face}.exr"), InputError);

@@ -1,6 +1,7 @@
 #include "geometry/level/bsp/bsp_entities.h"
 
 #include "core/errors/input_error.h"
+#include "core/scene/scene_limits.h"
 #include "geometry/level/bsp/bsp_lumps.h"
 
 #include <cmath>
@@ -174,6 +175,26 @@ std::vector<BspEntity> parseBspEntities(std::string_view text, const std::filesy
   return entities;
 }
 
+namespace {
+
+// An entity's origin in metres, within the scene limit: a spawn point seeds rays and flood
+// fills, and one at 1e20 m reached Embree as an invalid ray.
+glm::dvec3 originKey(const BspEntity& entity, std::size_t index, double metersPerUnit,
+                     const std::filesystem::path& file) {
+  const glm::dvec3 meters = vectorKey(entity, index, "origin", {}, file) * metersPerUnit;
+  if (std::abs(meters.x) > kMaxSceneMeters || std::abs(meters.y) > kMaxSceneMeters ||
+      std::abs(meters.z) > kMaxSceneMeters) {
+    std::ostringstream problem;
+    problem << describeEntity(entity, index) << " origin \"" << *entity.value("origin")
+            << "\" is past " << kMaxSceneMeters
+            << " m from the map's origin (the limit of a scene)";
+    failEntities(file, problem.str());
+  }
+  return meters;
+}
+
+}  // namespace
+
 std::vector<BspSpawnPoint> bspSpawnPoints(const std::vector<BspEntity>& entities,
                                           double metersPerUnit, const std::filesystem::path& file) {
   std::vector<BspSpawnPoint> spawns;
@@ -183,7 +204,7 @@ std::vector<BspSpawnPoint> bspSpawnPoints(const std::vector<BspEntity>& entities
     if (!isSpawnPoint(classname)) continue;
     BspSpawnPoint spawn;
     spawn.classname = classname;
-    spawn.originMeters = vectorKey(entity, i, "origin", {}, file) * metersPerUnit;
+    spawn.originMeters = originKey(entity, i, metersPerUnit, file);
     spawn.anglesDegrees = anglesOf(entity, i, file);
     spawns.push_back(std::move(spawn));
   }
@@ -197,7 +218,7 @@ std::vector<BspLight> bspLights(const std::vector<BspEntity>& entities, double m
     const BspEntity& entity = entities[i];
     if (entity.classname() != "light") continue;
     BspLight light;
-    light.originMeters = vectorKey(entity, i, "origin", {}, file) * metersPerUnit;
+    light.originMeters = originKey(entity, i, metersPerUnit, file);
     light.intensity = numberKey(entity, i, "light", 300.0, file);
     light.color = vectorKey(entity, i, "_color", glm::dvec3(1.0), file);
     light.anglesDegrees = anglesOf(entity, i, file);

@@ -1,6 +1,7 @@
 #include "geometry/level/bsp/bsp_level.h"
 
 #include "core/errors/input_error.h"
+#include "core/io/regular_file.h"
 #include "core/scene/scene_limits.h"
 #include "geometry/level/bsp/bezier_patch.h"
 #include "geometry/level/bsp/bsp_lumps.h"
@@ -250,9 +251,8 @@ std::string entityText(const BspLumps& lumps) {
 }
 
 std::vector<std::byte> readWholeBinaryFile(const std::filesystem::path& file) {
+  requireRegularFile(file, "BSP file");
   std::error_code ec;
-  if (!std::filesystem::exists(file, ec)) throw InputError(file, "BSP file not found");
-  if (!std::filesystem::is_regular_file(file, ec)) throw InputError(file, "not a regular file");
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(file, "cannot open");
   const auto size = std::filesystem::file_size(file, ec);

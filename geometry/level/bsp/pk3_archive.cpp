@@ -1,6 +1,7 @@
 #include "geometry/level/bsp/pk3_archive.h"
 
 #include "core/errors/input_error.h"
+#include "core/io/regular_file.h"
 #include "core/scene/scene_limits.h"
 
 #include <zip.h>
@@ -32,11 +33,7 @@ std::string zipErrorText(int code) {
 
 std::vector<std::byte> readFileFromPk3(const std::filesystem::path& archive,
                                        const std::filesystem::path& entry) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(archive, ec)) {
-    throw InputError(
-        archive, std::filesystem::exists(archive, ec) ? "not a regular file" : "archive not found");
-  }
+  requireRegularFile(archive, "archive");
   int openError = 0;
   const std::unique_ptr<zip_t, ArchiveCloser> zip(
       zip_open(archive.c_str(), ZIP_RDONLY, &openError));
