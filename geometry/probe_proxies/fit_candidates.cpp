@@ -11,6 +11,9 @@
 #include "geometry/tune/one_dimensional_fits.h"
 #include "geometry/tune/snap_box_to_walls.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace probeproxy {
 
 ViewHull fitViewHull(const ProbeView& view) {
@@ -32,6 +35,22 @@ ViewHull fitViewHull(const ProbeView& view) {
   return h;
 }
 
+namespace {
+
+// Every half-extent or radius at least a millimetre, and finite.
+bool holdsVolume(const ProxyShape& shape) {
+  constexpr double kThinnestMeters = 1e-3;
+  const auto thick = [](glm::dvec3 half) {
+    return std::isfinite(half.x) && std::isfinite(half.y) && std::isfinite(half.z) &&
+           std::min({half.x, half.y, half.z}) >= kThinnestMeters;
+  };
+  if (const auto* box = std::get_if<BoxShape>(&shape)) return thick(box->halfExtentsMeters);
+  if (const auto* sphere = std::get_if<SphereShape>(&shape)) return thick(sphere->radiiMeters);
+  return true;
+}
+
+}  // namespace
+
 FittedCandidates fitCandidates(const ProbeView& view, std::span<const ReflectionSample> fitSamples,
                                const std::optional<ProxyShape>& authored, bool uprightObb) {
   return fitCandidates(view, fitViewHull(view), fitSamples, authored, uprightObb);
@@ -43,7 +62,16 @@ FittedCandidates fitCandidates(const ProbeView& view, const ViewHull& hull,
   FittedCandidates f;
   const glm::dvec3 capture = view.captureMeters;
   const auto add = [&](CandidateOrigin origin, ProxyShape shape, double buildMs) {
-    f.candidates.push_back({origin, std::move(shape), {}, {}, buildMs});
+    ProxyCandidate candidate{origin, std::move(shape), {}, {}, buildMs};
+    // Fitted to points in one plane (a capture point that sees one wall, from outside), a box
+    // or sphere is flat: it holds no volume, a lookup in it divides by zero and no engine
+    // takes it.
+    if (origin != CandidateOrigin::Authored && !holdsVolume(candidate.shape)) {
+      f.findings.push_back(candidateName(candidate) +
+                           ": what it was fitted to lies in one plane, so it holds no volume");
+      return;
+    }
+    f.candidates.push_back(std::move(candidate));
   };
   if (authored) add(CandidateOrigin::Authored, *authored, 0.0);
   f.hull = hull.hull;
