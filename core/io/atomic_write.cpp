@@ -1,6 +1,7 @@
 #include "core/io/atomic_write.h"
 
 #include "core/errors/input_error.h"
+#include "core/io/regular_file.h"
 
 #include <unistd.h>
 #include <fstream>
@@ -24,8 +25,16 @@ std::filesystem::path temporaryBeside(const std::filesystem::path& target) {
 
 }  // namespace
 
+void requireReplaceableFiles(std::span<const std::filesystem::path> targets) {
+  for (const std::filesystem::path& target : targets) {
+    std::error_code ec;
+    if (std::filesystem::exists(target, ec)) requireRegularFile(target, "output");
+  }
+}
+
 void writeFileAtomically(const std::filesystem::path& target,
                          const std::function<void(const std::filesystem::path&)>& writeTo) {
+  requireReplaceableFiles(std::span(&target, 1));
   if (target.has_parent_path()) {
     std::error_code ec;
     std::filesystem::create_directories(target.parent_path(), ec);

@@ -3,10 +3,12 @@
 #include "core/blend/mix_cubemaps.h"
 #include "core/blend/weight_picture.h"
 #include "core/cube/cubemap_io.h"
+#include "core/cube/write_depth_cube.h"
 #include "core/errors/input_error.h"
 #include "core/errors/option_checks.h"
-#include "core/io/output_folder.h"
 #include "core/image/write_png.h"
+#include "core/io/atomic_write.h"
+#include "core/io/output_folder.h"
 #include "geometry/scene/scene_file.h"
 #include "plugin/jobs/mixing/mixing_inputs.h"
 
@@ -109,6 +111,12 @@ BlendJobResult runBlendJob(const BlendJobOptions& o) {
   Cubemap mixed;
   if (!o.outPattern.empty()) mixed = mixProbes(scene, result.weights, o);
 
+  std::vector<std::filesystem::path> targets;
+  for (int level = 0; !o.outPattern.empty() && level < mixed.numLevels(); ++level)
+    for (int face = 0; face < kCubeFaceCount; ++face)
+      targets.push_back(cubeFacePath(levelPattern(o.outPattern, level), CubeFace(face)));
+  if (!o.weightsPng.empty()) targets.push_back(o.weightsPng);
+  requireReplaceableFiles(targets);
   if (!o.outPattern.empty()) {
     const std::filesystem::path folder = std::filesystem::path(o.outPattern).parent_path();
     std::filesystem::create_directories(folder.empty() ? "." : folder);

@@ -2,9 +2,11 @@
 
 #include "core/cube/cube_face.h"
 #include "core/cube/cubemap_io.h"
-#include "core/measures/error_images.h"
+#include "core/cube/write_depth_cube.h"
 #include "core/errors/input_error.h"
+#include "core/io/atomic_write.h"
 #include "core/io/output_folder.h"
+#include "core/measures/error_images.h"
 #include "core/mixing/reflected_camera.h"
 #include "geometry/scene/scene_file.h"
 #include "plugin/jobs/mixing/mixing_inputs.h"
@@ -33,26 +35,40 @@ CorrectJobResult runCorrectJob(const CorrectJobOptions& o) {
   const std::string levelKey = "{level}";
   const std::size_t levelAt = o.outPattern.find(levelKey);
   const int levels = levelAt == std::string::npos ? 1 : corrected.cube.numLevels();
-  for (int level = 0; level < levels; ++level) {
+  const auto patternOf = [&](int level) {
     std::string pattern = o.outPattern;
     if (levelAt != std::string::npos)
       pattern.replace(levelAt, levelKey.size(), std::to_string(level));
+    return pattern;
+  };
+  // The miss mask, face by face, as `bench` draws it (writeMissMaskPng): red where the
+  // texel's ray leaves no proxy face.
+  const auto maskPatternOf = [](const std::string& pattern) {
+    std::filesystem::path maskPattern(pattern);
+    maskPattern.replace_extension();
+    return maskPattern.string() + "_miss.png";
+  };
+  std::vector<std::filesystem::path> targets;
+  for (int level = 0; level < levels; ++level) {
+    for (int face = 0; face < kCubeFaceCount; ++face) {
+      targets.push_back(cubeFacePath(patternOf(level), CubeFace(face)));
+      targets.push_back(cubeFacePath(maskPatternOf(patternOf(level)), CubeFace(face)));
+    }
+  }
+  requireReplaceableFiles(targets);
+  for (int level = 0; level < levels; ++level) {
+    const std::string pattern = patternOf(level);
     const std::filesystem::path folder = std::filesystem::path(pattern).parent_path();
     if (!folder.empty()) std::filesystem::create_directories(folder);
     writeCubemap(corrected.cube, pattern, level);
     result.written.push_back(pattern);
     result.faceSizes.push_back(corrected.cube.faceSize(level));
-    // The miss mask, face by face, as `bench` draws it (writeMissMaskPng): red where the
-    // texel's ray leaves no proxy face.
-    std::filesystem::path maskPattern(pattern);
-    maskPattern.replace_extension();
-    const std::string maskNames = maskPattern.string() + "_miss.png";
+    const std::string maskNames = maskPatternOf(pattern);
     const int size = corrected.cube.faceSize(level);
     const std::vector<std::uint8_t> everyTexel(static_cast<std::size_t>(size) * size, 1);
     for (int face = 0; face < kCubeFaceCount; ++face) {
-      std::string file = maskNames;
-      file.replace(file.find("{face}"), 6, cubeFaceName(static_cast<CubeFace>(face)));
-      writeMissMaskPng(file, size, size, everyTexel, corrected.missMask[level][face]);
+      writeMissMaskPng(cubeFacePath(maskNames, CubeFace(face)), size, size, everyTexel,
+                       corrected.missMask[level][face]);
     }
     result.missMasks.push_back(maskNames);
   }
