@@ -181,6 +181,7 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
       std::make_shared<const FloorGraph>(buildFloorGraph(level, WalkableFloorOptions{}));
   const Candidates built = serveAll(level, candidates, samples, withGraph, onDone);
   const std::vector<CandidateService>& services = built.services;
+  r.capturePoints = candidates.size();
   r.candidates = services.size();
   std::vector<double> ms;
   for (const CandidateService& s : services) ms.push_back(s.buildMs);

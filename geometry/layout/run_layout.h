@@ -35,7 +35,8 @@ struct LayoutProbe {
 struct LayoutResult {
   std::vector<LayoutProbe> probes;
   std::size_t floorCells = 0, floorSamples = 0;
-  std::size_t candidates = 0;  // built and measured (0 for the baselines)
+  std::size_t capturePoints = 0;  // candidate capture points (0 for the baselines)
+  std::size_t candidates = 0;     // proxies built and measured, a few per capture point
   double candidateMedianMs = std::numeric_limits<double>::quiet_NaN();  // one candidate's cost
   // Floor (area share) some chosen probe serves within the tolerance on its own, and that some
   // candidate could: what the selection reached of what it could reach.

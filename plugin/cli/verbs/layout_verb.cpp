@@ -42,14 +42,21 @@ int runLayoutVerb(LayoutVerbOptions o) {
   if (o.json) {
     std::cout << r.json;
   } else {
-    char line[200];
-    std::snprintf(line, sizeof line,
-                  "%zu probes from %zu candidates (median %.1f ms each), spacing %.2f m, "
-                  "%.1f%% of the floor served within %.2f deg by one probe (%.1f%% servable), "
-                  "%.1f s\n",
-                  r.scene.probes.size(), r.layout.candidates, r.layout.candidateMedianMs,
-                  r.layout.spacingMeters, 100.0 * r.layout.servedShare, o.job.layout.toleranceDeg,
-                  100.0 * r.layout.servableShare, r.layout.seconds);
+    char line[300];
+    if (o.job.layout.baseline == LayoutBaseline::None) {
+      std::snprintf(
+          line, sizeof line,
+          "%zu probes from %zu capture points (%zu candidate proxies, median %.1f ms each), "
+          "spacing %.2f m, %.1f%% of the floor served within %.2f deg by one probe (%.1f%% "
+          "servable), %.1f s\n",
+          r.scene.probes.size(), r.layout.capturePoints, r.layout.candidates,
+          r.layout.candidateMedianMs, r.layout.spacingMeters, 100.0 * r.layout.servedShare,
+          o.job.layout.toleranceDeg, 100.0 * r.layout.servableShare, r.layout.seconds);
+    } else {
+      std::snprintf(line, sizeof line, "%zu probes of the %s baseline, spacing %.2f m, %.1f s\n",
+                    r.scene.probes.size(), o.baseline.c_str(), r.layout.spacingMeters,
+                    r.layout.seconds);
+    }
     std::cout << line;
     jobs::printSurveyTable(std::cout, r.survey);
   }

@@ -190,6 +190,7 @@ std::string layoutReportJson(const LayoutJobOptions& o, const LayoutJobResult& r
   j["spacing_m"] = number(r.layout.spacingMeters);
   j["floor_cells"] = r.layout.floorCells;
   j["floor_samples"] = r.layout.floorSamples;
+  j["capture_points"] = r.layout.capturePoints;
   j["candidates"] = r.layout.candidates;
   j["candidate_median_ms"] = number(r.layout.candidateMedianMs);
   j["served_share"] = number(r.layout.servedShare);
