@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Figures in the docs come from the scripts that measure them (issue 14). A generated block is
+"""Figures in the docs come from the scripts that measure them. A generated block is
 written in a page as
 
     <!-- figures: scripts/proxy_table.py {probeproxy} {suite} -->

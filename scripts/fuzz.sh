@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
-# Fuzzing probeproxy's readers with libFuzzer (issue 13; tests/fuzz/ holds the targets).
-#   scripts/fuzz.sh build                 configure and build the fuzz tree (clang, ASan, UBSan)
-#                                         and write every target's seed corpus
+# Fuzzing probeproxy's readers and command line with libFuzzer (tests/fuzz/ holds the targets).
+#   scripts/fuzz.sh build [--command-line]
+#                                         configure and build the fuzz tree (clang, ASan, UBSan)
+#                                         and write every target's seed corpus; with
+#                                         --command-line the command_line target too (the whole
+#                                         library: about five minutes more on 2 cores)
 #   scripts/fuzz.sh run TARGET LIMIT      fuzz one target; LIMIT is `--runs N` or `--seconds S`
 #   scripts/fuzz.sh all LIMIT             every target in turn, one summary line each
 #   scripts/fuzz.sh regressions           every kept input of tests/fuzz/regressions/, once
@@ -19,6 +22,8 @@ export LSAN_OPTIONS="suppressions=$here/tests/fuzz/lsan.supp:print_suppressions=
 export UBSAN_OPTIONS="print_stacktrace=1"
 targets=(scene_file runtime_export bsp pk3 level_gltf level_glb level_obj level_ply level_off
          cubemap_image cubemap_faces)
+# The command line, where this tree has it (scripts/fuzz.sh build --command-line).
+[ -x "$tree/tests/fuzz/fuzz_command_line" ] && targets+=(command_line)
 
 # Dictionaries by target: the tokens a mutation is unlikely to find byte by byte.
 dictionary() {
@@ -30,6 +35,7 @@ dictionary() {
     level_off) echo "$here/tests/fuzz/dictionaries/off.dict" ;;
     cubemap_image) echo "$here/tests/fuzz/dictionaries/hdr.dict" ;;
     cubemap_faces) echo "$here/tests/fuzz/dictionaries/png.dict" ;;
+    command_line) echo "$here/tests/fuzz/dictionaries/command_line.dict" ;;
     *) echo "" ;;
   esac
 }
@@ -39,7 +45,8 @@ dictionary() {
 # inputs kept as regressions.
 copy_seeds() {
   local seeds=$tree/seeds target
-  for target in "${targets[@]}"; do mkdir -p "$seeds/$target"; done
+  for target in "${targets[@]}" command_line; do mkdir -p "$seeds/$target"; done
+  cp "$here"/tests/fuzz/seeds/command_line/* "$seeds/command_line/"
   shopt -s nullglob
   local f
   for f in "$here"/tests/e2e/hostile/*.scene.json "$here"/build/scenes/*/*.scene.json \
@@ -62,9 +69,11 @@ copy_seeds() {
 }
 
 build() {
+  local commandLine=OFF
+  [ "${1:-}" = --command-line ] && commandLine=ON
   cmake -S "$here" -B "$tree" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 \
     -DPROBEPROXY_FUZZ=ON -DPROBEPROXY_BUILD_TESTS=OFF -DPROBEPROXY_BUILD_BENCHMARKS=OFF \
-    -DPROBEPROXY_WITH_BLENDER=OFF >/dev/null
+    -DPROBEPROXY_WITH_BLENDER=OFF -DPROBEPROXY_FUZZ_COMMAND_LINE=$commandLine >/dev/null
   cmake --build "$tree" -j"$(nproc)" --target fuzz_targets
   rm -rf "$tree/seeds"
   "$tree/tests/fuzz/write_fuzz_seeds" "$tree/seeds"
@@ -114,7 +123,7 @@ regressions() {
 }
 
 case "${1:-}" in
-  build) build ;;
+  build) build "${2:-}" ;;
   run) run "$2" "$3" "$4" ;;
   all)
     status=0

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The proxy table of docs/building_proxies.md and of issue 3: for every level of the suite, per probe, the
+"""The proxy table of docs/building_proxies.md: for every level of the suite, per probe, the
 kept proxy's kind, planes and mirror_floor error beside the artist box's and the plain hull's.
 
     scripts/proxy_table.py build/plugin/cli/probeproxy build/scenes [--out build/proxy-table]

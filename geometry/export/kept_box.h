@@ -1,6 +1,6 @@
 #pragma once
 // Whether a proxy is a box, so that engines which take only a box (engine_probes.h) can get
-// the kept proxy itself rather than the best `aabb`/`obb` candidate (issue 18: a kept
+// the kept proxy itself rather than the best `aabb`/`obb` candidate (a kept
 // `convex_6` that is exactly the room went out as an `aabb` 35 degrees worse).
 //
 // A convex is a box when it has six planes in three opposite pairs at right angles and the box

@@ -1,5 +1,5 @@
 // split_probe: a probe whose floor no proxy of its own brings under the tolerance, where a
-// second probe would (issue 12). Capture points are tried over the probe's walkable floor, each
+// second probe would. Capture points are tried over the probe's walkable floor, each
 // with a proxy fitted as layout fits its candidates'; each square metre of floor goes to the
 // probe that serves it better, and the point whose split leaves the lowest p95 is named if that
 // p95 is within the tolerance.

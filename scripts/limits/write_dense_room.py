@@ -1,5 +1,5 @@
 """Writes a level of about TRIANGLES triangles and a scene with one probe in it, for measuring
-what `build` costs on a level far denser than any game map (issue 13: peak memory from
+what `build` costs on a level far denser than any game map (peak memory from
 /usr/bin/time -v) and for checking that --max-triangles stops it.
     write_dense_room.py OUT_FOLDER TRIANGLES
 The level is a 20 x 16 x 5 m room (binary PLY) whose six walls are regular grids, each split

@@ -2,7 +2,7 @@
 // the whole job (floor, candidates with their coarse proxies, selection, influence boxes, final
 // proxies, the survey of the result), and in the same process the grid baseline at 4 m (probes
 // on a grid, aabb proxies, the same survey) as the reference the ratio is taken against.
-// Issue 12's target: the largest corpus map (warfare) under 60 s on 2 cores, median of 3:
+// The target: the largest corpus map (warfare) under 60 s on 2 cores, median of 3:
 //   bench_layout --scene build/corpus/scenes/warfare/warfare.scene.json
 //                --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 // Counters: probes, candidates, candidate_ms (one candidate's median cost), p95_deg.

@@ -1,4 +1,4 @@
-# What a level artist meets in the add-on (issue 18), headless, on a box room made here:
+# What a level artist meets in the add-on, headless, on a box room made here:
 #   blender -b --factory-startup --python tests/blender/addon_artist_test.py -- \
 #       --addon-dir plugin/blender --module-dir build/plugin/python \
 #       --cli build/plugin/cli/probeproxy --work DIR

@@ -1,4 +1,4 @@
-# Suggest Probes (issue 12), headless: on a suite level imported through Import Scene, the
+# Suggest Probes, headless: on a suite level imported through Import Scene, the
 # operator lays out the same probes `probeproxy layout SCENE --out DIR` writes (names, capture
 # points, influence boxes, proxies), shows the error map, and Undo brings the scene's own probes
 # back.

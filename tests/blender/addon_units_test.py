@@ -1,4 +1,4 @@
-# Units and transforms as Blender means them (issue 18), headless:
+# Units and transforms as Blender means them, headless:
 #   blender -b --factory-startup --python tests/blender/addon_units_test.py -- \
 #       --addon-dir plugin/blender --module-dir build/plugin/python \
 #       --cli build/plugin/cli/probeproxy --scene build/scenes/l_room/l_room.scene.json --work DIR

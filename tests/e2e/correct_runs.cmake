@@ -36,7 +36,7 @@ list(LENGTH written count)
 if(NOT count EQUAL 12)
   message(FATAL_ERROR "expected six EXRs and six miss masks, got ${count}: ${written}")
 endif()
-# Issue 14: the miss mask beside every face, per level written, as `bench` writes it.
+# The miss mask beside every face, per level written, as `bench` writes it.
 foreach(face px nx py ny pz nz)
   foreach(file mixing/c_${face}_miss.png raster/c_${face}_miss.png mips/c_${face}_6_miss.png)
     file(SIZE ${OUT}/${file} size)

@@ -1,4 +1,4 @@
-// Issue 14: each engine preset, read from proxies.json as plain JSON (not through probeproxy's
+// Each engine preset, read from proxies.json as plain JSON (not through probeproxy's
 // reader or its frame code), turned back into a box in world metres with that engine's own
 // formula, as the engine's shader or node code applies it (docs/engines.md cites each one), is
 // the box the export says it came from: corners within 1e-6 m, and the capture point and the

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # hostile_inputs.sh PROBEPROXY HOSTILE_DIR WORK
-# Every verb over every hostile scene of tests/e2e/hostile/ (issue 17): each run must end in
+# Every verb over every hostile scene of tests/e2e/hostile/: each run must end in
 # exit 0 (valid input) or exit 2 with exactly one line on stderr and no output folder left
 # behind; exit 3 (an internal error), a crash or a hang (timeout 60 s) fails the test.
 set -u

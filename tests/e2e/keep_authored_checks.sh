@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # keep_authored_checks.sh PROBEPROXY SUITE_DIR WORK
-# `layout --keep-authored` (issue 12): the artist's probes stay exactly as authored and only what
+# `layout --keep-authored`: the artist's probes stay exactly as authored and only what
 # fails gets new probes. The L-room's artist scene (each arm's bounding box as its proxy) fails
 # at the corner where the arms meet: probes are added there, and the survey of the result has
 # less floor over the tolerance and a lower p95 than the artist's scene alone. On the L-room's

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # layout_checks.sh PROBEPROXY SUITE_DIR WORK
-# `layout` on suite levels whose answer is known (issue 12): the corridor (one box room), the
+# `layout` on suite levels whose answer is known: the corridor (one box room), the
 # hangar (a box room with two blocks) and the closet (narrower than the candidates' grid) keep
 # one probe each; the L-room (two convex
 # arms) gets two or three (its corner square sees into both arms, so neither arm's box serves

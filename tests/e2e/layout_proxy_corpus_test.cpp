@@ -1,4 +1,4 @@
-// Issue 12, step 7 on a real map: a layout probe's proxy fitted to its inner range alone ended
+// On a real map: a layout probe's proxy fitted to its inner range alone ended
 // just past it, and the floor its band shares with a neighbour fell outside the proxy.
 
 #include "core/proxy/proxy_candidate.h"

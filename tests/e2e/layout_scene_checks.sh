@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # layout_scene_checks.sh PROBEPROXY SCENE WORK
-# What a layout writes is what it measured (issue 12, "what we export must be what we
+# What a layout writes is what it measured ("what we export must be what we
 # measured"): every probe of its scene names the proxy the layout measured (none is left `auto`
 # for `build` to make again: a scene file holds no cheap_k), and `survey` on that scene gives
 # the figures of the layout's own survey. On basement, session 19's layout wrote three probes

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # layout_validate_checks.sh PROBEPROXY SCENE WORK
-# A layout passes validate (issue 12: "every layout validates clean"): every rule but those
+# A layout passes validate ("every layout validates clean"): every rule but those
 # that measure a proxy's accuracy probe by probe (proxy_error_over_tolerance and split_probe,
 # over each probe's whole outer range alone: the survey is the layout's measure of that), the
 # mesh and capture checks included. On downer, session 20's layout had a blend weight that

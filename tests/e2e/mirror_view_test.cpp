@@ -1,4 +1,4 @@
-// Validation against Cycles (issue 4, "Validation"): the suite's mirror views rebuilt from each
+// Validation against Cycles: the suite's mirror views rebuilt from each
 // probe's Cycles cubemap, on the box room whose artist box is exactly the room (tiny_closet:
 // one 1.0 x 0.8 x 2.2 m box, walls within half a metre of the probe, where parallax is
 // largest). The bound is the true-hit reconstruction: the perfect proxy through the same

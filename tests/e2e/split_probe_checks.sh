@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # split_probe_checks.sh PROBEPROXY SUITE_DIR WORK
-# validate's split_probe finding (issue 12). One probe in the L-room's corner serves the whole L
+# validate's split_probe finding. One probe in the L-room's corner serves the whole L
 # with the box of the x arm as its proxy: the y arm's reflections miss it, and no single convex
 # proxy serves both arms from the corner. A second probe in the y arm, with the y arm's box,
 # serves that arm exactly: the finding must name a point in the y arm and a p95 within the

@@ -114,7 +114,7 @@ TEST_P(SuiteLevel, BlenderCubesUseTheCoreFaceConvention) {
   }
 }
 
-// Issue 3's bars, on every level: each kept proxy contains its capture point and passes the
+// The proxies' bars, on every level: each kept proxy contains its capture point and passes the
 // OpenMesh checks; convex rooms are modelled to a quarter degree; concave rooms never do worse
 // than the artist's box, with fewer than 32 planes; the export reads back to the same values.
 TEST_P(SuiteLevel, BuiltProxiesAreValidAndAccurate) {
@@ -202,7 +202,7 @@ TEST_P(SuiteLevel, BuiltProxiesAreValidAndAccurate) {
   std::filesystem::remove_all(out);
 }
 
-// Issue 18: the engines get the kept proxy. On every probe whose kept proxy is a box, each box
+// The engines get the kept proxy. On every probe whose kept proxy is a box, each box
 // engine's preset, read back from proxies.json and turned into world corners with the engine's
 // own formula (written out here from the engine's documentation, not through our frames),
 // is the kept box: its corners within 1 um (+ the 1e-9 engine-unit rounding) of the kept

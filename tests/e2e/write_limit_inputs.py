@@ -1,4 +1,4 @@
-"""Writes the inputs that must stop at a size limit (issue 13), each with a scene that uses it:
+"""Writes the inputs that must stop at a size limit, each with a scene that uses it:
     write_limit_inputs.py OUT_FOLDER
   face_claims_2g_corners.{ply,off}  a face claiming 2^31 corners in a file of a few bytes
   off_claims_2g_vertices.off        an OFF header claiming 2^31 vertices

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The Godot round trip (issue 14): `probeproxy build --out` exports a level, Debian's Godot 3
+# The Godot round trip: `probeproxy build --out` exports a level, Debian's Godot 3
 # (godot3-server, headless) runs the shipped importer (plugin/engines/godot/) to make
 # ReflectionProbe nodes and save them as a binary scene (.scn: Godot 3's 32-bit floats, bit for
 # bit), then loads that scene back in a second Godot process and checks every probe against

@@ -1,4 +1,4 @@
-# The CTest label `fuzz` (issue 13), in the main build: builds the fuzz tree with clang
+# The CTest label `fuzz`, in the main build: builds the fuzz tree with clang
 # (scripts/fuzz.sh build, into <build>/fuzz), runs every input kept in tests/fuzz/regressions/
 # once, then each target for a short fixed number of runs from a fixed seed. Longer runs:
 # scripts/fuzz.sh all --seconds S. Skipped, with a message, where clang or libFuzzer is missing.

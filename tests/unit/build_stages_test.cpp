@@ -243,7 +243,7 @@ TEST(BuildStages, FinishingTheKeptConvexGivesItCornersAndChecksTheCapture) {
 namespace probeproxy {
 namespace {
 
-// Issue 11: a probe's influence reaches through a wall into the next room; the proxy is fitted
+// A probe's influence reaches through a wall into the next room; the proxy is fitted
 // on the floor a player can walk to from its capture point, not on the room behind the wall.
 TEST(BuildStages, FitSamplesStayOnTheFloorConnectedToTheCapturePoint) {
   LevelMesh level = boxRoom({0, 0, 0}, {5, 4, 3}, "near");

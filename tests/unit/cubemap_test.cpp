@@ -1,4 +1,4 @@
-// Cubemaps (issue 4): mip chain, seam-aware sampling, roughness to mip (seed 004), file I/O.
+// Cubemaps: mip chain, seam-aware sampling, roughness to mip (seed 004), file I/O.
 #include "core/cube/cubemap.h"
 #include "core/cube/cubemap_io.h"
 #include "core/cube/cubemap_sampling.h"

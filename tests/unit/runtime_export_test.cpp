@@ -480,7 +480,7 @@ TEST_F(RuntimeExport, EllipsoidUnitTransformAndIcosphereWinding) {
 // Engines, for known boxes. The room box: centre (0, 0, 1.5), half-extents (3, 2, 1.5),
 // capture (1, 0.5, 1.2): box centre - capture = (-1, -0.5, 0.3) m.
 
-// Issue 16: one frame conversion for the scene file, proxies.json and the engines
+// One frame conversion for the scene file, proxies.json and the engines
 // (core/scene/file_frame.h). Each frame's rotation conversion is R' = A R A^T, exact: checked
 // against the matrix product for a turned box, in a right-handed and a left-handed frame.
 TEST_F(RuntimeExport, OneFrameConversionForFilesAndEngines) {
@@ -619,7 +619,7 @@ TEST_F(RuntimeExport, BevyScalesAUnitCubeAndNeedsTheCaptureAtItsCentre) {
   EXPECT_FALSE(bevyLightProbe(turned, turned.centerMeters, fade).exact);
 }
 
-// Issue 18: the transition distance is the smallest fade over the axes that fade; the old
+// The transition distance is the smallest fade over the axes that fade; the old
 // rule (the smallest over all three axes) gave 0, a hard cut, on rooms fading along one axis.
 TEST_F(RuntimeExport, TransitionDistanceIsTheSmallestFadeOverTheAxesThatFade) {
   const auto box = [](glm::dvec3 inner) {

@@ -584,30 +584,30 @@ std::vector<ErrorCase> errorCases() {
        sceneJson(probeJson({{"capture", "[1e303, 0, 0]"}}),
                  R"("probeproxy_scene": 1, "up": "Z", "meters_per_unit": 1e6, "level": ["a.obj"])"),
        "$.probes[0].capture: expected numbers that stay finite in metres, got [1e+303, 0, 0]"},
-      // Issue 17: numbers a level cannot hold are refused when the scene is read, so nothing
+      // Numbers a level cannot hold are refused when the scene is read, so nothing
       // past the reader meets them (Embree's assertion, the weight grid, an allocation).
-      {"issue17_half_extents_past_the_scene_limit",
+      {"half_extents_past_the_scene_limit",
        sceneJson(probeJson(
            {{"influence",
              R"({"kind": "box", "center": [0, 0, 0], "half_extents": [1e308, 1.5, 1.5]})"}})),
        "$.probes[0].influence.half_extents: expected half-extents within 100000 m (the limit of "
        "a scene, in metres), got [1e+308, 1.5, 1.5]"},
-      {"issue17_center_past_the_scene_limit",
+      {"center_past_the_scene_limit",
        sceneJson(probeJson(
            {{"influence", R"({"kind": "sphere", "center": [1.2e29, 0, 1.5], "radius": 2})"}})),
        "$.probes[0].influence.center: expected coordinates within 100000 m (the limit of a "
        "scene, in metres), got [1.2e+29, 0, 1.5]"},
-      {"issue17_meters_per_unit_past_its_range",
+      {"meters_per_unit_past_its_range",
        sceneJson(
            probeJson(),
            R"("probeproxy_scene": 1, "up": "Z", "meters_per_unit": 1e300, "level": ["a.obj"])"),
        "$.meters_per_unit: expected a number from 1e-06 to 1e+06, got 1e+300"},
-      {"issue17_radius_past_the_scene_limit",
+      {"radius_past_the_scene_limit",
        sceneJson(
            probeJson({{"influence", R"({"kind": "sphere", "center": [0, 0, 0], "radius": 3e5})"}})),
        "$.probes[0].influence.radius: expected a length within 100000 m (the limit of a scene, "
        "in metres), got 300000.0"},
-      {"issue17_level_nested_deeper_than_the_json_limit",
+      {"level_nested_deeper_than_the_json_limit",
        "{\"probeproxy_scene\": 1, \"level\": " + std::string(100000, '[') +
            std::string(100000, ']') + "}",
        "$.level" +
