@@ -5,12 +5,12 @@
 // cubemap.
 
 #include "core/cube/cubemap_io.h"
-#include "geometry/probe_proxies/authored_proxy_shape.h"
 #include "geometry/evaluation/evaluate_shape.h"
 #include "geometry/evaluation/reflection_samples.h"
 #include "geometry/level/load_level.h"
 #include "geometry/mirror_view/radiance_lookups.h"
 #include "geometry/pointcloud/probe_point_cloud.h"
+#include "geometry/probe_proxies/authored_proxy_shape.h"
 #include "geometry/scene/scene_file.h"
 
 #include <gtest/gtest.h>

@@ -4,11 +4,11 @@
 
 #include "geometry/evaluation/evaluate_shape.h"
 #include "geometry/evaluation/reflection_samples.h"
+#include "geometry/floor/walkable_floor.h"
 #include "geometry/level/load_level.h"
 #include "geometry/scene/scene_file.h"
 #include "geometry/survey/run_survey.h"
 #include "geometry/survey/survey_proxies.h"
-#include "geometry/floor/walkable_floor.h"
 
 #include <gtest/gtest.h>
 

@@ -98,7 +98,8 @@ std::string sceneJson(const std::string& probes, const std::string& head = kHead
 
 TEST_F(SceneFileTest, ReadmeExampleRoundTripsByteExactly) {
   const std::string example = readmeSceneExample();
-  ASSERT_FALSE(example.empty()) << "docs/cli_and_formats.md has no ```json block under ### Scene file";
+  ASSERT_FALSE(example.empty())
+      << "docs/cli_and_formats.md has no ```json block under ### Scene file";
   const fs::path file = write("level.scene.json", example);
 
   const Scene scene = readSceneFile(file);
@@ -338,8 +339,7 @@ TEST_F(SceneFileTest, FailedWriteLeavesNoFileBehind) {
     writeSceneFile(notANumber, target);
     ADD_FAILURE() << "a NaN capture point was written";
   } catch (const InputError& error) {
-    EXPECT_EQ(error.problem(),
-              "$.probes[0].capture[0]: expected a finite number, got null");
+    EXPECT_EQ(error.problem(), "$.probes[0].capture[0]: expected a finite number, got null");
   }
   EXPECT_TRUE(fs::is_empty(folder_));
 
