@@ -1,7 +1,7 @@
 #pragma once
-// Lagarde's normalized distance for an influence volume (seed 000, bonus slides): 0 inside the
-// inner range, rising to 1 at the outer boundary, continuous in between; the influence factor
-// is 1 - that. A sphere fades linearly from the inner to the outer radius. A box is measured
+// Lagarde's normalized distance for an influence volume (Lagarde & Zanuttini 2012, bonus slides): 0
+// inside the inner range, rising to 1 at the outer boundary, continuous in between; the influence
+// factor is 1 - that. A sphere fades linearly from the inner to the outer radius. A box is measured
 // in its own frame (rotation included): each axis fades linearly across its band, and the
 // factor is the product of the three axes' factors. (The seed leaves the box's function open;
 // the product, unlike the largest axis, keeps two boxes that fade towards the same wall in the

@@ -1,7 +1,8 @@
 #pragma once
-// Mixing at a point of interest (seed 000, "point of interest-based" approach): the weighted
-// sum of the probes' cubemaps, texel by texel, face by face, for every mip level, as the seed
-// blends each mip of its preconvolved cubemaps. The weights come from core/blend/blend_weights.h.
+// Mixing at a point of interest (Lagarde & Zanuttini 2012, "point of interest-based" approach): the
+// weighted sum of the probes' cubemaps, texel by texel, face by face, for every mip level, as the
+// seed blends each mip of its preconvolved cubemaps. The weights come from
+// core/blend/blend_weights.h.
 //
 // Every cube must have the same level-0 face size and the same number of levels; cubes of
 // different sizes are refused (std::invalid_argument naming both sizes), not resampled: the

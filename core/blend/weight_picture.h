@@ -1,9 +1,9 @@
 #pragma once
-// The talk's top-down picture of blend weights (seed 000, "Each color is an influence volume
-// and the intensity of Red, Green or Blue represents the final contribution"): a horizontal
-// slice of a level's influence volumes, each probe a colour, each pixel the weight-summed
-// colour of the probes there; the volumes' outer boundaries in white, their inner ranges in
-// grey, uncovered space black, and optional markers (the probes' capture points) as small
+// The talk's top-down picture of blend weights (Lagarde & Zanuttini 2012, "Each color is an
+// influence volume and the intensity of Red, Green or Blue represents the final contribution"): a
+// horizontal slice of a level's influence volumes, each probe a colour, each pixel the
+// weight-summed colour of the probes there; the volumes' outer boundaries in white, their inner
+// ranges in grey, uncovered space black, and optional markers (the probes' capture points) as small
 // white squares with a black centre. North (+y) up, +x right.
 
 #include "core/blend/blend_weights.h"

@@ -20,7 +20,7 @@ namespace probeproxy {
 // Throws std::invalid_argument on an empty cubemap or a NaN level or direction.
 glm::vec3 sampleBilinear(const Cubemap& cube, glm::vec3 direction, float level);
 
-// Seed 004 (Enlighten, "PBR reflections"): mip = numMips + 2 * log2(roughness), for a chain
+// The Enlighten documentation ("PBR reflections"): mip = numMips + 2 * log2(roughness), for a chain
 // filtered by plain downsampling and shaded as if GGX-prefiltered. Clamped to
 // [0, numMips - 1]; level 0 is the sharpest, so roughness 0 (log2 = -inf) gives 0 and
 // roughness 1 gives numMips - 1. Throws std::invalid_argument on numMips < 1 or a NaN

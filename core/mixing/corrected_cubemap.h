@@ -1,7 +1,7 @@
 #pragma once
-// The mixing step's output (seed 000): a probe's cubemap parallax-corrected for one camera and
-// one reflection plane, as a cubemap centred at the reflected camera E'. Every mip level is
-// corrected on its own (output level l looks up source level l), as the seed does for a
+// The mixing step's output (Lagarde & Zanuttini 2012): a probe's cubemap parallax-corrected for one
+// camera and one reflection plane, as a cubemap centred at the reflected camera E'. Every mip level
+// is corrected on its own (output level l looks up source level l), as the seed does for a
 // prefiltered chain, so glossy receivers keep their blur.
 
 #include "core/cube/cubemap.h"

@@ -1,7 +1,7 @@
 #pragma once
-// The glossy analysis of seed 000's bonus slides: the mixing step assumes a flat mirror, so the
-// cube corrected from the reflected camera E' is right only for receiver normals equal to the
-// plane's. A glossy receiver perturbs its normal; the shader then looks the corrected cube up
+// The glossy analysis of Lagarde & Zanuttini's bonus slides: the mixing step assumes a flat mirror,
+// so the cube corrected from the reflected camera E' is right only for receiver normals equal to
+// the plane's. A glossy receiver perturbs its normal; the shader then looks the corrected cube up
 // along the perturbed reflection r, which from E' reaches a different proxy point than the ray
 // (x, r) from the shading point does. This measures that distortion against per-pixel
 // correction, and how often the mixing step misses (the seed's red texels).

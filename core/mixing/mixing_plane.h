@@ -1,7 +1,7 @@
 #pragma once
-// The mixing-step correction per texel (seed 000, "Mixing Step"): the camera is mirrored
-// through the reflection plane (reflected_camera.h) and, for every texel direction d of a cube
-// centred at that reflected camera E', the ray (E', d) is intersected with the convex proxy.
+// The mixing-step correction per texel (Lagarde & Zanuttini 2012, "Mixing Step"): the camera is
+// mirrored through the reflection plane (reflected_camera.h) and, for every texel direction d of a
+// cube centred at that reflected camera E', the ray (E', d) is intersected with the convex proxy.
 // The point P where it LEAVES the proxy is what the mirror shows (E' usually lies below the
 // floor, outside the proxy, so the ray first enters it), and the probe's cubemap is looked up
 // at P - C. The seed's OBB shader code is this with six planes.

@@ -1,7 +1,7 @@
 #pragma once
-// The mixing step's reflected camera (seed 000): the camera mirrored through the reflection
-// plane. Its view ray through a texel is the mirror's reflected view ray, so one cubemap seen
-// from it, corrected against the proxy, serves the whole planar receiver. World frame, metres.
+// The mixing step's reflected camera (Lagarde & Zanuttini 2012): the camera mirrored through the
+// reflection plane. Its view ray through a texel is the mirror's reflected view ray, so one cubemap
+// seen from it, corrected against the proxy, serves the whole planar receiver. World frame, metres.
 
 #include "core/proxy/convex_proxy.h"
 #include "core/scene/probe.h"

@@ -56,8 +56,8 @@ inline void finish(float* __restrict dxs, float* __restrict dys, float* __restri
 }
 
 // The exit distance along one axis of a box [lo, hi] (relative to the point p): the far plane
-// the ray moves towards (seed 004's back-face cull), none when it is parallel. The division
-// runs for every lane (0/0 is NaN there) and the select drops it: no branch.
+// the ray moves towards (the Enlighten documentation's back-face cull), none when it is parallel.
+// The division runs for every lane (0/0 is NaN there) and the select drops it: no branch.
 inline float slab(float lo, float hi, float p, float r) {
   const float toPlane = r > 0.0f ? hi - p : lo - p;
   const float t = toPlane / r;

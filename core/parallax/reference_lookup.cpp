@@ -40,7 +40,7 @@ std::optional<double> exitBox(const BoxShape& box, glm::dvec3 x, glm::dvec3 r) {
 }
 
 std::optional<double> exitSphere(const SphereShape& sphere, glm::dvec3 x, glm::dvec3 r) {
-  // In the sphere's lighting space (seed 001) the ellipsoid is the unit sphere.
+  // In the sphere's lighting space (Bjorke, GPU Gems ch. 19) the ellipsoid is the unit sphere.
   const glm::dquat sphereFromWorld = glm::conjugate(sphere.worldFromSphere);
   const glm::dvec3 p = (sphereFromWorld * (x - sphere.centerMeters)) / sphere.radiiMeters;
   const glm::dvec3 d = (sphereFromWorld * r) / sphere.radiiMeters;

@@ -5,7 +5,7 @@
 //
 // For a shading point x with reflection direction r and a cubemap captured at C:
 //   infinite: d = r
-//   cheap_k:  d = k (x - C) + r                       (seed 000)
+//   cheap_k:  d = k (x - C) + r                       (Lagarde & Zanuttini 2012)
 //   proxies:  d = P - C, P = x + t r where the ray leaves the proxy
 // A miss (the seeds' red pixel) is no value: x outside the proxy (beyond kInsideToleranceMeters),
 // a ray that never leaves it (unbounded planes), a zero r, or P landing on C.

@@ -44,7 +44,7 @@ Lookup infinite(glm::vec3 r) {
 }
 
 Lookup cheapK(float kPerMeter, glm::vec3 capture, glm::vec3 x, glm::vec3 r) {
-  // Seed 000, slide "Cheaper approximation exists":
+  // Lagarde & Zanuttini 2012, slide "Cheaper approximation exists":
   //   D = normalize(K * (Pp - C) + R)
   Lookup out;
   if (r == glm::vec3(0.0f)) return out;
@@ -58,7 +58,7 @@ Lookup cheapK(float kPerMeter, glm::vec3 capture, glm::vec3 x, glm::vec3 r) {
 
 Lookup sphere(const glm::mat4& lightingFromWorld, float insideToleranceLighting, glm::vec3 capture,
               glm::vec3 x, glm::vec3 r) {
-  // Seed 001 (GPU Gems ch. 19, Listings 19-1 and 19-2):
+  // Bjorke, GPU Gems ch. 19 (Listings 19-1 and 19-2):
   //   float4 Pu = mul(LightingXf, Pw);                     // the point in lighting space
   //   float b = -2.0 * dot(reflVect, IN.LightingPos);
   //   float c = dot(IN.LightingPos, IN.LightingPos) - 1.0;
@@ -89,7 +89,7 @@ Lookup sphere(const glm::mat4& lightingFromWorld, float insideToleranceLighting,
 }
 
 Lookup aabb(glm::vec3 boxMin, glm::vec3 boxMax, glm::vec3 capture, glm::vec3 x, glm::vec3 r) {
-  // Seed 000, "parallax-correction code for an AABB geometry proxy":
+  // Lagarde & Zanuttini 2012, "parallax-correction code for an AABB geometry proxy":
   //   float3 FirstPlaneIntersect = (BoxMax - PositionWS) / ReflDirectionWS;
   //   float3 SecondPlaneIntersect = (BoxMin - PositionWS) / ReflDirectionWS;
   //   float3 FurthestPlane = max(FirstPlaneIntersect, SecondPlaneIntersect);
@@ -116,7 +116,7 @@ Lookup aabb(glm::vec3 boxMin, glm::vec3 boxMax, glm::vec3 capture, glm::vec3 x, 
 
 Lookup obb(const glm::mat3& unitFromWorld, glm::vec3 boxCenter, glm::vec3 toleranceUnit,
            glm::vec3 capture, glm::vec3 x, glm::vec3 r) {
-  // Seed 000, "Intersection with OBB convert to unit box space":
+  // Lagarde & Zanuttini 2012, "Intersection with OBB convert to unit box space":
   //   float3 RayLS = mul((float3x3)WorldToLocal, RayWS);
   //   float3 ReflCameraLS = mul(WorldToLocal, ReflCameraWS);
   //   float3 Unitary = float3(1.0f, 1.0f, 1.0f);
@@ -126,8 +126,8 @@ Lookup obb(const glm::mat3& unitFromWorld, glm::vec3 boxCenter, glm::vec3 tolera
   //   float Distance = min(FurthestPlane.x, min(FurthestPlane.y, FurthestPlane.z));
   //   float3 IntersectPositionWS = ReflCameraWS + RayWS * Distance;
   //   float3 ReflDirectionWS = IntersectPositionWS - CubemapPositionWS;
-  // The capture point may be anywhere inside the box (seed 004: "allows the cube map centre to
-  // be different to the centre of the box").
+  // The capture point may be anywhere inside the box (the Enlighten documentation: "allows the cube
+  // map centre to be different to the centre of the box").
   Lookup out;
   const glm::vec3 rayLS = unitFromWorld * r;
   const glm::vec3 xLS = unitFromWorld * (x - boxCenter);
@@ -143,8 +143,9 @@ Lookup obb(const glm::mat3& unitFromWorld, glm::vec3 boxCenter, glm::vec3 tolera
 }
 
 Lookup convex(std::span<const glm::vec4> planes, glm::vec3 capture, glm::vec3 x, glm::vec3 r) {
-  // Seed 000's convex volumes, the box code generalized to k planes (seed 004's form: "6
-  // ray-plane intersections ... back-face cull 3 of the planes ... pick the closest"):
+  // Lagarde & Zanuttini's convex volumes, the box code generalized to k planes (the Enlighten
+  // documentation's form: "6 ray-plane intersections ... back-face cull 3 of the planes ... pick
+  // the closest"):
   //   rayPlane = (offset - dot(n, PositionWS)) / dot(n, ReflDirectionWS), front-facing only;
   //   Distance = min over front-facing planes.
   Lookup out;

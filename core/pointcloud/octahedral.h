@@ -1,7 +1,8 @@
 #pragma once
 // The octahedral map of directions (world frame): the unit sphere projected onto the
 // octahedron |x| + |y| + |z| = 1, its lower half folded out over the square's corners, so the
-// whole sphere is one square image (seed 003 uses it for its point-cloud splats).
+// whole sphere is one square image (Hodgman's "Imperfect Environment Maps" uses it for its
+// point-cloud splats).
 //   uv in [0, 1]^2, u right, v down; +Z at the centre, -Z at the four corners.
 // Texel (col, row) of an N x N map has its centre at ((col + 0.5) / N, (row + 0.5) / N).
 

@@ -1,5 +1,5 @@
 #pragma once
-// Seed 003 (Hodgman, "Imperfect Environment Maps"): a proxy-free reflection. The level as a
+// Hodgman, "Imperfect Environment Maps": a proxy-free reflection. The level as a
 // cloud of coloured points is splatted into an octahedral map (octahedral.h) around the
 // shading point, each point a disc whose alpha is the solid angle it covers; holes are filled
 // by an alpha-weighted blur; the lookup is that map sampled along r.

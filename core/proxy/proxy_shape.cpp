@@ -113,6 +113,16 @@ int planeCount(const ProxyShape& shape) {
   return 0;
 }
 
+bool holdsVolume(const ProxyShape& shape) {
+  const auto thick = [](glm::dvec3 half) {
+    return std::isfinite(half.x) && std::isfinite(half.y) && std::isfinite(half.z) &&
+           std::min({half.x, half.y, half.z}) >= kThinnestShapeMeters;
+  };
+  if (const auto* box = std::get_if<BoxShape>(&shape)) return thick(box->halfExtentsMeters);
+  if (const auto* sphere = std::get_if<SphereShape>(&shape)) return thick(sphere->radiiMeters);
+  return true;
+}
+
 bool strictlyContains(const ProxyShape& shape, glm::dvec3 p) {
   if (const auto* box = std::get_if<BoxShape>(&shape))
     return signedDistanceOutside(convexFromBox(*box).planes, p) < 0;

@@ -15,11 +15,11 @@ namespace probeproxy {
 
 struct InfiniteShape {};  // no proxy: the cubemap is looked up with the reflection vector
 
-struct CheapKShape {  // seed 000's approximation: lookup = normalize(k * (x - C) + r)
+struct CheapKShape {  // Lagarde & Zanuttini's approximation: lookup = normalize(k * (x - C) + r)
   double kPerMeter = 0.0;
 };
 
-struct SphereShape {  // seed 001's lighting-space sphere (an ellipsoid when radii differ)
+struct SphereShape {  // Bjorke's lighting-space sphere (an ellipsoid when radii differ)
   glm::dvec3 centerMeters{0.0};
   glm::dvec3 radiiMeters{1.0};  // along the sphere's own axes
   glm::dquat worldFromSphere{1, 0, 0, 0};
@@ -54,6 +54,12 @@ int planeCount(const ProxyShape& shape);
 // Whether a point is strictly inside the shape (shapes without a volume contain everything):
 // a capture point on or outside its proxy breaks parallax correction.
 bool strictlyContains(const ProxyShape& shape, glm::dvec3 pointMeters);
+
+// Whether every half-extent or radius of a box or sphere is finite and at least
+// kThinnestShapeMeters (true for the shapes without one). A flat box, fitted to points in one
+// plane or authored 2 um thick, divides a lookup by zero and is no engine's box.
+inline constexpr double kThinnestShapeMeters = 1e-3;
+bool holdsVolume(const ProxyShape& shape);
 
 // The box as six planes and its 8 corners / 12 triangles.
 ConvexProxy convexFromBox(const BoxShape& box);

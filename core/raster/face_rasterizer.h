@@ -2,7 +2,7 @@
 // A small software rasterizer for one cube face: the face is a 90-degree pinhole camera at an
 // eye point (core/cube/cube_face.h: forward, up, right; row 0 at the top), and triangles are
 // drawn into it the way a GPU does, so the mixing step can be done "by rasterizing the proxy"
-// as seed 000 does on the console:
+// as Lagarde & Zanuttini 2012 does on the console:
 //   - near-plane clipping in camera space (nothing behind the eye is drawn),
 //   - coverage at texel centres with the top-left fill rule (Direct3D's: a centre exactly on an
 //     edge belongs to a triangle only if that edge is a top or a left edge), so triangles that
@@ -24,7 +24,8 @@ namespace probeproxy {
 
 struct RasterVertex {
   glm::dvec3 positionMeters{0.0};  // world frame
-  glm::dvec3 attribute{0.0};       // anything linear in world space (seed 000: vertex - C)
+  glm::dvec3 attribute{
+      0.0};  // anything linear in world space (Lagarde & Zanuttini 2012: vertex - C)
 };
 
 // One face's render target. Owns its texels; row-major, row 0 at the top.

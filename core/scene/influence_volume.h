@@ -1,6 +1,6 @@
 #pragma once
-// Where a probe contributes (seed 000, bonus slides): 100% inside the inner range, fading to
-// 0% at the outer boundary. World frame (Z up), metres.
+// Where a probe contributes (Lagarde & Zanuttini 2012, bonus slides): 100% inside the inner range,
+// fading to 0% at the outer boundary. World frame (Z up), metres.
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>

@@ -1,18 +1,18 @@
 #pragma once
-// Diffuse lighting from a cubemap through spherical harmonics (seeds 001 and 002): the
-// radiance projected onto the real SH basis up to band 1 (L1, 4 coefficients, seed 002's SH
-// buffer) or band 2 (L2, 9 coefficients), and the irradiance of a surface with normal n
-// (Ramamoorthi & Hanrahan 2001, "An Efficient Representation for Irradiance Environment
+// Diffuse lighting from a cubemap through spherical harmonics (Bjorke, GPU Gems ch. 19, and
+// Lagarde's blog): the radiance projected onto the real SH basis up to band 1 (L1, 4 coefficients,
+// Lagarde's blog's SH buffer) or band 2 (L2, 9 coefficients), and the irradiance of a surface with
+// normal n (Ramamoorthi & Hanrahan 2001, "An Efficient Representation for Irradiance Environment
 // Maps").
 //
 // Basis: world frame (Z up, so Z is the polar axis), unit direction (x, y, z), coefficient
 // order (l, m) = (0,0) (1,-1) (1,0) (1,1) (2,-2) (2,-1) (2,0) (2,1) (2,2), with the
-// Condon-Shortley phase that seed 002's SHEvalDirection uses:
+// Condon-Shortley phase that Lagarde's blog's SHEvalDirection uses:
 //   Y00 = 0.282095
 //   Y1-1 = -0.488603 y   Y10 = 0.488603 z   Y11 = -0.488603 x
 //   Y2-2 = 1.092548 xy   Y2-1 = -1.092548 yz   Y20 = 0.315392 (3z^2 - 1)
 //   Y21 = -1.092548 xz   Y22 = 0.546274 (x^2 - y^2)
-// So the first four coefficients of a channel are exactly seed 002's float4 (x, y, z, w) for
+// So the first four coefficients of a channel are exactly Lagarde's blog's float4 (x, y, z, w) for
 // that channel (SHLightr/g/b), and a light of radiant intensity I in direction l adds
 // I * Y(l) to them as its AddLightToSH does. Ramamoorthi & Hanrahan write their basis without
 // that phase; their irradiance formula is used below with the signs of Y1-1, Y11, Y2-1, Y21
@@ -56,7 +56,7 @@ glm::vec3 evaluateSh(const ShRgb& sh, glm::vec3 direction, ShOrder order);
 // surface.
 glm::vec3 irradianceFromSh(const ShRgb& sh, glm::vec3 normal, ShOrder order);
 
-// Seed 002's L1 buffer: per colour channel (r, g, b) the float4 (L00, L1-1, L10, L11).
+// Lagarde's blog's L1 buffer: per colour channel (r, g, b) the float4 (L00, L1-1, L10, L11).
 std::array<glm::vec4, 3> seedL1Buffer(const ShRgb& sh);
 
 }  // namespace probeproxy

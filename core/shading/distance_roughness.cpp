@@ -9,7 +9,8 @@
 namespace probeproxy {
 
 // Why sqrt of the distance ratio:
-// 1. Cone from roughness. Seed 004 picks mip = numMips + 2 log2(roughness) from a chain built
+// 1. Cone from roughness. The Enlighten documentation picks mip = numMips + 2 log2(roughness) from
+// a chain built
 //    by halving; a texel of mip m spans 2^m level-0 texels, i.e. an angle proportional to
 //    2^m / N = 2^numMips roughness^2 / N, with numMips about log2(N) + 1. So the mip mapping
 //    treats the lobe's cone as having tan(halfAngle) = k * roughness^2 (k a constant of the

@@ -1,11 +1,12 @@
 #pragma once
 // Distance-based roughness: a glossy lookup into a parallax-corrected cubemap picks its mip
-// from the roughness (seed 004's mipFromRoughness, core/cube/cubemap_sampling.h), but the
-// cubemap was filtered as seen from the capture point C, not from the shading point x. A
-// reflection lobe leaving x reaches the proxy hit P with a footprint whose size grows with
-// |P - x|; C sees that footprint at distance |P - C|. So a shading point close to the wall
-// it reflects sees a sharper reflection than the probe's filtered mip, and one far from it a
-// blurrier one (seed 000's glossy discussion; the "distance-based roughness" engines offer).
+// from the roughness (the Enlighten documentation's mipFromRoughness,
+// core/cube/cubemap_sampling.h), but the cubemap was filtered as seen from the capture point C, not
+// from the shading point x. A reflection lobe leaving x reaches the proxy hit P with a footprint
+// whose size grows with |P - x|; C sees that footprint at distance |P - C|. So a shading point
+// close to the wall it reflects sees a sharper reflection than the probe's filtered mip, and one
+// far from it a blurrier one (Lagarde & Zanuttini's glossy discussion; the "distance-based
+// roughness" engines offer).
 //
 // Derivation (comment in distance_roughness.cpp): the roughness that C would need to see the
 // same footprint is

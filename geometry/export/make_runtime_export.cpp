@@ -78,12 +78,13 @@ std::optional<std::size_t> bestCandidate(const std::vector<ProxyCandidate>& cand
   return best;
 }
 
-bool isAabb(const ProxyShape& s) { return methodOf(s) == Method::Aabb; }
-bool isBox(const ProxyShape& s) { return std::holds_alternative<BoxShape>(s); }
+// A box no engine could take (flat: see holdsVolume) is not offered to any.
+bool isAabb(const ProxyShape& s) { return methodOf(s) == Method::Aabb && holdsVolume(s); }
+bool isBox(const ProxyShape& s) { return std::holds_alternative<BoxShape>(s) && holdsVolume(s); }
 bool isTrueSphere(const ProxyShape& s) {
   const auto* sphere = std::get_if<SphereShape>(&s);
   return sphere && sphere->radiiMeters.x == sphere->radiiMeters.y &&
-         sphere->radiiMeters.y == sphere->radiiMeters.z;
+         sphere->radiiMeters.y == sphere->radiiMeters.z && holdsVolume(s);
 }
 
 EngineSource sourceOf(const ProxyCandidate& c, bool keptProxy) {
@@ -175,7 +176,8 @@ RuntimeEngines enginesFor(const ProbeProxyBuild& build, const Probe& probe,
   RuntimeEngines engines;
   const auto& cs = build.candidates;
   const ProxyCandidate& kept = cs[build.kept];
-  const std::optional<BoxShape> keptAsBox = keptBox(kept.shape);
+  std::optional<BoxShape> keptAsBox = keptBox(kept.shape);
+  if (keptAsBox && !holdsVolume(*keptAsBox)) keptAsBox.reset();
 
   if (keptAsBox && isAabb(*keptAsBox)) {
     engines.unity = unityReflectionProbe(lowered(*keptAsBox), probe.captureMeters, influence);

@@ -32,8 +32,9 @@
 //                                                       // differ)
 //     "world_to_unit": [[4 numbers], [..], [..], [0.0, 0.0, 0.0, 1.0]],
 //                                        // aabb, obb, sphere only: row-major, unit = M * [x, y,
-//                                        // z, 1] maps the box to [-1, 1]^3 (seed 000's unit box
-//                                        // space), the sphere to the unit sphere (seed 001's
+//                                        // z, 1] maps the box to [-1, 1]^3 (Lagarde & Zanuttini's
+//                                        unit box
+//                                        // space), the sphere to the unit sphere (Bjorke's
 //                                        // lighting space); file frame in, the shape's own axes
 //                                        // out
 //     "planes_count": 6,                 // planes a shader tests: 0 for infinite, cheap_k and

@@ -1,8 +1,9 @@
 #pragma once
-// What shaders intersect reflection rays in: a box's "unit box space" (seed 000: the OBB is
-// turned into [-1, 1]^3 by WorldToLocal before the slab test) and a sphere's "lighting space"
-// (seed 001: the unit sphere under a 4x4 transform, so ellipsoids too). Frame-free: the same
-// formula gives a world matrix from a world shape and a file matrix from a file shape.
+// What shaders intersect reflection rays in: a box's "unit box space" (Lagarde & Zanuttini 2012:
+// the OBB is turned into [-1, 1]^3 by WorldToLocal before the slab test) and a sphere's "lighting
+// space" (Bjorke, GPU Gems ch. 19: the unit sphere under a 4x4 transform, so ellipsoids too).
+// Frame-free: the same formula gives a world matrix from a world shape and a file matrix from a
+// file shape.
 
 #include "core/proxy/convex_proxy.h"
 

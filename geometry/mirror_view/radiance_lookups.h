@@ -30,7 +30,7 @@ RadianceLookup trueHitRadianceLookup(const Cubemap& cube, const LevelRayCaster& 
 // is a missed one (the seed's red).
 RadianceLookup correctedCubeRadianceLookup(const CorrectedCubemap& corrected);
 
-// Seed 003's proxy-free `pointcloud` method: the cloud splatted around x, sampled along r
+// Hodgman's proxy-free `pointcloud` method: the cloud splatted around x, sampled along r
 // (point_cloud_splat.h). A direction no splat or fill reached is a miss.
 RadianceLookup pointCloudRadianceLookup(const PointCloud& cloud, const PointCloudOptions& options);
 

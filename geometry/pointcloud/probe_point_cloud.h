@@ -1,5 +1,5 @@
 #pragma once
-// The level as seed 003's coloured point cloud, made from what a probe already has: one point
+// The level as Hodgman's coloured point cloud, made from what a probe already has: one point
 // per texel of its cubemap's sharpest level, where that texel's centre ray first hits the
 // level (Embree), with the texel's radiance. Emissive (or diffuse) surfaces look the same
 // from any side, so the colour the probe saw is the colour every shading point sees.

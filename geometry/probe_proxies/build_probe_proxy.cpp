@@ -27,6 +27,16 @@ std::string noLevelFinding(double skyShare) {
          "% of directions: it is outside the level, or the level is open";
 }
 
+// A capture point inside a wall sees the backs of the wall's faces; one inside a room whose
+// faces all point outward (normals inverted on export) sees nothing else, and every fit then
+// models the room's outside from within.
+std::string backFacesFinding(double backShare) {
+  return "the capture point sees the back of a surface in " +
+         std::to_string(static_cast<int>(std::round(100 * backShare))) +
+         "% of directions: it is inside a wall, or the level's faces point away from its rooms "
+         "(inverted normals: flip them where the level is made)";
+}
+
 // all_surfaces for every kind of proxy and the kept one; the simplification's many steps are
 // selected on mirror_floor and reported on it alone.
 void measureOnAllSurfaces(ProbeProxyBuild& build, glm::dvec3 capture,
@@ -126,6 +136,7 @@ ProbeProxyBuild buildProbeProxy(const Probe& probe, const ProbeView& view, const
   build.probe = probe.name;
   const glm::dvec3 capture = probe.captureMeters;
   if (view.skyShare > 0.5) build.findings.push_back(noLevelFinding(view.skyShare));
+  if (view.backShare > 0.5) build.findings.push_back(backFacesFinding(view.backShare));
 
   Stopwatch stage;
 
@@ -148,6 +159,8 @@ ProbeProxyBuild buildProbeProxy(const Probe& probe, const ProbeView& view, const
   measureOnAllSurfaces(build, capture, samples.all);
   build.evaluateMs = stage.lap();
   finishKeptProxy(build, capture);
+  if (std::string over = overToleranceFinding(build.candidates, build.kept, o); !over.empty())
+    build.findings.push_back(std::move(over));
   build.buildMs = total.ms() + build.hullMs;
   return build;
 }

@@ -28,7 +28,6 @@ SurfaceNearby nearestSurface(const LevelRayCaster& level, glm::dvec3 point) {
   return near;
 }
 
-
 void checkCapturePoints(const Scene& scene, const LevelRayCaster& level) {
   // A probe outside its own influence volume has no reflections to fit a proxy to (the samples
   // live in the volume): bad input, said before any work. `validate` reports it as a finding.

@@ -35,22 +35,6 @@ ViewHull fitViewHull(const ProbeView& view) {
   return h;
 }
 
-namespace {
-
-// Every half-extent or radius at least a millimetre, and finite.
-bool holdsVolume(const ProxyShape& shape) {
-  constexpr double kThinnestMeters = 1e-3;
-  const auto thick = [](glm::dvec3 half) {
-    return std::isfinite(half.x) && std::isfinite(half.y) && std::isfinite(half.z) &&
-           std::min({half.x, half.y, half.z}) >= kThinnestMeters;
-  };
-  if (const auto* box = std::get_if<BoxShape>(&shape)) return thick(box->halfExtentsMeters);
-  if (const auto* sphere = std::get_if<SphereShape>(&shape)) return thick(sphere->radiiMeters);
-  return true;
-}
-
-}  // namespace
-
 FittedCandidates fitCandidates(const ProbeView& view, std::span<const ReflectionSample> fitSamples,
                                const std::optional<ProxyShape>& authored, bool uprightObb) {
   return fitCandidates(view, fitViewHull(view), fitSamples, authored, uprightObb);
@@ -66,10 +50,18 @@ FittedCandidates fitCandidates(const ProbeView& view, const ViewHull& hull,
     // Fitted to points in one plane (a capture point that sees one wall, from outside), a box
     // or sphere is flat: it holds no volume, a lookup in it divides by zero and no engine
     // takes it.
-    if (origin != CandidateOrigin::Authored && !holdsVolume(candidate.shape)) {
-      f.findings.push_back(candidateName(candidate) +
-                           ": what it was fitted to lies in one plane, so it holds no volume");
-      return;
+    if (!holdsVolume(candidate.shape)) {
+      if (origin == CandidateOrigin::Authored) {
+        // Measured as authored, but no engine gets a box without a volume (runtime export).
+        f.findings.push_back("the authored proxy is thinner than " +
+                             std::to_string(int(kThinnestShapeMeters * 1000)) +
+                             " mm on some axis: it holds no volume, and no engine preset is "
+                             "made from it");
+      } else {
+        f.findings.push_back(candidateName(candidate) +
+                             ": what it was fitted to lies in one plane, so it holds no volume");
+        return;
+      }
     }
     f.candidates.push_back(std::move(candidate));
   };
@@ -103,6 +95,14 @@ FittedCandidates fitCandidates(const ProbeView& view, const ViewHull& hull,
     add(CandidateOrigin::RoomBox, holdingShadingPoints(*room, fitSamples), each.lap());
   f.fitMs = fitTime.ms();
   if (f.hull) add(CandidateOrigin::Hull, *f.hull, f.hullMs);
+  const bool anyBox = std::any_of(f.candidates.begin(), f.candidates.end(), [](const auto& c) {
+    return std::holds_alternative<BoxShape>(c.shape) && holdsVolume(c.shape);
+  });
+  if (!anyBox) {
+    f.findings.push_back(
+        "no box holds a volume: proxies.json has no box preset for this probe (Unity, HDRP, "
+        "Unreal's box, Godot, Bevy, EEVEE); in the engine, leave its box projection off");
+  }
   return f;
 }
 

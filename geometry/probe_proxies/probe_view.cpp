@@ -40,6 +40,14 @@ ProbeView seeLevel(const LevelRayCaster& level, glm::dvec3 capture, int faceSize
   view.pointsMeters = seenPoints(depthCubeFromHits(view.hits, capture, faceSize));
   view.skyShare =
       1.0 - static_cast<double>(view.pointsMeters.size()) / static_cast<double>(view.hits.size());
+  std::size_t back = 0;
+  const std::vector<Ray> rays = depthCubeRays(capture, faceSize);
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    const RayHit& h = view.hits[i];
+    if (h.hit() && glm::dot(glm::dvec3(h.geometricNormal), glm::dvec3(rays[i].direction)) > 0.0)
+      ++back;
+  }
+  view.backShare = static_cast<double>(back) / static_cast<double>(view.hits.size());
   if (!view.pointsMeters.empty()) {
     view.nearestMeters = 1e300;
     view.farthestMeters = 0.0;

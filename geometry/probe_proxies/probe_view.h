@@ -20,6 +20,7 @@ struct ProbeView {
   double nearestMeters = 1.0;            // from the capture point; 1 when nothing is seen
   double farthestMeters = 1.0;
   double skyShare = 0.0;                    // texels that hit nothing
+  double backShare = 0.0;                   // texels whose ray meets a surface from behind
   double toleranceMeters = 1e-4;            // hull tolerance: 1e-4 x farthest + 0.1 mm
   std::vector<ProxyPlane> wallPlanes;       // large planar surfaces seen (visibleSurfacePlanes)
   std::array<double, 6> axisWallsMeters{};  // room_box.h: walls along -x, +x, -y, +y, -z, +z

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <string_view>
 #include <tuple>
 
@@ -84,6 +86,57 @@ std::size_t selectProxy(const std::vector<ProxyCandidate>& candidates, const Pro
     if (best == candidates.size() || complexity(i) < complexity(best)) best = i;
   }
   return best;
+}
+
+std::string overToleranceFinding(const std::vector<ProxyCandidate>& candidates, std::size_t kept,
+                                 const ProxyBuildOptions& o) {
+  if (kept >= candidates.size() || meetsTolerance(candidates[kept].error, o)) return {};
+  if (candidates[kept].origin == CandidateOrigin::Authored && !o.regenerate) return {};
+  // Nothing measured (no sample the probe sees): the view's own findings say why.
+  if (!std::isfinite(candidates[kept].error.p95Deg)) return {};
+  const auto degrees = [](double d) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f deg", d);
+    return std::string(text);
+  };
+  const auto percent = [](double share) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f%%", 100.0 * share);
+    return std::string(text);
+  };
+  const ErrorFigures& k = candidates[kept].error;
+  const bool p95Within = std::isfinite(k.p95Deg) && k.p95Deg <= o.toleranceDeg;
+  std::string line =
+      "kept " + candidateName(candidates[kept]) + " at p95 " + degrees(k.p95Deg) +
+      (p95Within ? ", missing " + percent(k.missRate) + " of the samples (over the " +
+                       percent(o.maxMissRate) + " allowed)"
+                 : ", over the " + degrees(o.toleranceDeg) + " tolerance") +
+      ": no candidate meets both";
+  // The refused candidate with the lowest p95, and what refused it.
+  std::size_t nearest = candidates.size();
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (i == kept || candidates[i].origin == CandidateOrigin::Authored ||
+        !std::isfinite(candidates[i].error.p95Deg))
+      continue;
+    if (nearest == candidates.size() ||
+        candidates[i].error.p95Deg < candidates[nearest].error.p95Deg)
+      nearest = i;
+  }
+  if (nearest != candidates.size() && candidates[nearest].error.p95Deg < k.p95Deg) {
+    const ProxyCandidate& n = candidates[nearest];
+    line += " (the nearest, " + candidateName(n) + " at p95 " + degrees(n.error.p95Deg);
+    if (n.error.missRate > o.maxMissRate) {
+      line += ", misses " + percent(n.error.missRate) + " of the samples, over the " +
+              percent(o.maxMissRate) + " allowed; --max-miss-rate";
+    } else if (planeCount(n.shape) > o.maxPlanes) {
+      line += ", has " + std::to_string(planeCount(n.shape)) + " planes, over --max-planes " +
+              std::to_string(o.maxPlanes);
+    }
+    line += ")";
+  }
+  return line +
+         "; where one probe serves more than one room, a second probe (validate's split_probe), "
+         "or `layout --keep-authored`, would meet it";
 }
 
 }  // namespace probeproxy

@@ -21,4 +21,13 @@ namespace probeproxy {
 std::size_t selectProxy(const std::vector<ProxyCandidate>& candidates,
                         const ProxyBuildOptions& options);
 
+// When the kept candidate does not meet the tolerance: what was kept, the candidate nearest to
+// meeting it and why it was refused, and what would help, e.g. "kept cheap_k at p95 47.03 deg,
+// over the 0.25 deg tolerance: no candidate meets both (the nearest, room_box at p95 11.30 deg,
+// misses 7.0% of the samples, over the 0.1% allowed; --max-miss-rate); where one probe serves
+// more than one room, a second probe (validate's split_probe), or `layout --keep-authored`,
+// would meet it". Empty when the kept one meets it, or is the authored proxy kept as authored.
+std::string overToleranceFinding(const std::vector<ProxyCandidate>& candidates, std::size_t kept,
+                                 const ProxyBuildOptions& options);
+
 }  // namespace probeproxy

@@ -15,12 +15,12 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
-#include <sstream>
 #include <cstdio>
 #include <initializer_list>
 #include <map>
 #include <memory>
 #include <optional>
+#include <sstream>
 #include <system_error>
 #include <utility>
 
@@ -33,7 +33,6 @@ namespace fs = std::filesystem;
 
 constexpr int kFormatVersion = 1;
 constexpr char kMeshExtensionsText[] = ".glb, .gltf, .obj, .ply or .off";
-constexpr char kLevelExtensionsText[] = ".glb, .gltf, .obj, .ply, .off, .bsp or .pk3";
 constexpr char kFacePlaceholder[] = "{face}";
 
 // ------------------------------------------------------------------------------------------
@@ -179,8 +178,7 @@ fs::path meshPathAsWritten(const Json& value, const std::string& path) {
 }
 
 fs::path levelPathAsWritten(const Json& value, const std::string& path) {
-  if (!value.is_string() ||
-      !(hasMeshExtension(value.get<std::string>()) || isBspLevel(value.get<std::string>()))) {
+  if (!value.is_string() || !isLevelFile(value.get<std::string>())) {
     failJsonExpected(path, std::string("a mesh path ending in ") + kLevelExtensionsText, value);
   }
   return fs::path(value.get<std::string>());
@@ -271,8 +269,8 @@ LevelMeshRef readLevelMesh(const Json& value, const std::string& path, UpAxis sc
   if (value.is_string()) {  // "corridor.glb" is short for {"mesh": "corridor.glb"}
     mesh.pathAsWritten = levelPathAsWritten(value, path);
     if (hasExtension(mesh.pathAsWritten, ".pk3")) {
-      failJsonExpected(path, "an object {\"mesh\": \"<archive>.pk3\", \"map\": \"maps/<name>.bsp\"}",
-                   value);
+      failJsonExpected(
+          path, "an object {\"mesh\": \"<archive>.pk3\", \"map\": \"maps/<name>.bsp\"}", value);
     }
   } else if (value.is_object()) {
     mesh.pathAsWritten =
@@ -299,7 +297,8 @@ LevelMeshRef readLevelMesh(const Json& value, const std::string& path, UpAxis sc
 
 std::vector<LevelMeshRef> readLevel(const Json& value, const std::string& path, UpAxis sceneUp,
                                     const fs::path& folder) {
-  if (!value.is_array() || value.empty()) failJsonExpected(path, "a non-empty array of meshes", value);
+  if (!value.is_array() || value.empty())
+    failJsonExpected(path, "a non-empty array of meshes", value);
   std::vector<LevelMeshRef> level;
   for (std::size_t i = 0; i < value.size(); ++i) {
     level.push_back(readLevelMesh(value[i], jsonIndexPath(path, i), sceneUp, folder));
@@ -347,7 +346,7 @@ SphereInfluence readSphereInfluence(const Json& value, const std::string& path,
     if (!isFiniteNumber(*inner) || !(inner->get<double>() > 0.0) ||
         inner->get<double>() > radiusJson.get<double>()) {
       failJsonExpected(jsonMemberPath(path, "inner_radius"),
-                   "a positive number at most radius " + describeJson(radiusJson), *inner);
+                       "a positive number at most radius " + describeJson(radiusJson), *inner);
     }
     sphere.innerRadiusMeters = worldLengthFromFile(frame, inner->get<double>());
   }
@@ -378,9 +377,9 @@ ProxySpec readProxy(const Json& value, const std::string& path, const FileFrame&
     rejectUnknownMembers(value, path, {"kind", "center", "half_extents", "rotation"});
     AuthoredObb obb{pointMember(value, path, "center", frame),
                     halfExtentsMember(value, path, "half_extents", frame)};
-    obb.worldFromBox = worldRotationFromFile(
-        frame,
-        unitQuaternionWxyz(requiredMember(value, path, "rotation"), jsonMemberPath(path, "rotation")));
+    obb.worldFromBox =
+        worldRotationFromFile(frame, unitQuaternionWxyz(requiredMember(value, path, "rotation"),
+                                                        jsonMemberPath(path, "rotation")));
     return obb;
   }
   if (kind == "sphere") {
@@ -405,9 +404,9 @@ std::string cubemapPattern(const Json& value, const std::string& path) {
   };
   if (!value.is_string() || !isImagePath(value.get_ref<const std::string&>())) {
     failJsonExpected(path,
-                 std::string("an .exr, .hdr or .png image path (six files with ") +
-                     kFacePlaceholder + ", or one cross or equirectangular image)",
-                 value);
+                     std::string("an .exr, .hdr or .png image path (six files with ") +
+                         kFacePlaceholder + ", or one cross or equirectangular image)",
+                     value);
   }
   return value.get<std::string>();
 }
@@ -463,9 +462,9 @@ std::vector<Probe> readProbes(const Json& value, const std::string& path, const 
     probes.push_back(readProbe(value[i], probePath, frame, folder));
     const auto [first, isNew] = indexByName.emplace(probes.back().name, i);
     if (!isNew) {
-      failJson(jsonMemberPath(probePath, "name"), describeJson(Json(probes.back().name)) +
-                                                  " is used by " +
-                                                  jsonIndexPath(path, first->second) + " already");
+      failJson(jsonMemberPath(probePath, "name"),
+               describeJson(Json(probes.back().name)) + " is used by " +
+                   jsonIndexPath(path, first->second) + " already");
     }
   }
   return probes;
@@ -493,7 +492,6 @@ Scene sceneFromDocument(const Json& root, const fs::path& absoluteFile) {
   scene.probes = readProbes(requiredMember(root, "$", "probes"), "$.probes", frame, folder);
   return scene;
 }
-
 
 // ------------------------------------------------------------------------------------------
 // Writing.
@@ -703,7 +701,17 @@ Scene parseSceneFile(std::string_view bytes, const std::filesystem::path& file) 
   }
 }
 
+bool isLevelFile(const std::filesystem::path& file) {
+  return hasMeshExtension(file) || isBspLevel(file);
+}
+
 Scene readSceneFile(const std::filesystem::path& file) {
+  if (isLevelFile(file)) {
+    throw InputError(file,
+                     "is a level, not a scene file (.scene.json): list it in a scene's "
+                     "\"level\", or lay it out with `probeproxy layout " +
+                         file.string() + " --out DIR`, which takes a level as it is");
+  }
   return parseSceneFile(readJsonFile(file), file);
 }
 

@@ -25,7 +25,13 @@ namespace probeproxy {
 // mesh files exist is not checked here: the level loader does that, naming the mesh.
 // Throws InputError(file, "<JSON path>: <what was expected>, got <what was there>") for the
 // first problem found, e.g. "$.probes[1].influence.radius: expected a positive number, got -2".
+// A level mesh or map given where a scene goes is refused by name.
 Scene readSceneFile(const std::filesystem::path& file);
+
+// What a scene's "level" takes: a mesh (.glb, .gltf, .obj, .ply, .off) or a Quake 3 map (.bsp,
+// .pk3), by extension, whatever the case.
+bool isLevelFile(const std::filesystem::path& file);
+inline constexpr char kLevelExtensionsText[] = ".glb, .gltf, .obj, .ply, .off, .bsp or .pk3";
 
 // The same for bytes already read (the add-on, fuzzers); `file` names them in errors and
 // anchors their relative paths.

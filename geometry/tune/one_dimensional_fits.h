@@ -9,7 +9,7 @@
 
 namespace probeproxy {
 
-// seed 000's lookup = normalize(k (x - C) + r): the k that suits this probe's samples,
+// Lagarde & Zanuttini's lookup = normalize(k (x - C) + r): the k that suits this probe's samples,
 // searched over [0, 4 / nearest wall] (k = 1/R makes it exact for a sphere of radius R
 // around C seen from C).
 CheapKShape fitCheapK(glm::dvec3 captureMeters, std::span<const ReflectionSample> samples,

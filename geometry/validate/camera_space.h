@@ -1,8 +1,8 @@
 #pragma once
 // Where a camera can be, which is where a blend can pop: Lagarde blends the probes at the point
-// of interest, the camera (seed 000), so weight_jump and too_many_overlaps look there only. A
-// camera stands over the floor a player walks (walkedFloor: the floor survey measures and
-// floor_not_covered covers), at most head room above it, in the open. Bands reach into walls,
+// of interest, the camera (Lagarde & Zanuttini 2012), so weight_jump and too_many_overlaps look
+// there only. A camera stands over the floor a player walks (walkedFloor: the floor survey measures
+// and floor_not_covered covers), at most head room above it, in the open. Bands reach into walls,
 // over the tops of walls and onto ledges no one reaches, where volumes of neighbouring rooms
 // meet at the far edge of both their bands and their normalised weights swing within a
 // centimetre (basement: all ten worst jumps of its layout, 0.4 to 1.6 m from the walked floor).

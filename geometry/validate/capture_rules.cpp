@@ -111,12 +111,12 @@ void checkCaptureInsideLevel(const LevelRayCaster& level, const Probe& probe,
   constexpr double kLimit = 0.5;
   const std::vector<Ray> rays = depthCubeRays(probe.captureMeters, kFaceSize);
   const std::vector<RayHit> hits = castDepthCubeRays(level, probe.captureMeters, kFaceSize);
-  std::size_t unseen = 0;
+  std::size_t unseen = 0, backs = 0;
   for (std::size_t i = 0; i < hits.size(); ++i) {
-    if (!hits[i].hit() ||
-        glm::dot(glm::dvec3(hits[i].geometricNormal), glm::dvec3(rays[i].direction)) > 0.0) {
-      ++unseen;
-    }
+    const bool back = hits[i].hit() && glm::dot(glm::dvec3(hits[i].geometricNormal),
+                                                glm::dvec3(rays[i].direction)) > 0.0;
+    if (!hits[i].hit() || back) ++unseen;
+    if (back) ++backs;
   }
   const double share = static_cast<double>(unseen) / static_cast<double>(hits.size());
   if (share <= kLimit) return;
@@ -131,8 +131,14 @@ void checkCaptureInsideLevel(const LevelRayCaster& level, const Probe& probe,
   f.message = "probe '" + probe.name + "' captures at " + formatPoint(probe.captureMeters) + ": " +
               text +
               " of its directions see no level or the back of a surface; it is "
-              "outside the level or inside a wall";
-  f.hint = "move the capture point into the room it serves";
+              "outside the level or inside a wall" +
+              (2 * backs > hits.size()
+                   ? std::string(", or the level's faces point away from its rooms (inverted "
+                                 "normals)")
+                   : std::string());
+  f.hint = 2 * backs > hits.size() ? "move the capture point into the room it serves; if every "
+                                     "probe shows this, flip the level's normals where it is made"
+                                   : "move the capture point into the room it serves";
   out.push_back(std::move(f));
 }
 

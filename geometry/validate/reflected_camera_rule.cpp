@@ -1,4 +1,4 @@
-// reflected_camera_outside_proxy, seed 000's rule for planar receivers: the mixing-step
+// reflected_camera_outside_proxy, Lagarde & Zanuttini's rule for planar receivers: the mixing-step
 // correction casts the reflected camera's view rays against the proxy, so "artists must ensure
 // that the reflected camera will always remain within the box volume" for glossy receivers.
 // For a mirror the weaker condition holds: the receiver under each camera must be inside the
@@ -47,7 +47,7 @@ void checkReflectedCameras(const LevelRayCaster& level, const Probe& probe,
                  "probe '" + probe.name + text,
                  options.glossyReceivers
                      ? "enlarge the proxy below the reflection plane until it holds the "
-                       "reflected cameras (seed 000's glossy rule)"
+                       "reflected cameras (Lagarde & Zanuttini's glossy rule)"
                      : "move the proxy's face down onto the reflection plane (or below it)"});
 }
 

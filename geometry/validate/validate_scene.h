@@ -24,7 +24,7 @@
 //   influence_leak              warning  share of the influence volume's walkable floor the
 //                                        capture point cannot see (through a wall) / limit
 //   reflected_camera_outside_proxy  warning  metres the camera reflected through a planar
-//                                        receiver lies outside the proxy / 0 (seed 000's
+//                                        receiver lies outside the proxy / 0 (Lagarde & Zanuttini's
 //                                        glossy rule: enlarge the proxy)
 
 #include "core/blend/blend_weights.h"
@@ -70,8 +70,8 @@ struct ValidateOptions {
   // proxy_error_over_tolerance: the authored proxy's mirror_floor p95 may be at most this.
   double toleranceDeg = 0.25;
   // too_many_overlaps: at most this many outer ranges may cover one point: the blend's own
-  // limit (seed 000: "We set the limit to 4 in our game. This can cause lighting pop when 5
-  // volumes overlap").
+  // limit (Lagarde & Zanuttini 2012: "We set the limit to 4 in our game. This can cause lighting
+  // pop when 5 volumes overlap").
   int maxOverlap = kDefaultMaxBlendProbes;
   // inner_ranges_overlap: overlapping inner ranges may share at most this volume.
   double maxInnerOverlapCubicMeters = 0.0;
@@ -93,8 +93,8 @@ struct ValidateOptions {
   double gridSpacingMeters = 0.25;
   std::size_t gridPointBudget = 2'000'000;
   // reflected_camera_outside_proxy: the receivers are glossy (perturbed normals reach below
-  // the plane), so the reflected camera itself must be inside the proxy (seed 000); for
-  // mirrors only the receiver under each camera must be.
+  // the plane), so the reflected camera itself must be inside the proxy (Lagarde & Zanuttini 2012);
+  // for mirrors only the receiver under each camera must be.
   bool glossyReceivers = false;
   // Where a player enters the level (its spawn points): the floor the floor, error and leak
   // rules measure on is the floor reached from them (the probes' capture points when empty).

@@ -1,7 +1,7 @@
 // Milliseconds per corrected cubemap (docs/methods_and_measures.md "Measures", cost): the mixing
-// step of seed 000 for one camera, per texel (mixing_plane) against rasterized (raster_convex), on
-// a box proxy and on a 20-plane convex proxy, every mip level of a --face-size (default 128) source
-// cube. One thread.
+// step of Lagarde & Zanuttini 2012 for one camera, per texel (mixing_plane) against rasterized
+// (raster_convex), on a box proxy and on a 20-plane convex proxy, every mip level of a --face-size
+// (default 128) source cube. One thread.
 //
 //   build/tests/bench/bench_mixing --benchmark_repetitions=5
 //   --benchmark_report_aggregates_only=true

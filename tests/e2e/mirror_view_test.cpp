@@ -107,7 +107,7 @@ TEST_P(BoxRoom, ExactBoxAngularErrorOnTheMirrorFloor) {
   }
 }
 
-// Seed 003's proxy-free method on levels where one box is not the answer: it must see the
+// Hodgman's proxy-free method on levels where one box is not the answer: it must see the
 // reflection (few misses) and beat the uncorrected cubemap.
 class PointCloudView : public ::testing::TestWithParam<std::string> {};
 

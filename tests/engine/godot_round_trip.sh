@@ -22,7 +22,7 @@ case "$scene" in
   *proxies.json) cp "$scene" "$out/export/proxies.json" ;;
   *) "$probeproxy" build "$scene" --out "$out/export" > /dev/null ;;
 esac
-run() { "$godot" --no-window -s "$@" 2>&1 | grep -v "locale\|At: core/translation"; }
+run() { "$godot" --no-window --path "$out" -s "$@" 2>&1 | grep -v "locale\|At: core/translation"; }
 run "$importer/import_to_scene.gd" --args "$out/export/proxies.json" "$out/probes.scn"
 run "$importer/check_scene.gd" --args "$out/export/proxies.json" "$out/probes.scn" | tee "$out/check.log"
 grep -q "probes, 0 mismatches" "$out/check.log"

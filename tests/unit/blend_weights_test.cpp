@@ -42,8 +42,8 @@ double sum(const std::vector<double>& w) {
   return s;
 }
 
-// Seed 000's pseudo-code, literally (without its inner-range early-out), on influence weights
-// that are the normalized distances of the selected primitives.
+// Lagarde & Zanuttini's pseudo-code, literally (without its inner-range early-out), on influence
+// weights that are the normalized distances of the selected primitives.
 std::vector<double> seedBlendFactors(const std::vector<double>& ndf) {
   double sumIW = 0.0, invSumIW = 0.0, sumBlendFactor = 0.0;
   for (double w : ndf) {

@@ -1,4 +1,5 @@
-// Cubemaps: mip chain, seam-aware sampling, roughness to mip (seed 004), file I/O.
+// Cubemaps: mip chain, seam-aware sampling, roughness to mip (the Enlighten documentation), file
+// I/O.
 #include "core/cube/cubemap.h"
 #include "core/cube/cubemap_io.h"
 #include "core/cube/cubemap_sampling.h"
@@ -183,7 +184,7 @@ TEST(CubemapSampling, FractionalLevelIsLinearBetweenLevels) {
 }
 
 TEST(CubemapSampling, MipFromRoughnessFollowsSeed004) {
-  // seed 004: mip = numMips + 2 * log2(roughness), clamped to [0, numMips - 1].
+  // the Enlighten documentation: mip = numMips + 2 * log2(roughness), clamped to [0, numMips - 1].
   EXPECT_FLOAT_EQ(mipFromRoughness(0.5f, 8), 6.0f);
   EXPECT_FLOAT_EQ(mipFromRoughness(0.25f, 8), 4.0f);
   EXPECT_FLOAT_EQ(mipFromRoughness(0.125f, 8), 2.0f);

@@ -1,5 +1,5 @@
-// The glossy analysis of seed 000's bonus slides (core/mixing/glossy_distortion.h) in the box
-// room with a mirror floor and the room's exact box as proxy.
+// The glossy analysis of Lagarde & Zanuttini's bonus slides (core/mixing/glossy_distortion.h) in
+// the box room with a mirror floor and the room's exact box as proxy.
 
 #include "core/mixing/glossy_distortion.h"
 #include "core/proxy/proxy_shape.h"

@@ -70,10 +70,12 @@ TEST(JobOptions, CorrectNeedsAFacePattern) {
             "out/corrected.exr: the output pattern needs {face} (px nx py ny pz nz)");
 }
 
-TEST(JobOptions, BlendNeedsSomethingToWriteAndAProbeCount) {
+TEST(JobOptions, BlendNeedsAFacePatternAndAProbeCount) {
   BlendJobOptions o;
+  o.outPattern = "out/blend.exr";
   EXPECT_EQ(inputErrorOf([&] { runBlendJob(o); }),
-            "--out: nothing to write: give --out PATTERN.exr, --weights-png FILE or both");
+            "out/blend.exr: output pattern has no {face} (e.g. out/blend_{face}.exr)");
+  o.outPattern.clear();
   o.weightsPng = "weights.png";
   o.blend.maxProbes = 0;
   EXPECT_EQ(inputErrorOf([&] { runBlendJob(o); }), "option max_probes: 0 is outside [1, 64]");

@@ -1,5 +1,5 @@
-// The mixing-step correction (seed 000): reflected camera, per-texel and rasterized lookup
-// cubes against each other at every mip size, against the exact answer of a box room with a
+// The mixing-step correction (Lagarde & Zanuttini 2012): reflected camera, per-texel and rasterized
+// lookup cubes against each other at every mip size, against the exact answer of a box room with a
 // mirror floor, and on degenerate set-ups (E' on the proxy boundary, rays parallel to faces).
 
 #include "core/mixing/corrected_cubemap.h"

@@ -1,4 +1,4 @@
-// Seed 003's point-cloud splat: the octahedral map's round trip, and splats of known points
+// Hodgman's point-cloud splat: the octahedral map's round trip, and splats of known points
 // landing in the right direction.
 
 #include "core/pointcloud/octahedral.h"

@@ -1,4 +1,4 @@
-// Fresnel (seed 001) and the distance-based roughness (core/shading/).
+// Fresnel (Bjorke, GPU Gems ch. 19) and the distance-based roughness (core/shading/).
 
 #include "core/cube/cubemap_sampling.h"
 #include "core/shading/distance_roughness.h"

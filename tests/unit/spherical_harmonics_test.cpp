@@ -106,7 +106,7 @@ TEST(SphericalHarmonics, CosineLobeProjectsToTheKernelFactors) {
 }
 
 TEST(SphericalHarmonics, OneBrightTexelMatchesSeed002AddLightToSH) {
-  // A small light: seed 002 adds SHEvalDirection(l) * intensity; the projection of a texel of
+  // A small light: Lagarde's blog adds SHEvalDirection(l) * intensity; the projection of a texel of
   // radiance L adds Y(w) * L * solid angle: the same with intensity = L * solid angle.
   const int n = 16;
   const glm::vec3 light = texelDirection(CubeFace::py, 3, 11, n);

@@ -55,9 +55,11 @@ Verb addBlendVerb(CLI::App& app) {
   verb->add_option("scene", o->scene, "scene file (*.scene.json)")->required();
   verb->add_option("--at", o->at, "point of interest X,Y,Z (metres, world frame)")->required();
   verb->add_option("--out", o->out,
-                   "mixed cubemap, a pattern with {face}: level 0 there, level l as mip<l>_{face}");
+                   "mixed cubemap, a pattern with {face}: level 0 there, level l as mip<l>_{face} "
+                   "(without --out or --weights-png, only the weights are printed)");
   verb->add_option("--scheme", o->scheme,
-                   "blend weights: lagarde (seed 000) or enlighten (seed 004)")
+                   "blend weights: lagarde (Lagarde & Zanuttini 2012) or enlighten (the Enlighten "
+                   "documentation)")
       ->capture_default_str();
   verb->add_option("--max-probes", o->maxProbes,
                    "mix at most this many probes (1-64; the N-th fades)")

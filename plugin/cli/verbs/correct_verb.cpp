@@ -1,10 +1,11 @@
-// `probeproxy correct`: flags into the correct job (plugin/jobs/correct/): seed 000's mixing
-// step for one probe, camera and reflection plane, written as a cubemap.
+// `probeproxy correct`: flags into the correct job (plugin/jobs/correct/): Lagarde & Zanuttini's
+// mixing step for one probe, camera and reflection plane, written as a cubemap.
 
 #include "plugin/cli/command_line_values.h"
 #include "plugin/cli/verb.h"
 #include "plugin/jobs/correct/correct_job.h"
 
+#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -33,8 +34,22 @@ int runCorrect(const CorrectVerbOptions& o) {
   const glm::dvec3 reflected = r.reflectedCameraMeters;
   std::cout << o.method << ": reflected camera (" << reflected.x << ", " << reflected.y << ", "
             << reflected.z << ") " << (r.reflectedCameraInsideProxy ? "inside" : "outside")
-            << " the proxy, " << r.missedTexels << " missed texels (red) over " << r.levels
-            << " levels\n";
+            << " the proxy; ";
+  // A texel whose ray from the reflected camera leaves no proxy face has nothing to show: the
+  // method paints it red, as the talk does, so that an artist sees where the proxy falls short.
+  std::size_t texels = 0;
+  for (int level = 0; level < r.levels && !r.faceSizes.empty(); ++level)
+    texels += 6 * std::size_t(r.faceSizes[0] >> level) * std::size_t(r.faceSizes[0] >> level);
+  if (r.missedTexels == 0) {
+    std::cout << "every texel of the " << r.levels << " levels sees a proxy face\n";
+  } else {
+    std::cout << r.missedTexels << " of " << texels << " texels (" << std::fixed
+              << std::setprecision(1) << 100.0 * double(r.missedTexels) / double(texels)
+              << "%) over " << r.levels
+              << " levels see no proxy face from it and are painted red (the _miss.png masks): "
+                 "keep the reflected camera inside the proxy (validate's "
+                 "reflected_camera_outside_proxy)\n";
+  }
   return 0;
 }
 

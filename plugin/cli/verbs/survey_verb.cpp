@@ -69,7 +69,8 @@ Verb addSurveyVerb(CLI::App& app) {
                    "build exports for that engine, blended by its rules; docs/engines.md)")
       ->capture_default_str();
   verb->add_option("--scheme", o->scheme,
-                   "blend weights: lagarde (seed 000) or enlighten (seed 004)")
+                   "blend weights: lagarde (Lagarde & Zanuttini 2012) or enlighten (the Enlighten "
+                   "documentation)")
       ->capture_default_str();
   verb->add_option("--max-probes", s.blend.maxProbes, "blend at most this many probes (1-64)")
       ->capture_default_str();

@@ -60,7 +60,7 @@ Verb addValidateVerb(CLI::App& app) {
       ->capture_default_str();
   verb->add_flag("--glossy", v.glossyReceivers,
                  "reflected_camera_outside_proxy: receivers are glossy, so the reflected "
-                 "camera itself must be inside the proxy (seed 000)");
+                 "camera itself must be inside the proxy (Lagarde & Zanuttini 2012)");
   verb->add_option("--grid", v.gridSpacingMeters, "grid spacing of the floor and volume rules, m")
       ->capture_default_str();
   verb->add_option("--samples", v.samples.targetSamples, "reflection samples per probe")

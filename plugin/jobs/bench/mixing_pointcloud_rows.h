@@ -2,7 +2,7 @@
 // `probeproxy bench` rows of the methods that are not a per-ray proxy lookup
 // (docs/methods_and_measures.md "Methods"): mixing_plane and raster_convex (the mixing step: a
 // corrected cubemap per camera and reflection plane, through the probe's kept proxy) and pointcloud
-// (seed 003, no proxy).
+// (Hodgman's "Imperfect Environment Maps", no proxy).
 //
 // - mixing_plane, raster_convex: ns_per_lookup is CPU ns per texel of the corrected cubemap
 //   (correctCubemap over every mip level, for the first mirror view's reflected camera);

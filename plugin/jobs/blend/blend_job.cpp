@@ -58,8 +58,8 @@ Cubemap mixProbes(const Scene& scene, const std::vector<ProbeWeight>& weights,
     patterns.push_back(probeCubemapPath(scene, probe).string());
     cubes.push_back(readCubemapImage(patterns.back()));
     if (o.cameraMeters) {
-      // Each probe seen from the reflected camera through its own proxy (seed 000's mixing
-      // step), so the mix is already parallax-corrected for this camera and plane.
+      // Each probe seen from the reflected camera through its own proxy (Lagarde & Zanuttini's
+      // mixing step), so the mix is already parallax-corrected for this camera and plane.
       cubes.back() =
           correctProbe(scene, probe, cubes.back(), *o.cameraMeters, o.plane, proxies, o.method)
               .corrected.cube;
@@ -84,9 +84,6 @@ Cubemap mixProbes(const Scene& scene, const std::vector<ProbeWeight>& weights,
 }  // namespace
 
 void BlendJobOptions::check() const {
-  if (outPattern.empty() && weightsPng.empty())
-    throw InputError("--out",
-                     "nothing to write: give --out PATTERN.exr, --weights-png FILE or both");
   if (!outPattern.empty() && outPattern.find(kFace) == std::string::npos)
     throw InputError(outPattern, "output pattern has no {face} (e.g. out/blend_{face}.exr)");
   requireInRange("max_probes", blend.maxProbes, 1, 64);

@@ -26,7 +26,8 @@ struct BlendJobOptions {
   std::filesystem::path proxiesJson;     // with a camera: a build's export, its kept proxies
   MixingMethod method = MixingMethod::MixingPlane;
 
-  // Throws InputError: nothing to write, a pattern without {face}, max_probes outside [1, 64].
+  // Throws InputError: a pattern without {face}, max_probes outside [1, 64]. With neither
+  // output the job only weighs the probes.
   void check() const;
 };
 

@@ -1,6 +1,6 @@
 #pragma once
-// `correct`: seed 000's mixing step for one probe, camera and reflection plane, written as a
-// cubemap (six EXRs) centred at the reflected camera, one mip level or all of them.
+// `correct`: Lagarde & Zanuttini's mixing step for one probe, camera and reflection plane, written
+// as a cubemap (six EXRs) centred at the reflected camera, one mip level or all of them.
 
 #include "core/mixing/corrected_cubemap.h"
 #include "core/scene/probe.h"

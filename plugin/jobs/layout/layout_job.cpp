@@ -41,7 +41,12 @@ bool isSceneFile(const fs::path& file) {
 
 // A bare level file is read as the scene that lists only it, so both inputs take one path.
 Scene readLevelOrScene(const fs::path& file) {
-  if (isSceneFile(file)) return readSceneFile(file);
+  if (isSceneFile(file) || file.extension() == ".json") return readSceneFile(file);
+  if (!isLevelFile(file)) {
+    throw InputError(file, "unsupported level format '" + file.extension().string() +
+                               "' (expected a .scene.json, or a level: " + kLevelExtensionsText +
+                               ")");
+  }
   const fs::path absolute = fs::absolute(file).lexically_normal();
   const nlohmann::json text = {{"probeproxy_scene", 1},
                                {"up", "Z"},
