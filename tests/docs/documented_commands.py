@@ -2,7 +2,9 @@
 as a user would paste it from the repository's root, and fails when one no longer runs (exit
 code other than 0, or 1 for `validate`'s findings). A line with a placeholder (an upper-case
 word such as SCENE), `...` or `[optional]` parts is a synopsis, not a command: it is counted
-and skipped. `build/scenes` is the generated suite; outputs go to a scratch folder.
+and skipped. `build/scenes` is the generated suite, `build/demo` what `scripts/setup.sh demo`
+leaves (`probeproxy demo --out build/demo --no-bench`, made here first); outputs go to a scratch
+folder.
     documented_commands.py PROBEPROXY REPO SUITE_DIR WORK_DIR"""
 import glob
 import os
@@ -16,6 +18,8 @@ probeproxy, repo, suite, work = sys.argv[1:5]
 shutil.rmtree(work, ignore_errors=True)
 os.makedirs(os.path.join(work, "build"))
 os.symlink(suite, os.path.join(work, "build", "scenes"))
+subprocess.run([probeproxy, "demo", "--out", os.path.join(work, "build", "demo"), "--no-bench"],
+               check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
 
 command = re.compile(r"^\s*(?:build/plugin/cli/)?probeproxy\s")
 synopsis = re.compile(r"\.\.\.|\[|\b[A-Z][A-Z_]{2,}\b")
