@@ -190,7 +190,7 @@ def summary(by_level, rows, out_dir):
                      "mixing: per corrected texel, pointcloud: per shading point")
     right.set_title("cost per lookup; labels: batched speed-up\nover the scalar port, same run")
     right.legend(fontsize=7)
-    fig.suptitle(f"probeproxy bench: every method on {len(levels)} levels")
+    fig.suptitle(f"probeproxy bench: every method on {len(levels)} level{'' if len(levels) == 1 else 's'}")
     fig.tight_layout()
     save(fig, out_dir, "summary")
 

@@ -229,8 +229,12 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
     const CandidateService& chosen = services[selection.chosen[p]];
     add(selection.ranges[p], chosen.captureMeters, chosen.fitMeters);
   }
+  // --max-probes is a cap on every probe the layout makes, fills too: floor the cover's probes
+  // leave is then left uncovered, and the survey says how much.
+  const auto full = [&] { return o.maxProbes > 0 && r.probes.size() >= o.maxProbes; };
   const FloorColumns columns(floor);
   for (const FloorRect& fill : selection.fills) {
+    if (full()) break;
     std::vector<std::size_t> cells;
     columns.forEachIn(fill, [&](std::size_t cell) { cells.push_back(cell); });
     const glm::dvec3 middle = floor.cells[middleCell(columns, fill)].pointMeters;
@@ -252,6 +256,7 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
   std::set<std::size_t> optional;  // of r.probes
   for (const FloorFill& f :
        fillsForUncoveredFloor(level, walked, volumes, o.blendBandMeters, o.captureHeightMeters)) {
+    if (full()) break;
     if (f.optional) optional.insert(r.probes.size());
     r.probes.push_back({f.captureMeters, f.influence, kRoomFitMeters});
   }

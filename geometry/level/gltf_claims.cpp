@@ -139,16 +139,16 @@ std::string bufferProblem(const std::filesystem::path& file, const json& gltf) {
     if (!length) return badMember(owner, "byteLength", buffers[b], "a non-negative integer");
     bufferBytes.push_back(*length);
     declared += double(*length);
-    if (buffers[b].contains("uri") && buffers[b]["uri"].is_string()) {
-      if (std::string p = bufferUriProblem(file, b, buffers[b]["uri"].get<std::string>());
-          !p.empty())
-        return p;
-    }
   }
   // Buffers may live in files beside it, which the mesh file's own size does not count.
   if (declared > double(inputLimits().maxFileBytes()))
     return fileLimitProblem("its buffers' declared byteLength",
                             std::uint64_t(std::min(declared, 1e18)));
+  for (std::size_t b = 0; b < buffers.size(); ++b) {
+    if (!buffers[b].contains("uri") || !buffers[b]["uri"].is_string()) continue;
+    if (std::string p = bufferUriProblem(file, b, buffers[b]["uri"].get<std::string>()); !p.empty())
+      return p;
+  }
   std::vector<std::uint64_t> viewBytes;
   for (std::size_t v = 0; v < views.size(); ++v) {
     const std::string owner = "glTF bufferView " + std::to_string(v);
@@ -254,6 +254,13 @@ std::string primitiveProblem(const json& primitive, const std::string& owner, co
                           primitive["attributes"].is_object() &&
                           primitive["attributes"].contains("POSITION");
   if (!positioned) return owner + " has no POSITION attribute";
+  const auto mode = natural(primitive, "mode", 4);
+  if (!mode || *mode > 6) return badMember(owner, "mode", primitive, "an integer from 0 to 6");
+  if (*mode == 2) {
+    return owner +
+           " is a line loop (mode 2), which Assimp 5.2 cannot read safely; a level's lines "
+           "carry no surface: remove it";
+  }
   const auto position = natural(primitive["attributes"], "POSITION");
   if (!position || *position >= accessors.size())
     return owner + " POSITION is " + describe(primitive["attributes"]["POSITION"]) +
@@ -279,13 +286,6 @@ std::string primitiveProblem(const json& primitive, const std::string& owner, co
              ", expected SCALAR of 5121, 5123 or 5125";
     }
     corners = index["count"].get<std::uint64_t>();
-  }
-  const auto mode = natural(primitive, "mode", 4);
-  if (!mode || *mode > 6) return badMember(owner, "mode", primitive, "an integer from 0 to 6");
-  if (*mode == 2) {
-    return owner +
-           " is a line loop (mode 2), which Assimp 5.2 cannot read safely; a level's lines "
-           "carry no surface: remove it";
   }
   triangles = *mode == 4 ? corners / 3 : *mode >= 5 && corners >= 3 ? corners - 2 : 0;
   return {};

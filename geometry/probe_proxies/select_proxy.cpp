@@ -131,6 +131,10 @@ std::string overToleranceFinding(const std::vector<ProxyCandidate>& candidates, 
     } else if (planeCount(n.shape) > o.maxPlanes) {
       line += ", has " + std::to_string(planeCount(n.shape)) + " planes, over --max-planes " +
               std::to_string(o.maxPlanes);
+    } else {
+      line +=
+          ", no lower in mean error (misses at 180 deg), which decides among those that miss "
+          "the tolerance";
     }
     line += ")";
   }

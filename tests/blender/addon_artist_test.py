@@ -10,7 +10,10 @@
 #   - a hand edit of a generated proxy is exported as the artist's: the moved vertices are in
 #     proxies.json, the kept candidate is `authored`, and Generate afterwards keeps the edit;
 #   - a probe outside the level is a warning in the Findings list after Generate, and
-#     `capture_outside_level` after Validate, as `probeproxy validate` gives it.
+#     `capture_outside_level` after Validate, as `probeproxy validate` gives it;
+#   - a failed Generate clears the panel's "Last built from";
+#   - with the .blend unsaved and Blender's working folder removed, Validate and Generate
+#     still finish (the scene is anchored in Blender's temporary folder).
 
 import json
 import os
@@ -88,6 +91,8 @@ check(settings.level_used == "1 Blender mesh(es)",
       "Level: Selected used the selected mesh only: " + settings.level_used)
 select_only([])
 refused(bpy.ops.probeproxy.generate_proxies, "Generate, Level: Selected, nothing selected")
+check(settings.level_used == "", "a failed Generate leaves no \"Last built from\": %r"
+      % settings.level_used)
 settings.level_scope = "ALL"
 check(bpy.ops.probeproxy.generate_proxies() == {"FINISHED"}, "Generate on the whole level")
 result = json.loads(bpy.data.objects[probe_name].probeproxy.result_json)
@@ -140,4 +145,17 @@ findings = validate_like_cli(cli_path, saved, "probe outside")
 check(any(f["probe"] == outside.name and f["rule"] == "capture_outside_level"
           and f["severity"] == "warning" for f in findings),
       "Validate: capture_outside_level (warning) on the probe outside")
+
+# Blender started in a folder that is gone, the .blend never saved: the operators work, with
+# the scene anchored in Blender's temporary folder (a FileNotFoundError traceback before).
+settings.scene_file = ""
+for o in scene_io.probes(bpy.context.scene):
+    o.probeproxy.proxy_mode = "AUTO"  # an authored mesh path would point into `work`
+gone = os.path.join(work, "gone")
+os.makedirs(gone)
+os.chdir(gone)
+os.rmdir(gone)
+check(bpy.ops.probeproxy.validate_volumes() == {"FINISHED"}, "Validate from a removed folder")
+check(bpy.ops.probeproxy.generate_proxies() == {"FINISHED"}, "Generate from a removed folder")
+os.chdir(work)
 finish()

@@ -472,7 +472,7 @@ std::vector<ErrorCase> errorCases() {
   const std::string box = R"({"kind": "box", "center": [0, 0, 0], "half_extents": [3.5, 1.5, 1.5])";
   return {
       {"missing_file", kNoFile, "cannot open: No such file or directory"},
-      {"folder", kFolder, "cannot read: Is a directory"},
+      {"folder", kFolder, "JSON file is a folder, not a regular file"},
       {"invalid_json", "{\n  \"probeproxy_scene\": 1,\n  \"up\": }\n",
        "invalid JSON at line 3, column 9: syntax error while parsing value - unexpected '}'; "
        "expected '[', '{', or a literal"},

@@ -32,11 +32,17 @@ class _NeedsModule:
 
 
 def _run(operator, work):
-    """Runs `work()`; bad input becomes an error report with the library's message."""
+    """Runs `work()`; bad input becomes an error report with the library's message, and any
+    other failure (a folder that cannot be written, a bug) one line naming the operator, never
+    a traceback in the artist's face."""
     try:
         return work()
     except native.module.InputError as e:
         operator.report({"ERROR"}, str(e))
+        return {"CANCELLED"}
+    except Exception as e:  # noqa: BLE001: every failure becomes one line
+        text = " ".join(str(e).split()) or type(e).__name__
+        operator.report({"ERROR"}, "%s failed: %s" % (operator.bl_label, text))
         return {"CANCELLED"}
 
 
@@ -214,6 +220,8 @@ class PROBEPROXY_OT_generate_proxies(_NeedsModule, bpy.types.Operator):
     bl_options = {"REGISTER", "UNDO"}
 
     def execute(self, context):
+        # A failure must not leave the last success's "Last built from" on show.
+        context.scene.probeproxy.level_used = ""
         scene = context.scene
         settings = scene.probeproxy
         probes = scene_io.probes(scene)
@@ -252,6 +260,8 @@ class PROBEPROXY_OT_suggest_probes(_NeedsModule, bpy.types.Operator):
     bl_options = {"REGISTER", "UNDO"}
 
     def execute(self, context):
+        # A failure must not leave the last success's "Last built from" on show.
+        context.scene.probeproxy.level_used = ""
         scene = context.scene
         settings = scene.probeproxy
         objects = _level_objects(context)
@@ -330,6 +340,8 @@ class PROBEPROXY_OT_validate_volumes(_NeedsModule, bpy.types.Operator):
     bl_options = {"REGISTER", "UNDO"}
 
     def execute(self, context):
+        # A failure must not leave the last success's "Last built from" on show.
+        context.scene.probeproxy.level_used = ""
         scene = context.scene
         settings = scene.probeproxy
         objects = _probes_and_level(self, context)

@@ -111,7 +111,17 @@ class PROBEPROXY_PT_probe(_Sidebar, bpy.types.Panel):
                 layout.label(text=line, icon="GREASEPENCIL" if i == 0 else "BLANK1")
         # Each vector under its own label, its components stacked: at the sidebar's default
         # width a label beside three fields leaves room for neither.
-        _vector(layout, obj, "location", "Capture")
+        if obj.parent is None:
+            _vector(layout, obj, "location", "Capture")
+        else:
+            # The library captures at the world location; the field edits the local one.
+            units = context.scene.unit_settings
+            world = ", ".join(bpy.utils.units.to_string(units.system, "LENGTH",
+                                                        c * units.scale_length, precision=3)
+                              for c in obj.matrix_world.translation)
+            for i, line in enumerate(_wrap("Capture (world): " + world, _chars(context) - 2)):
+                layout.label(text=line)
+            _vector(layout, obj, "location", "Location under " + obj.parent.name)
         layout.label(text="Influence:")
         layout.prop(s, "influence_shape", text="")
         _vector(layout, s, "influence_offset", "Centre offset")

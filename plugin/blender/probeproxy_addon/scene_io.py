@@ -180,8 +180,19 @@ def scene_anchor(scene):
     settings = scene.probeproxy
     if settings.scene_file:
         return bpy.path.abspath(settings.scene_file)
-    folder = os.path.dirname(bpy.data.filepath) if bpy.data.filepath else os.getcwd()
-    return os.path.join(folder, "untitled.scene.json")
+    return os.path.join(_unsaved_folder(), "untitled.scene.json")
+
+
+def _unsaved_folder():
+    """Beside the .blend; for an unsaved one the working folder, or Blender's temporary folder
+    where that is gone or not writable (Blender started from a folder the artist cannot write)."""
+    if bpy.data.filepath:
+        return os.path.dirname(bpy.data.filepath)
+    try:
+        folder = os.getcwd()
+    except OSError:  # the folder Blender started in was removed
+        return bpy.app.tempdir
+    return folder if os.access(folder, os.W_OK) else bpy.app.tempdir
 
 
 def scene_dict(scene, proxy_overrides=None):

@@ -96,7 +96,9 @@ Verb addLayoutVerb(CLI::App& app) {
   verb->add_option("--tolerance-deg", l.toleranceDeg,
                    "a floor sample is served where one probe's error is at most this")
       ->capture_default_str();
-  verb->add_option("--max-probes", l.maxProbes, "at most this many probes (0: no limit)")
+  verb->add_option("--max-probes", l.maxProbes,
+                   "at most this many probes, fills included (0: as many as the floor needs); "
+                   "floor they leave stays uncovered")
       ->capture_default_str();
   verb->add_option("--spacing", l.spacingMeters, "the candidates' (and the grid's) spacing, m")
       ->capture_default_str();

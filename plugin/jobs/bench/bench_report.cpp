@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <ostream>
@@ -63,16 +64,25 @@ std::string benchReportJson(const std::vector<BenchResult>& results) {
 }
 
 void printBenchTable(std::ostream& out, const std::vector<BenchResult>& results) {
-  out << std::left << std::setw(13) << "scene" << std::setw(14) << "probe" << std::setw(11)
-      << "candidate" << std::setw(9) << "method" << std::right << std::setw(7) << "planes"
-      << std::setw(10) << "ns batch" << std::setw(10) << "ns scalar" << std::setw(8) << "ratio"
-      << std::setw(8) << "instr" << std::setw(10) << "median" << std::setw(10) << "p95"
-      << std::setw(8) << "miss %" << std::setw(8) << "psnr"
+  // The name columns as wide as their longest entry and a space, so no name runs into the next.
+  std::size_t sceneW = 6, probeW = 6, candidateW = 10, methodW = 7;
+  for (const BenchResult& r : results) {
+    sceneW = std::max(sceneW, r.scene.size() + 1);
+    probeW = std::max(probeW, r.probe.size() + 1);
+    candidateW = std::max(candidateW, r.candidate.size() + 2);  // and the kept mark
+    methodW = std::max(methodW, r.method.size() + 1);
+  }
+  const auto w = [](std::size_t width) { return std::setw(static_cast<int>(width)); };
+  out << std::left << w(sceneW) << "scene" << w(probeW) << "probe" << w(candidateW) << "candidate"
+      << w(methodW) << "method" << std::right << std::setw(7) << "planes" << std::setw(10)
+      << "ns batch" << std::setw(10) << "ns scalar" << std::setw(8) << "ratio" << std::setw(8)
+      << "instr" << std::setw(10) << "median" << std::setw(10) << "p95" << std::setw(8) << "miss %"
+      << std::setw(8) << "psnr"
       << "\n";
   for (const BenchResult& r : results) {
     const double missPercent = 100 * r.error.missRate;
-    out << std::left << std::setw(13) << r.scene << std::setw(14) << r.probe << std::setw(11)
-        << (r.candidate + (r.kept ? "*" : "")) << std::setw(9) << r.method << std::right
+    out << std::left << w(sceneW) << r.scene << w(probeW) << r.probe << w(candidateW)
+        << (r.candidate + (r.kept ? "*" : "")) << w(methodW) << r.method << std::right
         << std::setw(7) << r.planes << std::setw(10) << figure(r.nsPerLookup, 2) << std::setw(10)
         << figure(r.nsPerLookupScalar, 2) << std::setw(8) << figure(speedup(r), 1) << std::setw(8)
         << figure(r.instructionsPerLookup, 1) << std::setw(10) << figure(r.error.medianDeg, 3)
