@@ -3,6 +3,7 @@
 // job writes the layout's scene, export, figures and error maps.
 
 #include "core/errors/input_error.h"
+#include "plugin/cli/command_line_values.h"
 #include "plugin/cli/terminal_progress.h"
 #include "plugin/cli/verb.h"
 #include "plugin/jobs/layout/layout_job.h"
@@ -20,6 +21,7 @@ struct LayoutVerbOptions {
   std::string input, out;
   std::string baseline = "none";
   std::string engine = "generic";
+  std::vector<std::string> seeds;
   bool json = false;
   jobs::LayoutJobOptions job;
 };
@@ -35,6 +37,8 @@ int runLayoutVerb(LayoutVerbOptions o) {
   o.job.layout.baseline = layoutBaseline(o.baseline);
   o.job.engines = parseEngines(o.engine);
   if (o.job.engines == std::vector<Engine>{Engine::Generic}) o.job.engines.clear();
+  for (const std::string& seed : o.seeds)
+    o.job.seedPointsMeters.push_back(parsePoint(seed, "--seed"));
   o.job.levelOrScene = o.input;
   o.job.outFolder = o.out;
   const jobs::LayoutJobResult r =
@@ -59,6 +63,12 @@ int runLayoutVerb(LayoutVerbOptions o) {
     }
     std::cout << line;
     jobs::printSurveyTable(std::cout, r.survey);
+  }
+  if (r.seededFrom == "the level's floor regions") {
+    std::cerr << "probeproxy layout: the level has no spawn points or probes: its floor is "
+                 "flood-filled from its "
+              << r.seedPointsMeters.size()
+              << " floor region(s) (layout.json's seed_points; --seed X,Y,Z names others)\n";
   }
   for (const std::filesystem::path& file : r.written)
     std::cerr << "wrote " << file.string() << "\n";
@@ -96,6 +106,10 @@ Verb addLayoutVerb(CLI::App& app) {
   verb->add_option("--tolerance-deg", l.toleranceDeg,
                    "a floor sample is served where one probe's error is at most this")
       ->capture_default_str();
+  verb->add_option("--seed", o->seeds,
+                   "X,Y,Z (world, metres): flood-fill the walkable floor from here (repeat for "
+                   "more); default: the level's spawn points, else the scene's probes, else the "
+                   "level's floor regions (the largest, and any a quarter its size)");
   verb->add_option("--max-probes", l.maxProbes,
                    "at most this many probes, fills included (0: as many as the floor needs); "
                    "floor they leave stays uncovered")

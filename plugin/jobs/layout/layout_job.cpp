@@ -4,6 +4,7 @@
 #include "core/io/atomic_write.h"
 #include "core/io/output_folder.h"
 #include "geometry/export/runtime_export.h"
+#include "geometry/floor/floor_seed.h"
 #include "geometry/layout/candidate_service.h"
 #include "geometry/layout/layout_proxy.h"
 #include "geometry/level/write_level_mesh.h"
@@ -192,6 +193,9 @@ std::string layoutReportJson(const LayoutJobOptions& o, const LayoutJobResult& r
     j["kept_served_share"] = number(r.layout.keptServedShare);
   }
   j["tolerance_deg"] = o.layout.toleranceDeg;
+  j["seeded_from"] = r.seededFrom;
+  j["seed_points"] = nlohmann::ordered_json::array();
+  for (const glm::dvec3& s : r.seedPointsMeters) j["seed_points"].push_back({s.x, s.y, s.z});
   j["spacing_m"] = number(r.layout.spacingMeters);
   j["floor_cells"] = r.layout.floorCells;
   j["floor_samples"] = r.layout.floorSamples;
@@ -253,13 +257,30 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
                      "--keep-authored: the scene has no probes to keep");
   const LevelMesh level = loadSceneLevel(input, inMemory ? o.input : SceneInput{});
   const LevelRayCaster rayCaster(level);
-  // Players enter at the spawn points; a level without them (an OBJ room) at its probes.
-  std::vector<glm::dvec3> seeds = level.spawnPointsMeters;
-  if (seeds.empty())
-    for (const Probe& p : input.probes) seeds.push_back(p.captureMeters);
+  // Players enter at the spawn points; a level without them (an OBJ room) at its probes; a
+  // bare mesh on its largest floor region.
+  LayoutJobResult r;
+  std::vector<glm::dvec3>& seeds = r.seedPointsMeters;
+  const auto seedFrom = [&](const std::vector<glm::dvec3>& points, const char* source) {
+    if (!seeds.empty() || points.empty()) return;
+    seeds = points;
+    r.seededFrom = source;
+  };
+  seedFrom(o.seedPointsMeters, "option");
+  seedFrom(level.spawnPointsMeters, "spawn points");
+  std::vector<glm::dvec3> captures;
+  for (const Probe& p : input.probes) captures.push_back(p.captureMeters);
+  seedFrom(captures, "probes");
+  if (seeds.empty()) {
+    std::vector<glm::dvec3> regions;
+    for (const FloorSeed& seed : floorRegionSeeds(level, rayCaster, o.survey.floor))
+      regions.push_back(seed.pointMeters);
+    seedFrom(regions, "the level's floor regions");
+  }
   if (seeds.empty())
     throw InputError(inMemory ? input.file : o.levelOrScene,
-                     "no seed point: the level has no spawn points and the scene no probes");
+                     "no walkable floor: the level has no spawn points, the scene no probes, and "
+                     "no upward face holds a floor a player fits on (give one with --seed X,Y,Z)");
 
   // The artist's probes, with the proxies `build` gives them (authored ones as authored).
   std::vector<ProbeProxyBuild> keptBuilds;
@@ -274,7 +295,6 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
   // Every point of the floor the survey walks must lie in a volume.
   LayoutOptions layout = o.layout;
   layout.coverFloor = o.survey.floor;
-  LayoutJobResult r;
   r.layout = runLayout(rayCaster, seeds, layout, progress, kept);
   r.scene = layoutScene(input, r.layout, o.outFolder.empty() ? fs::path(".") : o.outFolder,
                         o.layout.keepAuthored);

@@ -34,7 +34,10 @@ struct LayoutJobOptions {
   // Suggest Probes): the same layout, seeded the same way.
   SceneInput input;
   std::filesystem::path outFolder;  // layout.scene.json, proxies.json/.glb, layout.json, maps
-  int threads = 0;                  // 0: all cores
+  // Where the walkable floor starts (world, metres); empty: the level's spawn points, else the
+  // scene's capture points, else the level's floor regions (floor_seed.h).
+  std::vector<glm::dvec3> seedPointsMeters;
+  int threads = 0;  // 0: all cores
   LayoutOptions layout;
   SurveyOptions survey;  // how the result is measured (the generic model); seeds as the layout's
   // The engines the level ships to: each gets the presets it renders best and its own figures
@@ -47,9 +50,12 @@ struct LayoutJobOptions {
 struct LayoutJobResult {
   Scene scene;  // the layout: its probes, level paths relative to outFolder
   LayoutResult layout;
-  std::vector<ProbeProxyBuild> builds;         // scene order
-  SurveyResult survey;                         // the generic model's, or the one engine's
-  std::vector<EnginePresetChoice> engines;     // each engine asked for (Generic left out)
+  std::vector<ProbeProxyBuild> builds;       // scene order
+  SurveyResult survey;                       // the generic model's, or the one engine's
+  std::vector<EnginePresetChoice> engines;   // each engine asked for (Generic left out)
+  std::vector<glm::dvec3> seedPointsMeters;  // where the floor was flood-filled from
+  // "option", "spawn points", "probes" or "the level's floor regions"
+  std::string seededFrom;
   std::string json;                            // layout.json: the layout's and survey's figures
   std::vector<std::filesystem::path> written;  // when outFolder is set
 };
