@@ -10,8 +10,11 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build="${PROBEPROXY_BUILD_DIR:-$here/build}"
 blender="${BLENDER:-blender}"
 
-# Only the module: the tests, benchmarks and the Blender suite are not needed to install.
-"$here/scripts/setup.sh" module >/dev/null
+# Only the module: the tests, benchmarks and the Blender suite are not needed to install. On a
+# fresh clone that is a build of the library (minutes): say so, and show CMake's progress.
+echo "install_addon: building probeproxy's Python module in $build (a few minutes on a fresh clone)"
+"$here/scripts/setup.sh" module | awk '/^\[ *[0-9]+%\]/ { print "  " $0; fflush() }'
+echo "install_addon: asking Blender for its Python and add-ons folder"
 
 ask() {  # runs a Python expression in Blender, prints its value
   "$blender" -b --factory-startup --python-expr "import sys, bpy; print('probeproxy:', $1)" 2>/dev/null |
