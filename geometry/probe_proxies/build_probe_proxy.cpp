@@ -137,6 +137,12 @@ ProbeProxyBuild buildProbeProxy(const Probe& probe, const ProbeView& view, const
   const glm::dvec3 capture = probe.captureMeters;
   if (view.skyShare > 0.5) build.findings.push_back(noLevelFinding(view.skyShare));
   if (view.backShare > 0.5) build.findings.push_back(backFacesFinding(view.backShare));
+  if (samples.floor.empty()) {
+    build.findings.push_back(
+        "no mirror_floor sample: the influence volume holds no upward surface the capture point "
+        "sees, so no candidate is measured (a volume smaller than its room's floor, or lengths "
+        "in other units than the level's?)");
+  }
 
   Stopwatch stage;
 

@@ -3,7 +3,8 @@
 #       --addon-dir plugin/blender --module-dir build/plugin/python \
 #       --cli build/plugin/cli/probeproxy --scene build/scenes/l_room/l_room.scene.json --work DIR
 # Each case is compared with the same level authored in metres without parents:
-#   - a centimetre scene (Unit Scale 0.01): Import Scene puts every length in centimetres,
+#   - a centimetre scene (Unit Scale 0.01): Add Probe makes a 2 m volume (200 cm); Import
+#     Scene puts every length in centimetres,
 #     the library gets the same metres, Generate keeps the same proxies with the same figures,
 #     the proxy meshes are the same in metres, Save Scene reads back to the same metres (the
 #     largest difference is printed) and Export writes the metre scene's proxies.json;
@@ -96,6 +97,13 @@ check(all(abs(a - 100 * b) <= 1e-4 for a, b in zip(first.location, file_capture)
 level = [o for o in scene.objects if scene_io.is_level_object(o)]
 dims = max(max(o.dimensions) for o in level)
 check(dims > 100, "cm: the level mesh is in centimetres in Blender (largest side %.1f)" % dims)
+# Add Probe in centimetres: a room-sized probe (2 m half-extents, 200 cm), not a 2 cm one.
+check(bpy.ops.probeproxy.add_probe() == {"FINISHED"}, "cm: Add Probe")
+added = bpy.context.view_layer.objects.active
+check(all(abs(h - 200.0) <= 1e-3 for h in added.probeproxy.half_extents)
+      and abs(added.probeproxy.radius - 200.0) <= 1e-3,
+      "cm: the new probe's volume is 2 m (200 cm): %r" % (tuple(added.probeproxy.half_extents),))
+bpy.data.objects.remove(added)
 cm = scene_io.scene_dict(scene)
 diff = largest_difference(cm, metres)
 check(same_shape(cm, metres) and diff <= 1e-6,

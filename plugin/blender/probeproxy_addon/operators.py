@@ -566,10 +566,18 @@ class PROBEPROXY_OT_add_probe(bpy.types.Operator):
     bl_options = {"REGISTER", "UNDO"}
 
     def execute(self, context):
+        # A room-sized probe in metres, whatever the scene's Unit Scale: the properties' defaults
+        # are Blender units, 2 cm in a centimetre scene.
+        per_metre = 1.0 / scene_io.meters_per_bu(context.scene)
         obj = bpy.data.objects.new("probe", None)
         obj.empty_display_type = "PLAIN_AXES"
-        obj.empty_display_size = 0.25
+        obj.empty_display_size = 0.25 * per_metre
         obj.location = context.scene.cursor.location
+        s = obj.probeproxy
+        for name in ("half_extents", "inner_half_extents", "proxy_half_extents"):
+            setattr(s, name, tuple(2.0 * per_metre for _ in range(3)))
+        for name in ("radius", "inner_radius", "proxy_radius"):
+            setattr(s, name, 2.0 * per_metre)
         obj.rotation_mode = "QUATERNION"
         obj.probeproxy.is_probe = True
         obj.probeproxy.order = 1 + max((p.probeproxy.order for p in scene_io.probes(context.scene)),
