@@ -7,6 +7,8 @@
 #     and writes nothing;
 #   - a stale selection does not narrow the level: with one of the room's two meshes selected,
 #     Generate builds from both; with Level set to Selected, from the selected one only;
+#   - moving or scaling the whole level with its probes and proxies is no hand edit: Generate
+#     builds the proxies again;
 #   - a hand edit of a generated proxy is exported as the artist's: the moved vertices are in
 #     proxies.json, the kept candidate is `authored`, and Generate afterwards keeps the edit;
 #   - a probe outside the level is a warning in the Findings list after Generate, and
@@ -98,6 +100,35 @@ check(bpy.ops.probeproxy.generate_proxies() == {"FINISHED"}, "Generate on the wh
 result = json.loads(bpy.data.objects[probe_name].probeproxy.result_json)
 check(result["planes"] == 6 and result["vertices"] == 8, "kept the room: %s, %d planes"
       % (result["candidate"], result["planes"]))
+
+# Moving or scaling the whole level, probes and proxies with it, is no hand edit: Generate
+# builds the proxy again (for the scaled room, a room twice the height), writes no edited mesh.
+def move_everything(dx=0.0, factor=1.0):
+    """Every object of the scene moved by dx along x, then scaled about the origin (Generate
+    makes new proxy objects, so the list is taken anew each time)."""
+    for o in bpy.context.scene.objects:
+        if o.parent is None:
+            o.location.x += dx
+            o.location *= factor
+            o.scale *= factor
+    bpy.context.view_layer.update()
+
+
+move_everything(dx=5.0)
+check(bpy.ops.probeproxy.generate_proxies() == {"FINISHED"}, "Generate after moving everything")
+probe_settings = bpy.data.objects[probe_name].probeproxy
+check(probe_settings.proxy_mode == "AUTO" and not any(
+          f.endswith("_proxy_edited.obj") for f in os.listdir(work)),
+      "moving the level with its proxies is no hand edit (proxy %s)" % probe_settings.proxy_mode)
+move_everything(dx=-5.0, factor=2.0)
+check(bpy.ops.probeproxy.generate_proxies() == {"FINISHED"}, "Generate after scaling everything")
+proxy = bpy.data.objects[probe_name + "_proxy"]
+height = max((proxy.matrix_world @ v.co).z for v in proxy.data.vertices)
+check(probe_settings.proxy_mode == "AUTO" and abs(height - 2 * ROOM_MAX[2]) <= 1e-3,
+      "scaled 2x, the proxy is built again: ceiling at %.3f (the room's %.1f)"
+      % (height, 2 * ROOM_MAX[2]))
+move_everything(factor=0.5)
+check(bpy.ops.probeproxy.generate_proxies() == {"FINISHED"}, "Generate back at the room's size")
 
 # Hand edit: lift the proxy's ceiling (its four top vertices) by LIFT, as in Edit Mode.
 proxy = bpy.data.objects[probe_name + "_proxy"]

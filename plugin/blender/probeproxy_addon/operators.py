@@ -112,7 +112,7 @@ def _proxy_mesh_object(scene, probe, result):
     obj["probeproxy_probe"] = probe.name
     _collection(scene, "Proxies").objects.link(obj)
     probe.probeproxy.proxy_object = obj
-    probe.probeproxy.proxy_fingerprint = scene_io.mesh_fingerprint(obj)
+    probe.probeproxy.proxy_fingerprint = scene_io.mesh_fingerprint(obj, probe)
     return obj
 
 
@@ -165,13 +165,13 @@ def _take_edited_proxies(operator, context):
             continue
         if obj.mode == "EDIT":
             obj.update_from_editmode()
-        if scene_io.mesh_fingerprint(obj) == s.proxy_fingerprint:
+        if scene_io.mesh_fingerprint(obj, probe) == s.proxy_fingerprint:
             continue
         path = os.path.join(folder, probe.name + "_proxy_edited.obj")
         _write_edited_proxy(path, obj, k, probe.name)
         s.proxy_mode = "MESH"
         s.proxy_mesh = os.path.basename(path)  # relative to the scene file, as the file has it
-        s.proxy_fingerprint = scene_io.mesh_fingerprint(obj)
+        s.proxy_fingerprint = scene_io.mesh_fingerprint(obj, probe)
         taken.append(probe.name)
     if taken:
         operator.report({"INFO"}, "hand-edited proxies kept as authored meshes: " +

@@ -279,9 +279,11 @@ def world_triangles(obj, depsgraph, meters_per_unit=1.0):
         evaluated.to_mesh_clear()
 
 
-def mesh_fingerprint(obj):
-    """A hash of a mesh object's own data and world matrix (no depsgraph: a new object has
-    none yet): changes with any vertex moved, added or removed, and with the object moved."""
+def mesh_fingerprint(obj, probe):
+    """A hash of a proxy object's own mesh data and of its placement relative to its probe (no
+    depsgraph: a new object has none yet): changes with any vertex moved, added or removed, and
+    with the proxy moved on its own; not when the level is moved or scaled with its probes and
+    proxies (that is no edit of the proxy: Generate builds it again)."""
     mesh = obj.data
     co = array.array("f", [0.0]) * (len(mesh.vertices) * 3)
     mesh.vertices.foreach_get("co", co)
@@ -289,7 +291,9 @@ def mesh_fingerprint(obj):
     mesh.loops.foreach_get("vertex_index", loops)
     h = hashlib.sha1(co.tobytes())
     h.update(loops.tobytes())
-    h.update(array.array("f", [c for row in obj.matrix_world for c in row]).tobytes())
+    relative = probe.matrix_world.inverted_safe() @ obj.matrix_world
+    # Six digits: moving a whole level leaves the product equal but for rounding.
+    h.update(" ".join("%.6g" % (c + 0.0) for row in relative for c in row).encode())
     return h.hexdigest()
 
 
