@@ -36,12 +36,14 @@ std::vector<glm::dvec3> seenPoints(const DepthCube& cube) {
 ProbeView seeLevel(const LevelRayCaster& level, glm::dvec3 capture, int faceSize) {
   ProbeView view;
   view.captureMeters = capture;
-  view.hits = castDepthCubeRays(level, capture, faceSize);
+  // The rays kept: the back-face share below needs their directions.
+  const std::vector<Ray> rays = depthCubeRays(capture, faceSize);
+  view.hits.resize(rays.size());
+  level.firstHits(rays, view.hits, /*coherent=*/true);
   view.pointsMeters = seenPoints(depthCubeFromHits(view.hits, capture, faceSize));
   view.skyShare =
       1.0 - static_cast<double>(view.pointsMeters.size()) / static_cast<double>(view.hits.size());
   std::size_t back = 0;
-  const std::vector<Ray> rays = depthCubeRays(capture, faceSize);
   for (std::size_t i = 0; i < rays.size(); ++i) {
     const RayHit& h = view.hits[i];
     if (h.hit() && glm::dot(glm::dvec3(h.geometricNormal), glm::dvec3(rays[i].direction)) > 0.0)

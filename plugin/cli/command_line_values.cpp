@@ -1,8 +1,6 @@
 #include "plugin/cli/command_line_values.h"
 
 #include "core/errors/input_error.h"
-#include "core/scene/scene_limits.h"
-#include "geometry/scene/json_values.h"
 
 #include <charconv>
 #include <cmath>
@@ -43,18 +41,7 @@ glm::dvec3 parsePoint(std::string_view text, std::string_view option) {
 std::optional<ReflectionPlane> parseOptionalPlane(std::string_view text, std::string_view option) {
   if (text.empty()) return std::nullopt;
   const std::vector<double> p = parseNumberList(text, 6, option);
-  if (p[3] == 0.0 && p[4] == 0.0 && p[5] == 0.0)
-    throw InputError(std::string(option), "the normal NX,NY,NZ is zero, expected a direction");
-  for (int i = 0; i < 3; ++i) {
-    if (std::abs(p[i]) > kMaxSceneMeters) {
-      throw InputError(std::string(option), "the point PX,PY,PZ is past " +
-                                                std::to_string(int(kMaxSceneMeters)) +
-                                                " m from the origin (the limit of a scene)");
-    }
-  }
-  // As the scene reader normalises a plane's normal: a normal of 1e-320 or 1e308 is a direction.
-  const std::array<double, 3> normal = normalized(std::array<double, 3>{p[3], p[4], p[5]});
-  return ReflectionPlane{{p[0], p[1], p[2]}, {normal[0], normal[1], normal[2]}};
+  return ReflectionPlane{{p[0], p[1], p[2]}, {p[3], p[4], p[5]}};  // checked by the job
 }
 
 MixingMethod parseMixingMethod(const std::string& name) {

@@ -3,6 +3,7 @@
 #include "core/errors/input_error.h"
 #include "core/io/atomic_write.h"
 #include "core/io/output_folder.h"
+#include "core/scene/scene_limits.h"
 #include "geometry/export/runtime_export.h"
 #include "geometry/floor/floor_seed.h"
 #include "geometry/layout/candidate_service.h"
@@ -245,6 +246,12 @@ void LayoutJobOptions::check() const {
   if (survey.engine != Engine::Generic)
     throw InputError("option engine", "a layout's engines are LayoutJobOptions::engines");
   if (!outFolder.empty()) checkOutputFolder(outFolder);
+  for (const glm::dvec3& s : seedPointsMeters) {
+    if (!(std::max({std::abs(s.x), std::abs(s.y), std::abs(s.z)}) <= kMaxSceneMeters)) {
+      throw InputError("--seed", "a seed point is past " + std::to_string(int(kMaxSceneMeters)) +
+                                     " m from the origin (the limit of a scene)");
+    }
+  }
 }
 
 LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress) {

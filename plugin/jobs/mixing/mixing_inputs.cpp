@@ -3,9 +3,11 @@
 #include "core/errors/input_error.h"
 #include "core/mixing/reflected_camera.h"
 #include "core/proxy/proxy_shape.h"
+#include "core/scene/scene_limits.h"
+#include "geometry/level/load_level.h"
 #include "geometry/probe_proxies/authored_proxy_shape.h"
 #include "geometry/probe_proxies/build_probe_proxy.h"
-#include "geometry/level/load_level.h"
+#include "geometry/scene/json_values.h"
 
 namespace probeproxy::jobs {
 
@@ -83,8 +85,17 @@ ConvexProxy MixingProxies::proxyFor(const Probe& probe) {
 ReflectionPlane mixingPlane(const Scene& scene, const Probe& probe,
                             const std::optional<ReflectionPlane>& plane) {
   if (plane) {
-    if (plane->normal == glm::dvec3(0.0)) throw InputError("--plane", "the normal is zero");
-    return *plane;
+    const glm::dvec3 p = plane->pointMeters, n = plane->normal;
+    if (n == glm::dvec3(0.0))
+      throw InputError("--plane", "the normal NX,NY,NZ is zero, expected a direction");
+    if (!(std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) <= kMaxSceneMeters)) {
+      throw InputError("--plane", "the point PX,PY,PZ is past " +
+                                      std::to_string(int(kMaxSceneMeters)) +
+                                      " m from the origin (the limit of a scene)");
+    }
+    // As the scene reader normalises a plane's normal: one of 1e-320 or 1e308 is a direction.
+    const std::array<double, 3> unit = normalized(std::array<double, 3>{n.x, n.y, n.z});
+    return ReflectionPlane{p, {unit[0], unit[1], unit[2]}};
   }
   if (probe.reflectionPlanes.empty())
     throw InputError(scene.file,
