@@ -4,7 +4,7 @@
 // can end just past it (a plane where the fit's floor stopped, not a wall), and every
 // reflection off the band's floor beyond that plane is a miss, 180 degrees at the probe's
 // weight there: on downer and stormkeep such misses were nearly half of all the error the
-// survey found (session 18's layouts).
+// survey found (in earlier layouts).
 
 #include "core/proxy/proxy_candidate.h"
 #include "core/scene/probe.h"

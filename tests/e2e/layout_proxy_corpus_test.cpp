@@ -39,7 +39,7 @@ Probe layoutProbe(const std::string& name, glm::dvec3 capture, glm::dvec3 center
 }
 
 TEST(BuildLayoutProxy, OnDownerTheKeptProxyHoldsTheFloorItsBandShares) {
-  // probe_013 of a downer layout whose gaps had been moved (a session 19 experiment): fitted to
+  // probe_013 of a downer layout whose gaps had been moved (an experiment): fitted to
   // its inner range alone, its proxy left out floor just past it, 141 degrees of mean error there.
   const LevelRayCaster level(corpusLevel("downer"));
   const glm::dvec3 innerHalf(2.5, 4.75, 1.906249985);
@@ -71,7 +71,7 @@ TEST(BuildLayoutProxy, OnDownerTheKeptProxyHoldsTheFloorItsBandShares) {
 }
 
 TEST(BuildProbeProxy, OnWarfareTheRoomBoxHoldsTheFloorPastItsWalls) {
-  // probe_027's inner range in session 19's warfare layout: the walls its axis rays find stand
+  // probe_027's inner range in an earlier warfare layout: the walls its axis rays find stand
   // short of some of its floor, and the room box that modelled the rest at 1.6 degrees median
   // missed one reflection in fifty; a sphere at 10.5 degrees median was kept instead.
   const LevelRayCaster level(corpusLevel("warfare"));

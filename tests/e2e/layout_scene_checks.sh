@@ -3,7 +3,7 @@
 # What a layout writes is what it measured ("what we export must be what we
 # measured"): every probe of its scene names the proxy the layout measured (none is left `auto`
 # for `build` to make again: a scene file holds no cheap_k), and `survey` on that scene gives
-# the figures of the layout's own survey. On basement, session 19's layout wrote three probes
+# the figures of the layout's own survey. On basement, an earlier layout wrote three probes
 # as `auto` and its scene surveyed at 23.769 deg p95 and 21.32% over 5 deg, where layout.json
 # said 23.765 and 21.45%.
 set -eu

@@ -3,8 +3,8 @@
 # A layout passes validate ("every layout validates clean"): every rule but those
 # that measure a proxy's accuracy probe by probe (proxy_error_over_tolerance and split_probe,
 # over each probe's whole outer range alone: the survey is the layout's measure of that), the
-# mesh and capture checks included. On downer, session 20's layout had a blend weight that
-# turned at 0.021 per cm (weight_jump) and, with session 21's proxy choice before its float
+# mesh and capture checks included. On downer, an earlier layout had a blend weight that
+# turned at 0.021 per cm (weight_jump) and, with the proxy choice before its float
 # merge, a proxy mesh with an edge bent inwards by 1.2 deg (proxy_concave_edge).
 set -eu
 probeproxy=$1 scene=$2 work=$3
