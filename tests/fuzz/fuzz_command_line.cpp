@@ -40,7 +40,7 @@ const char kScene[] = R"({"probeproxy_scene": 1, "up": "Z", "level": ["room.off"
   "reflection_planes": [{"point": [0, 0, 0], "normal": [0, 0, 1]}]}]})";
 
 struct Level {
-  fs::path scene, level, out;
+  fs::path scene, level, out, workingFolder;
 };
 
 const Level& level() {
@@ -49,6 +49,9 @@ const Level& level() {
     l.level = fuzz::writeScratch("room.off", kRoomOff);
     l.scene = fuzz::writeScratch("room.scene.json", kScene);
     l.out = fuzz::scratchFile("out");
+    // A mutated argument is often a relative path: an --out of "O\tUT" must land in the
+    // scratch, not in the folder the campaign was started from.
+    l.workingFolder = fuzz::scratchFile("cwd");
     std::array<std::vector<float>, kCubeFaceCount> faces;
     for (std::vector<float>& face : faces) face.assign(8 * 8 * 3, 0.5f);
     writeCubemap(Cubemap::fromFaces(8, faces), fuzz::scratchFile("cube_{face}.exr").string(), 0);
@@ -84,6 +87,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   std::error_code ignored;
   fs::remove_all(l.out, ignored);
+  fs::remove_all(l.workingFolder, ignored);
+  fs::create_directories(l.workingFolder);
+  fs::current_path(l.workingFolder);
   std::ostringstream out, err;
   std::streambuf* const stdoutWas = std::cout.rdbuf(out.rdbuf());
   std::streambuf* const stderrWas = std::cerr.rdbuf(err.rdbuf());
