@@ -3,6 +3,7 @@
 // frame (Z up, metres); `fileUp` and `metersPerUnit` remember how the file spelled it so that
 // writing it back gives the same file.
 
+#include "core/scene/measure_settings.h"
 #include "core/scene/probe.h"
 #include "core/scene/world_frame.h"
 
@@ -27,6 +28,7 @@ struct Scene {
   double metersPerUnit = 1.0;
   std::vector<LevelMeshRef> level;
   std::vector<Probe> probes;
+  MeasureSettings measuredWith;  // what a layout measured the scene's figures with
 };
 
 }  // namespace probeproxy

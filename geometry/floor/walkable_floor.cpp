@@ -15,6 +15,8 @@ void WalkableFloorOptions::check() const {
   requireInRange("grid", gridSpacingMeters, 0.01, 10.0);
   requireInRange("step_height", stepHeightMeters, 0.0, 5.0);
   requireInRange("head_clearance", headClearanceMeters, 1e-3, 10.0);
+  if (!(stepHeightMeters < headClearanceMeters))
+    throw InputError("option step_height", "must be below the head clearance");
   // The wall test between neighbours runs at knee height: over a step, under a head.
   if (!(kneeHeightMeters > stepHeightMeters && kneeHeightMeters < headClearanceMeters))
     throw InputError("option knee_height_m",

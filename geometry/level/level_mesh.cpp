@@ -40,6 +40,7 @@ void appendLevelMesh(LevelMesh& level, const LevelMesh& part) {
   for (const glm::uvec3& t : part.skyTriangles) level.skyTriangles.push_back(t + vertexOffset);
   level.spawnPointsMeters.insert(level.spawnPointsMeters.end(), part.spawnPointsMeters.begin(),
                                  part.spawnPointsMeters.end());
+  level.gamePlayer = overriding(level.gamePlayer, part.gamePlayer);  // the first game's player
   for (LevelPart p : part.parts) {
     p.firstTriangle += triangleOffset;
     level.parts.push_back(std::move(p));

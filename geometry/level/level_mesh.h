@@ -4,6 +4,8 @@
 // it was authored (ray casting ignores degenerate triangles), and counted so a report can say
 // what the level holds.
 
+#include "core/scene/measure_settings.h"
+
 #include <glm/vec3.hpp>
 
 #include <cstdint>
@@ -31,6 +33,9 @@ struct LevelMesh {
   // Where players start (BSP levels: the info_player_* entities, team spawns included), world
   // frame: the walkable floor is what a player can reach from them.
   std::vector<glm::dvec3> spawnPointsMeters;
+  // The game's own player, where the level comes from a game (a Quake 3 BSP: kQuake3Player):
+  // its step, height and eyes define the floor it walks. Unset for a plain mesh.
+  MeasureSettings gamePlayer;
 };
 
 struct LevelMeshStats {

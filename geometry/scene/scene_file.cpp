@@ -213,14 +213,16 @@ bool withinScene(const glm::dvec3& meters) {
   failJsonExpected(path, expected.str(), value);
 }
 
+glm::dvec3 pointValue(const Json& value, const std::string& path, const FileFrame& frame) {
+  const glm::dvec3 meters = worldPointFromFile(frame, finiteVec3(value, path));
+  if (!isFinite(meters)) failOverflow(path, value);
+  if (!withinScene(meters)) failOutsideScene(path, value, "coordinates");
+  return meters;
+}
+
 glm::dvec3 pointMember(const Json& object, const std::string& path, const char* name,
                        const FileFrame& frame) {
-  const std::string memberPath = jsonMemberPath(path, name);
-  const Json& value = requiredMember(object, path, name);
-  const glm::dvec3 meters = worldPointFromFile(frame, finiteVec3(value, memberPath));
-  if (!isFinite(meters)) failOverflow(memberPath, value);
-  if (!withinScene(meters)) failOutsideScene(memberPath, value, "coordinates");
-  return meters;
+  return pointValue(requiredMember(object, path, name), jsonMemberPath(path, name), frame);
 }
 
 glm::dvec3 halfExtentsMember(const Json& object, const std::string& path, const char* name,
@@ -470,11 +472,38 @@ std::vector<Probe> readProbes(const Json& value, const std::string& path, const 
   return probes;
 }
 
+// `measured_with`: lengths in file units like every other member, seed points like captures.
+MeasureSettings readMeasuredWith(const Json& value, const std::string& path,
+                                 const FileFrame& frame) {
+  requireObject(value, path);
+  rejectUnknownMembers(
+      value, path,
+      {"seed_points", "grid", "step_height", "head_clearance", "eye_height", "tolerance_deg"});
+  MeasureSettings m;
+  if (const Json* seeds = optionalMember(value, "seed_points")) {
+    const std::string seedsPath = jsonMemberPath(path, "seed_points");
+    if (!seeds->is_array()) failJsonExpected(seedsPath, "an array of points", *seeds);
+    for (std::size_t i = 0; i < seeds->size(); ++i)
+      m.seedPointsMeters.push_back(pointValue((*seeds)[i], jsonIndexPath(seedsPath, i), frame));
+  }
+  const auto length = [&](const char* name, std::optional<double>& into) {
+    if (optionalMember(value, name) != nullptr) into = lengthMember(value, path, name, frame);
+  };
+  length("grid", m.gridSpacingMeters);
+  length("step_height", m.stepHeightMeters);
+  length("head_clearance", m.headClearanceMeters);
+  length("eye_height", m.eyeHeightMeters);
+  if (const Json* tolerance = optionalMember(value, "tolerance_deg"))
+    m.toleranceDeg = positiveNumber(*tolerance, jsonMemberPath(path, "tolerance_deg"));
+  return m;
+}
+
 Scene sceneFromDocument(const Json& root, const fs::path& absoluteFile) {
   requireObject(root, "$");
   // The version first: a newer file may well have members this reader does not know.
   checkVersion(root);
-  rejectUnknownMembers(root, "$", {"probeproxy_scene", "up", "meters_per_unit", "level", "probes"});
+  rejectUnknownMembers(
+      root, "$", {"probeproxy_scene", "up", "meters_per_unit", "level", "probes", "measured_with"});
   Scene scene;
   scene.file = absoluteFile;
   scene.fileUp = upAxis(requiredMember(root, "$", "up"), "$.up");
@@ -490,6 +519,8 @@ Scene sceneFromDocument(const Json& root, const fs::path& absoluteFile) {
   const fs::path folder = absoluteFile.parent_path();
   scene.level = readLevel(requiredMember(root, "$", "level"), "$.level", scene.fileUp, folder);
   scene.probes = readProbes(requiredMember(root, "$", "probes"), "$.probes", frame, folder);
+  if (const Json* measuredWith = optionalMember(root, "measured_with"))
+    scene.measuredWith = readMeasuredWith(*measuredWith, "$.measured_with", frame);
   return scene;
 }
 
@@ -661,6 +692,25 @@ JsonLayoutValue probeJson(const Probe& probe, const FileFrame& frame) {
   return jsonObject(std::move(members), /*oneItemPerLine=*/true);
 }
 
+JsonLayoutValue measuredWithJson(const MeasureSettings& m, const FileFrame& frame) {
+  Members members;
+  if (!m.seedPointsMeters.empty()) {
+    std::vector<JsonLayoutValue> seeds;
+    for (const glm::dvec3& s : m.seedPointsMeters)
+      seeds.push_back(vec3Json(filePointFromWorld(frame, s)));
+    members.emplace_back("seed_points", jsonArray(std::move(seeds)));
+  }
+  const auto length = [&](const char* name, const std::optional<double>& meters) {
+    if (meters) members.emplace_back(name, jsonCoordinate(fileLengthFromWorld(frame, *meters)));
+  };
+  length("grid", m.gridSpacingMeters);
+  length("step_height", m.stepHeightMeters);
+  length("head_clearance", m.headClearanceMeters);
+  length("eye_height", m.eyeHeightMeters);
+  if (m.toleranceDeg) members.emplace_back("tolerance_deg", jsonExactNumber(*m.toleranceDeg));
+  return jsonObject(std::move(members), /*oneItemPerLine=*/true);
+}
+
 // How `absolutePath` is spelled in a file in `newFolder`: as before while that still names the
 // same file, else relative to the new folder (absolute only if there is no relative way).
 fs::path spellingIn(const fs::path& absolutePath, const fs::path& pathAsWritten,
@@ -721,14 +771,19 @@ std::string sceneFileJson(const Scene& scene) {
   for (const LevelMeshRef& mesh : scene.level) level.push_back(levelMeshJson(mesh, scene.fileUp));
   std::vector<JsonLayoutValue> probes;
   for (const Probe& probe : scene.probes) probes.push_back(probeJson(probe, frame));
-  const JsonLayoutValue root =
-      jsonObject({{"probeproxy_scene", jsonInteger(kFormatVersion)},
+  Members members{{"probeproxy_scene", jsonInteger(kFormatVersion)},
                   {"up", upJson(scene.fileUp)},
                   {"meters_per_unit", jsonExactNumber(scene.metersPerUnit)},
                   {"level", jsonArray(std::move(level))},
-                  {"probes", jsonArray(std::move(probes), /*oneItemPerLine=*/true)}},
-                 /*oneItemPerLine=*/true);
+                  {"probes", jsonArray(std::move(probes), /*oneItemPerLine=*/true)}};
+  if (!scene.measuredWith.empty())
+    members.emplace_back("measured_with", measuredWithJson(scene.measuredWith, frame));
+  const JsonLayoutValue root = jsonObject(std::move(members), /*oneItemPerLine=*/true);
   return layoutJson(root);
+}
+
+Scene sceneAsWritten(const Scene& scene, const std::filesystem::path& file) {
+  return parseSceneFile(sceneFileJson(rebasedFor(scene, absoluteNormal(file))), file);
 }
 
 void writeSceneFile(const Scene& scene, const std::filesystem::path& file) {

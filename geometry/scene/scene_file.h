@@ -42,6 +42,11 @@ Scene parseSceneFile(std::string_view bytes, const std::filesystem::path& file);
 // (`pathAsWritten`, or `path` when that is empty). Does not validate: writeSceneFile does.
 std::string sceneFileJson(const Scene& scene);
 
+// `scene` as reading it back from `file` would give it: every coordinate as the file spells it
+// (to the micrometre). What a layout measures before it writes, so that a survey of the written
+// file gives the same figures to the last bit.
+Scene sceneAsWritten(const Scene& scene, const std::filesystem::path& file);
+
 // Writes `scene` to `file` atomically (core/io/atomic_write.h). Relative paths are rewritten
 // relative to `file`'s folder when it differs from the folder `scene.file` is in. The bytes
 // are read back through readSceneFile's validation first, so a Scene the format cannot

@@ -27,6 +27,7 @@ void ValidateOptions::check() const {
   requireInRange("max_leak_share", maxLeakShare, 0.0, 1.0);
   requireInRange("grid", gridSpacingMeters, 0.01, 10.0);
   requireInRange<std::size_t>("grid_point_budget", gridPointBudget, 1, 100'000'000);
+  walkedFloor.check();
   samples.check();
   for (const std::string& rule : rules) {
     if (std::find(kSelectableRules.begin(), kSelectableRules.end(), rule) != kSelectableRules.end())

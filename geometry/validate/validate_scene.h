@@ -30,6 +30,7 @@
 #include "core/blend/blend_weights.h"
 #include "core/scene/scene.h"
 #include "geometry/evaluation/reflection_samples.h"
+#include "geometry/floor/walkable_floor.h"
 #include "geometry/raycast/level_ray_caster.h"
 
 #include <glm/vec3.hpp>
@@ -92,6 +93,8 @@ struct ValidateOptions {
   // tests more than about gridPointBudget points.
   double gridSpacingMeters = 0.25;
   std::size_t gridPointBudget = 2'000'000;
+  // The walked floor's player (step height, head clearance); its grid is gridSpacingMeters.
+  WalkableFloorOptions walkedFloor;
   // reflected_camera_outside_proxy: the receivers are glossy (perturbed normals reach below
   // the plane), so the reflected camera itself must be inside the proxy (Lagarde & Zanuttini 2012);
   // for mirrors only the receiver under each camera must be.

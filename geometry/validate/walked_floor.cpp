@@ -14,7 +14,7 @@ WalkableFloor walkedFloor(const Scene& scene, const LevelRayCaster& level,
   if (seeds.empty())
     for (const Probe& probe : scene.probes) seeds.push_back(probe.captureMeters);
   if (seeds.empty()) return {};
-  WalkableFloorOptions floorOptions;
+  WalkableFloorOptions floorOptions = options.walkedFloor;
   floorOptions.gridSpacingMeters = options.gridSpacingMeters;
   floorOptions.maxCells = options.gridPointBudget;
   return walkableFloor(level, seeds, floorOptions);

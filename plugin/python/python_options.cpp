@@ -79,7 +79,7 @@ void readLayoutOptions(const py::dict& options, jobs::LayoutJobOptions& job) {
   for (auto [key, value] : options) {
     const std::string name = key.cast<std::string>();
     if (name == "tolerance_deg")
-      o.toleranceDeg = value.cast<double>();
+      job.given.toleranceDeg = value.cast<double>();
     else if (name == "max_probes")
       o.maxProbes = value.cast<std::size_t>();
     else if (name == "spacing")

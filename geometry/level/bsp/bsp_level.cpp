@@ -266,6 +266,14 @@ std::vector<std::byte> readWholeBinaryFile(const std::filesystem::path& file) {
 
 }  // namespace
 
+MeasureSettings quake3Player(double metersPerUnit) {
+  MeasureSettings player;
+  player.stepHeightMeters = 18.0 * metersPerUnit;
+  player.headClearanceMeters = 56.0 * metersPerUnit;
+  player.eyeHeightMeters = 50.0 * metersPerUnit;
+  return player;
+}
+
 BspLevel parseBspLevel(std::span<const std::byte> bytes, const std::filesystem::path& file,
                        const BspLoadOptions& options) {
   if (!(options.metersPerUnit > 0.0) || !std::isfinite(options.metersPerUnit) ||
@@ -280,6 +288,7 @@ BspLevel parseBspLevel(std::span<const std::byte> bytes, const std::filesystem::
   level.entities = parseBspEntities(entityText(lumps), file);
   level.spawnPoints = bspSpawnPoints(level.entities, options.metersPerUnit, file);
   level.lights = bspLights(level.entities, options.metersPerUnit, file);
+  level.mesh.gamePlayer = quake3Player(options.metersPerUnit);
   return level;
 }
 

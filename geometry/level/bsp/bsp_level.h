@@ -25,6 +25,13 @@ namespace probeproxy {
 
 inline constexpr double kQuakeMetersPerUnit = 1.0 / 32.0;
 
+// Quake 3's player, which a BSP level's floor is walked for (ioquake3 code/game): STEPSIZE 18
+// (bg_local.h), playerMins z -24 and playerMaxs z 32 (g_client.c: 56 units standing, the head
+// room a floor needs) and DEFAULT_VIEWHEIGHT 26 above the origin (bg_public.h: eyes 50 units
+// over the feet). Its walkable slope, MIN_WALK_NORMAL 0.7, is WalkableFloorOptions'. Games on
+// the format differ (Nexuiz's physics26.cfg steps 34 units); the options override.
+MeasureSettings quake3Player(double metersPerUnit);
+
 struct BspLoadOptions {
   double metersPerUnit = kQuakeMetersPerUnit;
   // Quads per side of each 3x3 Bezier piece (two triangles each); 4 keeps a quarter-circle

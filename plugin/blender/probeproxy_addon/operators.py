@@ -277,8 +277,11 @@ class PROBEPROXY_OT_suggest_probes(_NeedsModule, bpy.types.Operator):
             options = {"tolerance_deg": scene_io.f32(settings.layout_tolerance_deg)}
             if settings.layout_max_probes:
                 options["max_probes"] = settings.layout_max_probes
+            # A new layout starts from the probes the artist has now, not the last layout's floor.
+            current = scene_io.scene_dict(scene)
+            current.pop("measured_with", None)
             result = _with_progress(context, lambda progress: native.module.suggest_probes(
-                scene_io.scene_dict(scene), anchor, out, parts, options, progress))
+                current, anchor, out, parts, options, progress))
             for old in scene_io.probes(scene):
                 _remove_probe(old)
             coll = _collection(scene, "Probes")
@@ -295,6 +298,7 @@ class PROBEPROXY_OT_suggest_probes(_NeedsModule, bpy.types.Operator):
                 scene_io.set_probe_from_dict(obj, d, k)
                 obj.probeproxy.order = order
                 _take_build_result(scene, obj, built)
+            settings.measured_with_json = json.dumps(result["scene"].get("measured_with", {}))
             figures = result["figures"]["survey"]
             maps = [f for f in result["files"] if f.endswith(".png")]
             settings.layout_map = maps[0] if maps else ""
@@ -488,6 +492,7 @@ def import_scene(context, path):
     settings.file_up = as_written["up"]
     settings.meters_per_unit = as_written.get("meters_per_unit", 1.0)
     settings.level_json = json.dumps(as_written["level"])
+    settings.measured_with_json = json.dumps(world.get("measured_with", {}))
     settings.findings.clear()
     settings.validated = False
     return len(world["probes"])

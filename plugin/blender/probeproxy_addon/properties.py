@@ -84,6 +84,9 @@ class SceneSettings(bpy.types.PropertyGroup):
     file_up: StringProperty(default="Z")
     meters_per_unit: FloatProperty(default=1.0)
     level_json: StringProperty(default="[]", description="The scene file's level list")
+    measured_with_json: StringProperty(
+        default="{}", description="What the scene's layout measured its floor with (seed points, "
+        "grid, the player, tolerance): Validate and Suggest Probes measure the same floor")
     regenerate: BoolProperty(name="Regenerate authored",
                              description="Generate a proxy also where one is authored")
     tolerance_deg: FloatProperty(name="Tolerance (deg)", default=0.25, min=0.001)

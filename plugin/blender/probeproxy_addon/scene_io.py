@@ -203,8 +203,12 @@ def scene_dict(scene, proxy_overrides=None):
         level = [{"mesh": "level.glb"}]
     k = meters_per_bu(scene)
     overrides = proxy_overrides or {}
-    return {"probeproxy_scene": 1, "up": "Z", "meters_per_unit": 1.0, "level": level,
-            "probes": [probe_dict(o, k, overrides.get(o.name)) for o in probes(scene)]}
+    d = {"probeproxy_scene": 1, "up": "Z", "meters_per_unit": 1.0, "level": level,
+         "probes": [probe_dict(o, k, overrides.get(o.name)) for o in probes(scene)]}
+    measured_with = json.loads(scene.probeproxy.measured_with_json or "{}")
+    if measured_with:  # world frame, metres, as the module handed it over
+        d["measured_with"] = measured_with
+    return d
 
 
 def set_probe_from_dict(obj, d, meters_per_unit=1.0):

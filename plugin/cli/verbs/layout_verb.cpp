@@ -4,6 +4,7 @@
 
 #include "core/errors/input_error.h"
 #include "plugin/cli/command_line_values.h"
+#include "plugin/cli/measure_options.h"
 #include "plugin/cli/terminal_progress.h"
 #include "plugin/cli/verb.h"
 #include "plugin/jobs/layout/layout_job.h"
@@ -37,8 +38,7 @@ int runLayoutVerb(LayoutVerbOptions o) {
   o.job.layout.baseline = layoutBaseline(o.baseline);
   o.job.engines = parseEngines(o.engine);
   if (o.job.engines == std::vector<Engine>{Engine::Generic}) o.job.engines.clear();
-  for (const std::string& seed : o.seeds)
-    o.job.seedPointsMeters.push_back(parsePoint(seed, "--seed"));
+  parseSeeds(o.seeds, o.job.given);
   o.job.levelOrScene = o.input;
   o.job.outFolder = o.out;
   const jobs::LayoutJobResult r =
@@ -103,13 +103,8 @@ Verb addLayoutVerb(CLI::App& app) {
   verb->add_flag("--keep-authored", l.keepAuthored,
                  "keep the scene's probes as they are and add probes only where they do not "
                  "serve the floor within the tolerance");
-  verb->add_option("--tolerance-deg", l.toleranceDeg,
-                   "a floor sample is served where one probe's error is at most this")
-      ->capture_default_str();
-  verb->add_option("--seed", o->seeds,
-                   "X,Y,Z (world, metres): flood-fill the walkable floor from here (repeat for "
-                   "more); default: the level's spawn points, else the scene's probes, else the "
-                   "level's floor regions (the largest, and any a quarter its size)");
+  addMeasureOptions(*verb, o->job.given, o->seeds,
+                    "a floor sample is served where one probe's error is at most this, degrees");
   verb->add_option("--max-probes", l.maxProbes,
                    "at most this many probes, fills included (0: as many as the floor needs); "
                    "floor they leave stays uncovered")

@@ -2,6 +2,7 @@
 // table, or the JSON report under --json); with --out the job writes survey.json and the maps.
 
 #include "core/errors/input_error.h"
+#include "plugin/cli/measure_options.h"
 #include "plugin/cli/terminal_progress.h"
 #include "plugin/cli/verb.h"
 #include "plugin/jobs/survey/survey_job.h"
@@ -20,6 +21,7 @@ struct SurveyVerbOptions {
   std::string scheme = "lagarde";
   std::string proxy = "scene";
   std::string engine = "generic";
+  std::vector<std::string> seeds;
   jobs::SurveyJobOptions job;
 };
 
@@ -38,6 +40,7 @@ int runSurveyVerb(SurveyVerbOptions o) {
   o.job.survey.proxies = surveyProxies(o.proxy);
   o.job.survey.engine = parseEngine(o.engine);
   o.job.survey.proxiesJson = o.proxies;
+  parseSeeds(o.seeds, o.job.given);
   o.job.input.file = o.scene;
   o.job.outFolder = o.out;
   const jobs::SurveyJobResult r =
@@ -74,28 +77,19 @@ Verb addSurveyVerb(CLI::App& app) {
       ->capture_default_str();
   verb->add_option("--max-probes", s.blend.maxProbes, "blend at most this many probes (1-64)")
       ->capture_default_str();
-  verb->add_option("--tolerance-deg", s.toleranceDeg,
-                   "over_tolerance_share counts floor whose error exceeds this")
-      ->capture_default_str();
   verb->add_option("--proxies", o->proxies,
                    "look probes up through the kept proxies of this build export (proxies.json)");
   verb->add_option("--proxy", o->proxy,
                    "scene: authored or built (or --proxies); aabb: the build's aabb candidate; "
                    "infinite: no correction")
       ->capture_default_str();
-  verb->add_option("--grid", s.floor.gridSpacingMeters, "walkable-floor cell size, m")
-      ->capture_default_str();
-  verb->add_option("--step-height", s.floor.stepHeightMeters,
-                   "largest height a player steps up between neighbouring cells, m")
-      ->capture_default_str();
-  verb->add_option("--head-clearance", s.floor.headClearanceMeters,
-                   "free height walkable floor needs above it, m")
-      ->capture_default_str();
+  addMeasureOptions(*verb, o->job.given, o->seeds,
+                    "over_tolerance_share counts floor whose error exceeds this, degrees");
   verb->add_option("--samples-per-cell", s.samplesPerCell, "reflection samples per floor cell")
       ->capture_default_str();
   verb->add_option("--max-samples", s.maxSamples, "fewer samples per cell beyond this many")
       ->capture_default_str();
-  verb->add_option("--seed", s.seed, "random seed of the samples")->capture_default_str();
+  verb->add_option("--sample-seed", s.seed, "random seed of the floor samples")->capture_default_str();
   verb->add_option("--threads", o->job.threads, "worker threads (0: all cores)")
       ->capture_default_str();
   return {verb, [o] { return runSurveyVerb(*o); }};

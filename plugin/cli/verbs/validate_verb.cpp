@@ -1,6 +1,7 @@
 // `probeproxy validate`: flags into the validate job (plugin/jobs/validate/), its findings
 // printed; exit 1 on any error or warning.
 
+#include "plugin/cli/measure_options.h"
 #include "plugin/cli/verb.h"
 #include "plugin/jobs/validate/validate_job.h"
 #include "plugin/jobs/validate/validate_report.h"
@@ -15,10 +16,12 @@ namespace {
 struct ValidateVerbOptions {
   std::string scene;
   bool json = false;
+  std::vector<std::string> seeds;
   jobs::ValidateJobOptions job;
 };
 
 int runValidate(ValidateVerbOptions o) {
+  parseSeeds(o.seeds, o.job.given);
   o.job.input.file = o.scene;
   const jobs::ValidateJobResult result = jobs::runValidateJob(o.job);
   if (o.json)
@@ -61,8 +64,7 @@ Verb addValidateVerb(CLI::App& app) {
   verb->add_flag("--glossy", v.glossyReceivers,
                  "reflected_camera_outside_proxy: receivers are glossy, so the reflected "
                  "camera itself must be inside the proxy (Lagarde & Zanuttini 2012)");
-  verb->add_option("--grid", v.gridSpacingMeters, "grid spacing of the floor and volume rules, m")
-      ->capture_default_str();
+  addMeasureOptions(*verb, o->job.given, o->seeds);
   verb->add_option("--samples", v.samples.targetSamples, "reflection samples per probe")
       ->capture_default_str();
   verb->add_option("--rules", v.rules,

@@ -1,9 +1,9 @@
 #include "plugin/jobs/bench/bench_scenes.h"
 
-#include "geometry/probe_proxies/build_scene_proxies.h"
 #include "geometry/level/load_level.h"
 #include "geometry/mirror_view/mirror_view_reconstruction.h"
 #include "geometry/mirror_view/radiance_lookups.h"
+#include "geometry/probe_proxies/build_scene_proxies.h"
 #include "geometry/scene/scene_file.h"
 #include "plugin/cost/instructions_per_lookup.h"
 #include "plugin/jobs/bench/image_reference.h"

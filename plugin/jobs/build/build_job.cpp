@@ -1,8 +1,8 @@
 #include "plugin/jobs/build/build_job.h"
 
 #include "core/io/output_folder.h"
-#include "geometry/probe_proxies/build_scene_proxies.h"
 #include "geometry/export/runtime_export.h"
+#include "geometry/probe_proxies/build_scene_proxies.h"
 #include "geometry/raycast/level_ray_caster.h"
 #include "plugin/jobs/thread_limit.h"
 

@@ -3,10 +3,10 @@
 // the kept ones exported for the runtime (proxies.json + proxies.glb).
 //
 // Path of one run: plugin/cli/verbs/build_verb.cpp parses flags into BuildJobOptions ->
-// runBuildJob (here) reads the scene and level -> geometry/probe_proxies/build_scene_proxies.h builds
-// each probe (geometry/probe_proxies/build_probe_proxy.h: depth cube, samples, fits, simplification,
-// evaluation, selection) -> core/parallax measures each lookup -> geometry/export writes the
-// files.
+// runBuildJob (here) reads the scene and level -> geometry/probe_proxies/build_scene_proxies.h
+// builds each probe (geometry/probe_proxies/build_probe_proxy.h: depth cube, samples, fits,
+// simplification, evaluation, selection) -> core/parallax measures each lookup -> geometry/export
+// writes the files.
 
 #include "core/proxy/proxy_candidate.h"
 #include "core/scene/scene.h"

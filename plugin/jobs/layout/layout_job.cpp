@@ -1,5 +1,7 @@
 #include "plugin/jobs/layout/layout_job.h"
 
+#include "plugin/jobs/measure_settings.h"
+
 #include "core/errors/input_error.h"
 #include "core/io/atomic_write.h"
 #include "core/io/output_folder.h"
@@ -193,7 +195,7 @@ std::string layoutReportJson(const LayoutJobOptions& o, const LayoutJobResult& r
     j["added_probes"] = r.layout.probes.size();
     j["kept_served_share"] = number(r.layout.keptServedShare);
   }
-  j["tolerance_deg"] = o.layout.toleranceDeg;
+  j["tolerance_deg"] = r.toleranceDeg;
   j["seeded_from"] = r.seededFrom;
   j["seed_points"] = nlohmann::ordered_json::array();
   for (const glm::dvec3& s : r.seedPointsMeters) j["seed_points"].push_back({s.x, s.y, s.z});
@@ -241,12 +243,16 @@ std::string layoutReportJson(const LayoutJobOptions& o, const LayoutJobResult& r
 }  // namespace
 
 void LayoutJobOptions::check() const {
-  layout.check();
-  survey.check();
+  LayoutOptions layoutAsGiven = layout;
+  SurveyOptions surveyAsGiven = survey;
+  applyMeasureSettings(given, layoutAsGiven);
+  applyMeasureSettings(given, surveyAsGiven);
+  layoutAsGiven.check();
+  surveyAsGiven.check();
   if (survey.engine != Engine::Generic)
     throw InputError("option engine", "a layout's engines are LayoutJobOptions::engines");
   if (!outFolder.empty()) checkOutputFolder(outFolder);
-  for (const glm::dvec3& s : seedPointsMeters) {
+  for (const glm::dvec3& s : given.seedPointsMeters) {
     if (!(std::max({std::abs(s.x), std::abs(s.y), std::abs(s.z)}) <= kMaxSceneMeters)) {
       throw InputError("--seed", "a seed point is past " + std::to_string(int(kMaxSceneMeters)) +
                                      " m from the origin (the limit of a scene)");
@@ -264,23 +270,34 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
                      "--keep-authored: the scene has no probes to keep");
   const LevelMesh level = loadSceneLevel(input, inMemory ? o.input : SceneInput{});
   const LevelRayCaster rayCaster(level);
-  // Players enter at the spawn points; a level without them (an OBJ room) at its probes; a
-  // bare mesh on its largest floor region.
+  // The user's floor and player, else the scene's (a layout laid out again), else the level's
+  // game; the tolerance likewise.
+  const MeasureSettings measure = resolvedMeasureSettings(o.given, input, level);
+  LayoutOptions layout = o.layout;
+  SurveyOptions survey = o.survey;
+  applyMeasureSettings(measure, layout);
+  applyMeasureSettings(measure, survey);
+  layout.check();  // the scene's and the level's settings, too
+  survey.check();
+  // Players enter where the user, the scene or the level says (its spawn points); a level
+  // without them (an OBJ room) at its probes; a bare mesh on its largest floor region.
   LayoutJobResult r;
+  r.toleranceDeg = layout.toleranceDeg;
   std::vector<glm::dvec3>& seeds = r.seedPointsMeters;
   const auto seedFrom = [&](const std::vector<glm::dvec3>& points, const char* source) {
     if (!seeds.empty() || points.empty()) return;
     seeds = points;
     r.seededFrom = source;
   };
-  seedFrom(o.seedPointsMeters, "option");
+  seedFrom(o.given.seedPointsMeters, "option");
+  seedFrom(input.measuredWith.seedPointsMeters, "scene");
   seedFrom(level.spawnPointsMeters, "spawn points");
   std::vector<glm::dvec3> captures;
   for (const Probe& p : input.probes) captures.push_back(p.captureMeters);
   seedFrom(captures, "probes");
   if (seeds.empty()) {
     std::vector<glm::dvec3> regions;
-    for (const FloorSeed& seed : floorRegionSeeds(level, rayCaster, o.survey.floor))
+    for (const FloorSeed& seed : floorRegionSeeds(level, rayCaster, survey.floor))
       regions.push_back(seed.pointMeters);
     seedFrom(regions, "the level's floor regions");
   }
@@ -300,8 +317,7 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
   }
 
   // Every point of the floor the survey walks must lie in a volume.
-  LayoutOptions layout = o.layout;
-  layout.coverFloor = o.survey.floor;
+  layout.coverFloor = survey.floor;
   r.layout = runLayout(rayCaster, seeds, layout, progress, kept);
   r.scene = layoutScene(input, r.layout, o.outFolder.empty() ? fs::path(".") : o.outFolder,
                         o.layout.keepAuthored);
@@ -313,7 +329,7 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
     r.builds.resize(r.scene.probes.size());
     tbb::parallel_for(first, r.builds.size(), [&](std::size_t i) {
       r.builds[i] = buildLayoutProxy(rayCaster, r.scene.probes[i], o.layout.finalProxy,
-                                     r.layout.probes[i - first].fitMeters, o.layout.toleranceDeg);
+                                     r.layout.probes[i - first].fitMeters, layout.toleranceDeg);
     });
     const fs::path folder = r.scene.file.parent_path();
     for (std::size_t i = first; i < r.builds.size(); ++i) {
@@ -322,17 +338,28 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
                                  folder / (probe.name + ".ply"), probe.name, proxyMeshes);
     }
   } else {
+    r.scene = sceneAsWritten(r.scene, r.scene.file);  // built from what the file will hold
     r.builds = buildSceneProxies(r.scene, rayCaster, o.layout.finalProxy);
     if (o.layout.baseline == LayoutBaseline::Grid) keepAabbs(r.scene, r.builds);
   }
 
+  // Measure what a survey of the written scene reads: its coordinates rounded as the file
+  // spells them, and the authored boxes and spheres made from them.
+  r.scene = sceneAsWritten(r.scene, r.scene.file);
+  for (std::size_t i = 0; i < r.scene.probes.size(); ++i) {
+    const ProxySpec& spec = r.scene.probes[i].proxy;
+    if (std::holds_alternative<AuthoredConvexMesh>(spec)) continue;  // made from its mesh
+    if (std::optional<ProxyShape> read = authoredProxyShape(spec, r.scene))
+      r.builds[i].candidates[r.builds[i].kept].shape = std::move(*read);
+  }
   std::vector<SurveyProbe> probes;
   for (std::size_t i = 0; i < r.scene.probes.size(); ++i)
     probes.push_back({r.scene.probes[i].captureMeters, r.scene.probes[i].influence,
                       r.builds[i].candidates[r.builds[i].kept].shape});
-  SurveyOptions survey = o.survey;
   survey.seedPointsMeters = seeds;
-  survey.toleranceDeg = o.layout.toleranceDeg;
+  survey.toleranceDeg = layout.toleranceDeg;
+  // A later survey, validate or add-on run of the scene measures this floor, this way.
+  r.scene.measuredWith = measuredWith(survey, seeds);
   r.survey = surveyProbes(probes, rayCaster, survey);
   if (o.layout.keepAuthored) {
     dropAddedProbesThatDoNotHelp(rayCaster, survey, probes, r);

@@ -34,9 +34,11 @@ struct LayoutJobOptions {
   // Suggest Probes): the same layout, seeded the same way.
   SceneInput input;
   std::filesystem::path outFolder;  // layout.scene.json, proxies.json/.glb, layout.json, maps
-  // Where the walkable floor starts (world, metres); empty: the level's spawn points, else the
-  // scene's capture points, else the level's floor regions (floor_seed.h).
-  std::vector<glm::dvec3> seedPointsMeters;
+  // The floor and player the user named (seeds, grid, step, head room, eyes) and the tolerance
+  // (overriding layout.toleranceDeg); unset: the scene's measured_with, then the level's
+  // (plugin/jobs/measure_settings.h). No seeds anywhere: the scene's capture points, else the
+  // level's floor regions (floor_seed.h).
+  MeasureSettings given;
   int threads = 0;  // 0: all cores
   LayoutOptions layout;
   SurveyOptions survey;  // how the result is measured (the generic model); seeds as the layout's
@@ -52,9 +54,10 @@ struct LayoutJobResult {
   LayoutResult layout;
   std::vector<ProbeProxyBuild> builds;       // scene order
   SurveyResult survey;                       // the generic model's, or the one engine's
+  double toleranceDeg = 0.0;                 // the layout's, as resolved
   std::vector<EnginePresetChoice> engines;   // each engine asked for (Generic left out)
   std::vector<glm::dvec3> seedPointsMeters;  // where the floor was flood-filled from
-  // "option", "spawn points", "probes" or "the level's floor regions"
+  // "option", "scene", "spawn points", "probes" or "the level's floor regions"
   std::string seededFrom;
   std::string json;                            // layout.json: the layout's and survey's figures
   std::vector<std::filesystem::path> written;  // when outFolder is set

@@ -5,13 +5,16 @@
 #include "geometry/raycast/level_ray_caster.h"
 #include "geometry/survey/run_survey.h"
 #include "geometry/survey/survey_map.h"
+#include "plugin/jobs/measure_settings.h"
 #include "plugin/jobs/survey/survey_report.h"
 #include "plugin/jobs/thread_limit.h"
 
 namespace probeproxy::jobs {
 
 void SurveyJobOptions::check() const {
-  survey.check();
+  SurveyOptions asGiven = survey;
+  applyMeasureSettings(given, asGiven);
+  asGiven.check();
   if (!outFolder.empty()) checkOutputFolder(outFolder);
 }
 
@@ -24,7 +27,8 @@ SurveyJobResult runSurveyJob(const SurveyJobOptions& o, const Progress& progress
   // The floor a player walks is what the player can reach from where the level starts them;
   // a level without spawn points (an OBJ room) is entered at its probes.
   SurveyOptions survey = o.survey;
-  if (survey.seedPointsMeters.empty()) survey.seedPointsMeters = level.spawnPointsMeters;
+  applyMeasureSettings(resolvedMeasureSettings(o.given, scene, level), survey);
+  survey.check();  // the scene's and the level's settings, too
 
   SurveyJobResult r;
   r.result = runSurvey(scene, rayCaster, survey, progress);

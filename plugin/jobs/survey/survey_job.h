@@ -6,9 +6,10 @@
 // Path of one run: plugin/cli/verbs/survey_verb.cpp parses flags into SurveyJobOptions ->
 // runSurveyJob (here) reads the scene and level, seeds the floor at the level's spawn points ->
 // geometry/survey: walkable floor by flood fill, floor samples, each probe's proxy (built by
-// geometry/probe_proxies where the scene says auto), blended error per sample -> core/blend weights and
-// core/parallax lookups -> figures and maps.
+// geometry/probe_proxies where the scene says auto), blended error per sample -> core/blend weights
+// and core/parallax lookups -> figures and maps.
 
+#include "core/scene/measure_settings.h"
 #include "geometry/survey/survey_options.h"
 #include "geometry/survey/survey_result.h"
 #include "plugin/jobs/job_progress.h"
@@ -24,8 +25,11 @@ struct SurveyJobOptions {
   SceneInput input;
   std::filesystem::path outFolder;  // survey.json and the maps; empty: nothing is written
   int threads = 0;                  // 0: all cores
-  SurveyOptions survey;             // seedPointsMeters empty: the level's spawn points, else
-                                    // the capture points
+  SurveyOptions survey;
+  // The floor and tolerance the user named (seeds, grid, player, tolerance_deg); what it leaves
+  // unset comes from the scene's measured_with, then the level (plugin/jobs/measure_settings.h).
+  // No seeds anywhere: the probes' capture points.
+  MeasureSettings given;
 
   void check() const;  // throws InputError naming the option at fault
 };

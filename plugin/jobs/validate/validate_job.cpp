@@ -1,11 +1,16 @@
 #include "plugin/jobs/validate/validate_job.h"
 
 #include "geometry/raycast/level_ray_caster.h"
+#include "plugin/jobs/measure_settings.h"
 #include "plugin/jobs/thread_limit.h"
 
 namespace probeproxy::jobs {
 
-void ValidateJobOptions::check() const { validate.check(); }
+void ValidateJobOptions::check() const {
+  ValidateOptions asGiven = validate;
+  applyMeasureSettings(given, asGiven);
+  asGiven.check();
+}
 
 ValidateJobResult runValidateJob(const ValidateJobOptions& o) {
   o.check();
@@ -15,7 +20,8 @@ ValidateJobResult runValidateJob(const ValidateJobOptions& o) {
   const LevelRayCaster rayCaster(level);
   // The floor a player walks starts where the level starts them (as survey's and layout's).
   ValidateOptions validate = o.validate;
-  if (validate.seedPointsMeters.empty()) validate.seedPointsMeters = level.spawnPointsMeters;
+  applyMeasureSettings(resolvedMeasureSettings(o.given, scene, level), validate);
+  validate.check();  // the scene's and the level's settings, too
   ValidateJobResult result;
   result.findings = validateScene(scene, rayCaster, validate);
   result.fails = findingsFail(result.findings);
