@@ -51,13 +51,16 @@ targets=()
 cmake --build "$build" -j"$(nproc)" "${targets[@]}"
 
 # The real-map corpus: Debian's nexuiz-data, downloaded (not installed) and unpacked under
-# build/corpus/ once, then one scene per map with a probe per spawn point. Cached: a second
-# run fetches nothing and rewrites no scene whose bytes are the same.
+# build/corpus/ once, then one scene per map with a probe per spawn point: the tuning set in
+# build/corpus/scenes/, the validation set (never tuned on) in build/corpus/validation/.
+# Cached: a second run fetches nothing and rewrites no scene whose bytes are the same.
 # The demo and the add-on's module do not need it.
 if [ "$job" = test ] || [ "$job" = build ] || [ "$job" = sanitize ]; then
   data=$("$here/scripts/corpus/fetch_nexuiz.sh" "$build")
   /usr/bin/python3 "$here/scripts/corpus/write_scenes.py" "$build/plugin/cli/probeproxy" \
     "$data/data.pk3" "$build/corpus/scenes"
+  /usr/bin/python3 "$here/scripts/corpus/write_scenes.py" "$build/plugin/cli/probeproxy" \
+    "$data/data.pk3" "$build/corpus/validation" --set validation
 fi
 
 case "$job" in

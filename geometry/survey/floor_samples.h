@@ -7,8 +7,8 @@
 // Deterministic whatever the thread count: every cell draws from its own seeded stream.
 
 #include "geometry/evaluation/reflection_sample.h"
-#include "geometry/raycast/level_ray_caster.h"
 #include "geometry/floor/walkable_floor.h"
+#include "geometry/raycast/level_ray_caster.h"
 
 #include <cstdint>
 #include <vector>

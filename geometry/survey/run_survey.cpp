@@ -45,6 +45,7 @@ SurveyCellError cellError(std::span<const SurveySampleError> errors) {
     c.occludedShare /= area;
   }
   c.p95Deg = areaPercentile(visible, 0.95);
+  c.medianDeg = areaPercentile(visible, 0.5);
   return c;
 }
 

@@ -57,13 +57,21 @@ struct MapFrame {  // world x, y -> pixel
   }
 };
 
-MapFrame mapFrame(const WalkableFloor& floor) {
+// The floor and every outer range over it, whole: an outline cut by the picture's edge reads
+// as a volume that stops there.
+MapFrame mapFrame(const WalkableFloor& floor, std::span<const Probe> probes) {
   glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-lo);
   for (const FloorCell& c : floor.cells) {
     lo = glm::min(lo, glm::dvec2(c.pointMeters) - 0.5 * floor.spacingMeters);
     hi = glm::max(hi, glm::dvec2(c.pointMeters) + 0.5 * floor.spacingMeters);
   }
   if (floor.cells.empty()) lo = hi = glm::dvec2(0.0);
+  for (const Probe& p : probes) {
+    glm::dvec3 volumeLo, volumeHi;
+    influenceBounds(p.influence, volumeLo, volumeHi);
+    lo = glm::min(lo, glm::dvec2(volumeLo));
+    hi = glm::max(hi, glm::dvec2(volumeHi));
+  }
   lo -= kMarginMeters;
   hi += kMarginMeters;
   const glm::dvec2 extent = hi - lo;
@@ -100,10 +108,10 @@ void drawCells(Rgb8Canvas& canvas, const MapFrame& f, const SurveyResult& r,
     const SurveyCellError& e = r.cells[i];
     if (e.uncoveredShare > 0.5) {
       drawHatch(canvas, c0, r0, w, h);
-    } else if (std::isnan(e.p95Deg)) {
+    } else if (std::isnan(e.medianDeg)) {
       canvas.fill(c0, r0, w, h, kOccludedGrey, kOccludedGrey, kOccludedGrey);
     } else {
-      const auto rgb = surveyErrorColour(e.p95Deg);
+      const auto rgb = surveyErrorColour(e.medianDeg);
       canvas.fill(c0, r0, w, h, rgb[0], rgb[1], rgb[2]);
     }
   }
@@ -144,17 +152,36 @@ void drawInfluences(Rgb8Canvas& canvas, const MapFrame& f, std::span<const Probe
   }
 }
 
+// A bar of a round length (1, 2 or 5 times a power of ten) near a fifth of the map's width, in
+// its lower left corner on a white ground, so it reads against any floor.
+void drawScaleBar(Rgb8Canvas& canvas, const MapFrame& f) {
+  const double target = 0.2 * f.width / f.pixelsPerMeter;
+  const double decade = std::pow(10.0, std::floor(std::log10(target)));
+  double meters = decade;
+  for (double multiple : {2.0, 5.0})
+    if (multiple * decade <= target) meters = multiple * decade;
+  const int bar = std::max(1, static_cast<int>(std::lround(meters * f.pixelsPerMeter)));
+  const int x = 12, y = f.height - 40;
+  canvas.fill(x - 6, y - 6, bar + 12, 36, 255, 255, 255);
+  canvas.fill(x, y, bar, 6, 0, 0, 0);
+  canvas.fill(x, y - 4, 2, 10, 0, 0, 0);
+  canvas.fill(x + bar - 2, y - 4, 2, 10, 0, 0, 0);
+  drawText(canvas, x, y + 10, degreeLabel(meters) + " m", 2, 0, 0, 0);
+}
+
 void drawMarker(Rgb8Canvas& canvas, int col, int row) {
   canvas.fill(col - 4, row - 4, 9, 9, 255, 255, 255);
   canvas.fill(col - 2, row - 2, 5, 5, 0, 0, 0);
 }
 
-void drawLegend(Rgb8Canvas& canvas, int left, double pixelsPerMeter, int storey, int storeys) {
+void drawLegend(Rgb8Canvas& canvas, int left, int storey, int storeys) {
   canvas.fill(left, 0, kLegendWidth, canvas.height, 255, 255, 255);
   const int x = left + 12;
   int y = 12;
-  drawText(canvas, x, y, "p95 error, deg", 2, 0, 0, 0);
-  y += 26;
+  drawText(canvas, x, y, "error, deg", 2, 0, 0, 0);
+  y += 18;
+  drawText(canvas, x, y, "median of each cell", 1, 0, 0, 0);
+  y += 16;
   for (std::size_t k = kSurveyScaleDeg.size(); k-- > 0;) {
     const auto& c = kBinColours[k];
     canvas.fill(x, y, 28, 18, c[0], c[1], c[2]);
@@ -182,15 +209,6 @@ void drawLegend(Rgb8Canvas& canvas, int left, double pixelsPerMeter, int storey,
   canvas.fill(x, y + 8, 28, 2, 255, 0, 0);
   drawText(canvas, x + 36, y + 2, "influence", 2, 0, 0, 0);
   y += 34;
-  // A scale bar of a round length near a quarter of the legend's width... or wider levels'
-  // 1-10-100.
-  double meters = 1.0;
-  while (meters * pixelsPerMeter < 40.0) meters *= 10.0;
-  while (meters * pixelsPerMeter > 160.0 && meters > 0.01) meters /= 10.0;
-  const int bar = static_cast<int>(std::lround(meters * pixelsPerMeter));
-  canvas.fill(x, y, bar, 6, 0, 0, 0);
-  drawText(canvas, x, y + 12, degreeLabel(meters) + " m", 2, 0, 0, 0);
-  y += 40;
   if (storeys > 1)
     drawText(canvas, x, y, "storey " + std::to_string(storey + 1) + "/" + std::to_string(storeys),
              2, 0, 0, 0);
@@ -205,8 +223,9 @@ std::array<std::uint8_t, 3> surveyErrorColour(double errorDeg) {
 }
 
 Rgb8Canvas renderSurveyMap(const SurveyResult& r, std::span<const Probe> probes,
-                           std::span<const int> storeyOf, int storey, int storeyCount) {
-  const MapFrame f = mapFrame(r.floor);
+                           std::span<const int> storeyOf, int storey, int storeyCount,
+                           const SurveyMapOptions& options) {
+  const MapFrame f = mapFrame(r.floor, probes);
   Rgb8Canvas canvas;
   canvas.width = f.width + kLegendWidth;
   canvas.height = std::max(f.height, 420);
@@ -226,21 +245,31 @@ Rgb8Canvas renderSurveyMap(const SurveyResult& r, std::span<const Probe> probes,
     // On a storey's map, the probes standing over it (one storey: all of them).
     const bool here =
         storeyCount == 1 || (p.captureMeters.z >= floorZ - 0.5 && p.captureMeters.z <= topZ + 3.0);
-    if (here) drawMarker(canvas, f.column(p.captureMeters.x), f.row(p.captureMeters.y));
+    if (!here) continue;
+    const int col = f.column(p.captureMeters.x), row = f.row(p.captureMeters.y);
+    drawMarker(canvas, col, row);
+    if (options.probeNames) {
+      // Black on a white ground beside the marker, so a name reads on any floor colour.
+      const int width = static_cast<int>(p.name.size()) * (kGlyphWidth + 1) + 3;
+      canvas.fill(col + 6, row - 5, width, kGlyphHeight + 3, 255, 255, 255);
+      drawText(canvas, col + 8, row - 3, p.name, 1, 0, 0, 0);
+    }
   }
-  drawLegend(canvas, f.width, f.pixelsPerMeter, storey, storeyCount);
+  drawScaleBar(canvas, f);
+  drawLegend(canvas, f.width, storey, storeyCount);
   return canvas;
 }
 
 std::vector<std::filesystem::path> writeSurveyMaps(const SurveyResult& r,
                                                    std::span<const Probe> probes,
-                                                   const std::filesystem::path& outFolder) {
+                                                   const std::filesystem::path& outFolder,
+                                                   const SurveyMapOptions& options) {
   const std::vector<int> storeyOf = floorStoreys(r.floor);
   const int storeys =
       storeyOf.empty() ? 1 : *std::max_element(storeyOf.begin(), storeyOf.end()) + 1;
   std::vector<std::filesystem::path> files;
   for (int s = 0; s < storeys; ++s) {
-    const Rgb8Canvas map = renderSurveyMap(r, probes, storeyOf, s, storeys);
+    const Rgb8Canvas map = renderSurveyMap(r, probes, storeyOf, s, storeys, options);
     const std::string name = storeys == 1
                                  ? r.scene + "_survey.png"
                                  : r.scene + "_survey_storey" + std::to_string(s + 1) + ".png";

@@ -37,6 +37,10 @@ struct SurveySampleError {
 
 struct SurveyCellError {  // per floor cell (WalkableFloor::cells, same order)
   double p95Deg = std::numeric_limits<double>::quiet_NaN();  // of its samples; NaN: none visible
+  // What the map colours: half the cell's shaded floor is at most this. Floor coloured past
+  // the tolerance then adds up to about the share the headline counts over it (a cell's p95
+  // coloured downer's map 65% at 5 deg or more where 20% of its floor was).
+  double medianDeg = std::numeric_limits<double>::quiet_NaN();
   double uncoveredShare = 0.0;
   double occludedShare = 0.0;
   int samples = 0;

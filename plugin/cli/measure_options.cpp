@@ -17,7 +17,7 @@ void addLength(CLI::App& verb, const char* name, std::optional<double>& into,
 }  // namespace
 
 void addMeasureOptions(CLI::App& verb, MeasureSettings& given, std::vector<std::string>& seeds,
-                       const std::string& toleranceHelp) {
+                       const std::string& toleranceHelp, double toleranceDefault) {
   const std::string unset = " (default: the scene's measured_with, else the level's game, else ";
   addLength(verb, "--grid", given.gridSpacingMeters,
             "walkable-floor cell size, m (default: the scene's measured_with, else 0.25)");
@@ -34,7 +34,8 @@ void addMeasureOptions(CLI::App& verb, MeasureSettings& given, std::vector<std::
                   "else the scene's probes");
   if (!toleranceHelp.empty()) {
     addLength(verb, "--tolerance-deg", given.toleranceDeg,
-              toleranceHelp + " (default: the scene's measured_with, else 5)");
+              toleranceHelp + " (default: the scene's measured_with, else " +
+                  CLI::detail::to_string(toleranceDefault) + ")");
   }
 }
 

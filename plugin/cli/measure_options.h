@@ -14,9 +14,10 @@
 namespace probeproxy::cli {
 
 // --grid, --step-height, --head-clearance, --eye-height, --seed X,Y,Z (repeatable; `seeds`
-// holds the text until parseSeeds) and, with a help text, --tolerance-deg.
+// holds the text until parseSeeds) and, with a help text, --tolerance-deg (whose default when
+// neither the user nor the scene gives one is the verb's, `toleranceDefault`).
 void addMeasureOptions(CLI::App& verb, MeasureSettings& given, std::vector<std::string>& seeds,
-                       const std::string& toleranceHelp = {});
+                       const std::string& toleranceHelp = {}, double toleranceDefault = 5.0);
 
 void parseSeeds(const std::vector<std::string>& seeds, MeasureSettings& given);
 

@@ -42,6 +42,7 @@ void applyMeasureSettings(const MeasureSettings& m, SurveyOptions& survey) {
 void applyMeasureSettings(const MeasureSettings& m, ValidateOptions& validate) {
   if (!m.seedPointsMeters.empty()) validate.seedPointsMeters = m.seedPointsMeters;
   if (m.gridSpacingMeters) validate.gridSpacingMeters = *m.gridSpacingMeters;
+  if (m.toleranceDeg) validate.toleranceDeg = *m.toleranceDeg;
   applyMeasureSettings(playerOf(m), validate.walkedFloor);
 }
 

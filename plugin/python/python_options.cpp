@@ -48,7 +48,7 @@ void readValidateOptions(const py::dict& options, jobs::ValidateJobOptions& job)
   for (auto [key, value] : options) {
     const std::string name = key.cast<std::string>();
     if (name == "tolerance_deg")
-      o.toleranceDeg = value.cast<double>();
+      job.given.toleranceDeg = value.cast<double>();
     else if (name == "max_overlap")
       o.maxOverlap = value.cast<int>();
     else if (name == "max_uncovered_m2")
@@ -62,7 +62,7 @@ void readValidateOptions(const py::dict& options, jobs::ValidateJobOptions& job)
     else if (name == "glossy")
       o.glossyReceivers = value.cast<bool>();
     else if (name == "grid")
-      o.gridSpacingMeters = value.cast<double>();
+      job.given.gridSpacingMeters = value.cast<double>();
     else if (name == "samples")
       o.samples.targetSamples = value.cast<std::size_t>();
     else if (name == "rules")

@@ -1,9 +1,13 @@
 #!/usr/bin/python3
 """Writes one scene file per corpus map: a probe at every player spawn point.
 
-    write_scenes.py PROBEPROXY PK3 OUT_FOLDER [MAP...]
+    write_scenes.py PROBEPROXY PK3 OUT_FOLDER [--set tuning|validation] [MAP...]
 
-For each MAP (default: the ten maps of the corpus) it asks `probeproxy level-info` for the
+The corpus is two sets of ten maps from the same data.pk3. The tuning set is what `layout`'s
+choices were made on; the validation set was never used to tune anything, and a change to
+`layout` is kept only if its figures there do not get worse. No other map of the pk3 is used.
+
+For each MAP (default: the ten maps of the set, tuning by default) it asks `probeproxy level-info` for the
 map's spawn points and the floor under each, and writes OUT_FOLDER/MAP/MAP.scene.json:
   - level: {"mesh": <the pk3, relative to the scene>, "map": "maps/MAP.bsp"}
   - one probe per spawn point, in entity order, named "spawn_NN_<classname>";
@@ -19,8 +23,12 @@ import os
 import subprocess
 import sys
 
-MAPS = ["downer", "darkzone", "ruiner", "eggandbacon", "basement", "bloodprison",
-        "stormkeep", "toxic", "skyway", "warfare"]
+SETS = {
+    "tuning": ["downer", "darkzone", "ruiner", "eggandbacon", "basement", "bloodprison",
+               "stormkeep", "toxic", "skyway", "warfare"],
+    "validation": ["aneurysm", "bleach", "desertfactory", "dieselpower", "evilspace", "final_rage",
+                   "runningman", "silvercity", "soylent", "starship"],
+}
 EYE_HEIGHT_M = 1.6
 ORIGIN_TO_EYE_M = 0.85
 INFLUENCE_RADIUS_M = 10.0
@@ -70,10 +78,18 @@ def write_if_changed(path, text):
 
 
 def main():
-    if len(sys.argv) < 4:
+    args = sys.argv[1:]
+    chosen = "tuning"
+    if "--set" in args:
+        at = args.index("--set")
+        if at + 1 >= len(args) or args[at + 1] not in SETS:
+            sys.exit("write_scenes.py: --set takes tuning or validation")
+        chosen = args[at + 1]
+        del args[at:at + 2]
+    if len(args) < 3:
         sys.exit(__doc__)
-    probeproxy, pk3, out = sys.argv[1], os.path.abspath(sys.argv[2]), os.path.abspath(sys.argv[3])
-    maps = sys.argv[4:] or MAPS
+    probeproxy, pk3, out = args[0], os.path.abspath(args[1]), os.path.abspath(args[2])
+    maps = args[3:] or SETS[chosen]
     figures = []
     for name in maps:
         result = subprocess.run([probeproxy, "level-info", pk3, "--map", "maps/%s.bsp" % name],

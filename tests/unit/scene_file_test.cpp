@@ -502,7 +502,7 @@ std::vector<ErrorCase> errorCases() {
        R"("proxy", "cubemap", "reflection_planes"))"},
       {"unknown_member_odd_key", sceneJson("", std::string(kHead) + R"(, "my key": 1)"),
        R"($["my key"]: unknown member (expected one of "probeproxy_scene", "up", )"
-       R"("meters_per_unit", "level", "probes"))"},
+       R"("meters_per_unit", "level", "probes", "measured_with"))"},
       {"empty_level", sceneJson("", R"("probeproxy_scene": 1, "up": "Z", "level": [])"),
        "$.level: expected a non-empty array of meshes, got []"},
       {"mesh_extension", sceneJson("", R"("probeproxy_scene": 1, "up": "Z", "level": ["a.fbx"])"),

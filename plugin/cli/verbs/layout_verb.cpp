@@ -89,6 +89,8 @@ Verb addLayoutVerb(CLI::App& app) {
       ->required();
   verb->add_option("--out", o->out,
                    "folder for layout.scene.json, proxies.json/.glb, layout.json and the maps");
+  verb->add_flag("--probe-names", o->job.maps.probeNames,
+                 "label each capture point on the error maps with its probe's name");
   verb->add_flag("--json", o->json, "print layout.json on stdout");
   verb->add_option("--engine", o->engine,
                    "the engines the level ships to, comma-separated, or all: each gets the "

@@ -66,6 +66,8 @@ Verb addSurveyVerb(CLI::App& app) {
   verb->add_option("scene", o->scene, "scene file (*.scene.json)")->required();
   verb->add_flag("--json", o->json, "print the figures as JSON on stdout");
   verb->add_option("--out", o->out, "folder for survey.json and the error maps (PNG)");
+  verb->add_flag("--probe-names", o->job.maps.probeNames,
+                 "label each capture point on the error maps with its probe's name");
   verb->add_option("--engine", o->engine,
                    "whose renderer to measure: generic (the scene's proxies, --scheme blend), "
                    "unity, unity-hdrp, unreal, godot3, godot4, bevy or eevee (the presets a "
@@ -89,7 +91,8 @@ Verb addSurveyVerb(CLI::App& app) {
       ->capture_default_str();
   verb->add_option("--max-samples", s.maxSamples, "fewer samples per cell beyond this many")
       ->capture_default_str();
-  verb->add_option("--sample-seed", s.seed, "random seed of the floor samples")->capture_default_str();
+  verb->add_option("--sample-seed", s.seed, "random seed of the floor samples")
+      ->capture_default_str();
   verb->add_option("--threads", o->job.threads, "worker threads (0: all cores)")
       ->capture_default_str();
   return {verb, [o] { return runSurveyVerb(*o); }};

@@ -43,9 +43,6 @@ Verb addValidateVerb(CLI::App& app) {
       "errors or warnings, 2 bad input)");
   verb->add_option("scene", o->scene, "scene file (*.scene.json)")->required();
   verb->add_flag("--json", o->json, "print the findings as JSON on stdout");
-  verb->add_option("--tolerance-deg", v.toleranceDeg,
-                   "proxy_error_over_tolerance: largest mirror_floor p95 angular error")
-      ->capture_default_str();
   verb->add_option("--max-overlap", v.maxOverlap,
                    "too_many_overlaps: most influence volumes allowed at one point")
       ->capture_default_str();
@@ -64,7 +61,10 @@ Verb addValidateVerb(CLI::App& app) {
   verb->add_flag("--glossy", v.glossyReceivers,
                  "reflected_camera_outside_proxy: receivers are glossy, so the reflected "
                  "camera itself must be inside the proxy (Lagarde & Zanuttini 2012)");
-  addMeasureOptions(*verb, o->job.given, o->seeds);
+  addMeasureOptions(*verb, o->job.given, o->seeds,
+                    "proxy_error_over_tolerance: largest mirror_floor p95 angular error on the "
+                    "floor a probe serves, degrees",
+                    v.toleranceDeg);
   verb->add_option("--samples", v.samples.targetSamples, "reflection samples per probe")
       ->capture_default_str();
   verb->add_option("--rules", v.rules,

@@ -394,7 +394,7 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
     for (const char* name : {"layout.scene.json", "proxies.json", "proxies.glb", "layout.json"})
       r.written.push_back(o.outFolder / name);
     writeFileAtomically(o.outFolder / "layout.json", r.json);
-    for (const fs::path& map : writeSurveyMaps(r.survey, r.scene.probes, o.outFolder))
+    for (const fs::path& map : writeSurveyMaps(r.survey, r.scene.probes, o.outFolder, o.maps))
       r.written.push_back(map);
   }
   return r;

@@ -15,6 +15,7 @@
 #include "geometry/layout/engine_presets.h"
 #include "geometry/layout/layout_options.h"
 #include "geometry/layout/run_layout.h"
+#include "geometry/survey/survey_map.h"
 #include "geometry/survey/survey_options.h"
 #include "geometry/survey/survey_result.h"
 #include "plugin/jobs/job_progress.h"
@@ -34,6 +35,7 @@ struct LayoutJobOptions {
   // Suggest Probes): the same layout, seeded the same way.
   SceneInput input;
   std::filesystem::path outFolder;  // layout.scene.json, proxies.json/.glb, layout.json, maps
+  SurveyMapOptions maps;
   // The floor and player the user named (seeds, grid, step, head room, eyes) and the tolerance
   // (overriding layout.toleranceDeg); unset: the scene's measured_with, then the level's
   // (plugin/jobs/measure_settings.h). No seeds anywhere: the scene's capture points, else the

@@ -36,7 +36,8 @@ SurveyJobResult runSurveyJob(const SurveyJobOptions& o, const Progress& progress
   if (!o.outFolder.empty()) {
     r.written.push_back(o.outFolder / "survey.json");
     writeFileAtomically(r.written.back(), r.json);
-    for (const std::filesystem::path& map : writeSurveyMaps(r.result, scene.probes, o.outFolder))
+    for (const std::filesystem::path& map :
+         writeSurveyMaps(r.result, scene.probes, o.outFolder, o.maps))
       r.written.push_back(map);
   }
   return r;

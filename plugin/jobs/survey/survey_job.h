@@ -10,6 +10,7 @@
 // and core/parallax lookups -> figures and maps.
 
 #include "core/scene/measure_settings.h"
+#include "geometry/survey/survey_map.h"
 #include "geometry/survey/survey_options.h"
 #include "geometry/survey/survey_result.h"
 #include "plugin/jobs/job_progress.h"
@@ -24,7 +25,8 @@ namespace probeproxy::jobs {
 struct SurveyJobOptions {
   SceneInput input;
   std::filesystem::path outFolder;  // survey.json and the maps; empty: nothing is written
-  int threads = 0;                  // 0: all cores
+  SurveyMapOptions maps;
+  int threads = 0;  // 0: all cores
   SurveyOptions survey;
   // The floor and tolerance the user named (seeds, grid, player, tolerance_deg); what it leaves
   // unset comes from the scene's measured_with, then the level (plugin/jobs/measure_settings.h).
