@@ -91,6 +91,16 @@ std::vector<glm::vec3> archControlPoints() {
   return control;
 }
 
+TEST(BspLevel, ItsFloorIsWalkedByQuake3sPlayer) {
+  const SyntheticBsp bsp = boxRoomBsp({256, 128, 96});
+  const LevelMesh mesh = parseBspLevel(asBytes(bsp.bytes()), "box.bsp").mesh;
+  // STEPSIZE 18, playerMins/playerMaxs z -24..32, DEFAULT_VIEWHEIGHT 26 over the origin.
+  EXPECT_EQ(*mesh.gamePlayer.stepHeightMeters, 18.0 / 32.0);
+  EXPECT_EQ(*mesh.gamePlayer.headClearanceMeters, 56.0 / 32.0);
+  EXPECT_EQ(*mesh.gamePlayer.eyeHeightMeters, 50.0 / 32.0);
+  EXPECT_FALSE(mesh.gamePlayer.gridSpacingMeters) << "the grid is the survey's, not the game's";
+}
+
 TEST(BspLevel, PatchIsWatertightWithinItsOwnGrid) {
   std::vector<glm::dvec3> control;
   for (const glm::vec3& p : archControlPoints()) control.emplace_back(p);

@@ -6,6 +6,8 @@
 #include "plugin/jobs/blend/blend_job.h"
 #include "plugin/jobs/build/build_job.h"
 #include "plugin/jobs/correct/correct_job.h"
+#include "plugin/jobs/measure_settings.h"
+#include "plugin/jobs/survey/survey_job.h"
 #include "plugin/jobs/validate/validate_job.h"
 
 #include <gtest/gtest.h>
@@ -87,6 +89,53 @@ TEST(JobOptions, BenchNeedsAScene) {
   o.scenes = {"a.scene.json"};
   o.bench.timing.repetitions = 0;
   EXPECT_EQ(inputErrorOf([&] { runBenchJob(o); }), "option repetitions: 0 is outside [1, 100]");
+}
+
+TEST(MeasureSettings, TheOptionOverTheSceneOverTheLevelsGameOverTheDefault) {
+  Scene scene;
+  scene.measuredWith.stepHeightMeters = 0.6;
+  scene.measuredWith.toleranceDeg = 3.0;
+  scene.measuredWith.seedPointsMeters = {{1, 2, 3}};
+  LevelMesh level;
+  level.gamePlayer.stepHeightMeters = 0.5625;
+  level.gamePlayer.headClearanceMeters = 1.75;
+  level.spawnPointsMeters = {{9, 9, 9}};
+  MeasureSettings given;
+  given.toleranceDeg = 7.0;
+
+  SurveyOptions survey;
+  applyMeasureSettings(resolvedMeasureSettings(given, scene, level), survey);
+  EXPECT_EQ(survey.toleranceDeg, 7.0);                                       // the option
+  EXPECT_EQ(survey.floor.stepHeightMeters, 0.6);                             // the scene
+  EXPECT_EQ(survey.floor.headClearanceMeters, 1.75);                         // the level's game
+  EXPECT_EQ(survey.eyeHeightMeters, 1.7);                                    // the default
+  EXPECT_EQ(survey.floor.gridSpacingMeters, 0.25);                           // the default
+  EXPECT_EQ(survey.seedPointsMeters, (std::vector<glm::dvec3>{{1, 2, 3}}));  // the scene's seeds
+
+  scene.measuredWith = {};  // a hand-written scene: the level's spawn points and player
+  applyMeasureSettings(resolvedMeasureSettings({}, scene, level), survey = {});
+  EXPECT_EQ(survey.seedPointsMeters, (std::vector<glm::dvec3>{{9, 9, 9}}));
+  EXPECT_EQ(survey.floor.stepHeightMeters, 0.5625);
+  EXPECT_EQ(survey.toleranceDeg, 5.0);
+}
+
+TEST(MeasureSettings, ATallStepLiftsTheWallTestAboveIt) {
+  // Nexuiz steps 34 units (1.0625 m): the wall test between cells must run above the step.
+  MeasureSettings nexuiz;
+  nexuiz.stepHeightMeters = 34.0 / 32.0;
+  SurveyOptions survey;
+  applyMeasureSettings(nexuiz, survey);
+  EXPECT_GT(survey.floor.kneeHeightMeters, survey.floor.stepHeightMeters);
+  EXPECT_LT(survey.floor.kneeHeightMeters, survey.floor.headClearanceMeters);
+  EXPECT_NO_THROW(survey.check());
+}
+
+TEST(MeasureSettings, AStepAsTallAsThePlayerIsRefusedByName) {
+  SurveyJobOptions o;
+  o.input.file = "never_read.scene.json";
+  o.given.stepHeightMeters = 2.0;  // the head clearance is 1.8
+  EXPECT_EQ(inputErrorOf([&] { runSurveyJob(o); }),
+            "option step_height: must be below the head clearance");
 }
 
 }  // namespace

@@ -237,6 +237,43 @@ TEST_F(SceneFileTest, MetersPerUnitScalesLengthsButNotDirections) {
   EXPECT_EQ(sceneFileJson(scene), text);  // no 7.000000000000001 or 28.999999999999996
 }
 
+TEST_F(SceneFileTest, MeasuredWithReadsIntoTheWorldAndWritesBackByteExactly) {
+  // A Y-up file in centimetres: seed points turn like captures, lengths scale, the tolerance
+  // (degrees) does not.
+  const std::string text = R"({
+  "probeproxy_scene": 1,
+  "up": "Y",
+  "meters_per_unit": 0.01,
+  "level": [ { "mesh": "level.obj" } ],
+  "probes": [],
+  "measured_with": {
+    "seed_points": [ [100.0, 50.0, -300.0], [7.0, 0.0, 29.0] ],
+    "grid": 25.0,
+    "step_height": 56.25,
+    "head_clearance": 175.0,
+    "eye_height": 156.25,
+    "tolerance_deg": 5.0
+  }
+}
+)";
+  const Scene scene = readSceneFile(write("measured.scene.json", text));
+  const MeasureSettings& m = scene.measuredWith;
+  ASSERT_EQ(m.seedPointsMeters.size(), 2u);
+  expectNear(m.seedPointsMeters[0], {1.0, 3.0, 0.5});  // Y-up (x, y, z) is world (x, -z, y)
+  expectNear(m.seedPointsMeters[1], {0.07, -0.29, 0.0});
+  EXPECT_NEAR(*m.gridSpacingMeters, 0.25, 1e-15);
+  EXPECT_NEAR(*m.stepHeightMeters, 0.5625, 1e-15);
+  EXPECT_NEAR(*m.headClearanceMeters, 1.75, 1e-15);
+  EXPECT_NEAR(*m.eyeHeightMeters, 1.5625, 1e-15);
+  EXPECT_EQ(*m.toleranceDeg, 5.0);
+  EXPECT_EQ(sceneFileJson(scene), text);
+
+  // Without it, nothing is said and nothing is written.
+  const Scene plain = readSceneFile(write("plain.scene.json", sceneJson("")));
+  EXPECT_TRUE(plain.measuredWith.empty());
+  EXPECT_EQ(sceneFileJson(plain).find("measured_with"), std::string::npos);
+}
+
 TEST_F(SceneFileTest, PlainStringLevelEntriesAreShortForMeshObjects) {
   const Scene scene = readSceneFile(write(
       "s.scene.json",
@@ -500,6 +537,17 @@ std::vector<ErrorCase> errorCases() {
       {"unknown_member", sceneJson(probeJson({{"colour", R"("red")"}})),
        R"($.probes[0].colour: unknown member (expected one of "name", "capture", "influence", )"
        R"("proxy", "cubemap", "reflection_planes"))"},
+      {"measured_with_negative_step",
+       sceneJson("", std::string(kHead) + R"(, "measured_with": {"step_height": -1})"),
+       "$.measured_with.step_height: expected a positive number, got -1"},
+      {"measured_with_seed_outside_the_scene",
+       sceneJson("", std::string(kHead) + R"(, "measured_with": {"seed_points": [[0, 0, 1e9]]})"),
+       "$.measured_with.seed_points[0]: expected coordinates within 100000 m (the limit of a "
+       "scene, in metres), got [0, 0, 1000000000.0]"},
+      {"measured_with_unknown_member",
+       sceneJson("", std::string(kHead) + R"(, "measured_with": {"step": 1})"),
+       R"($.measured_with.step: unknown member (expected one of "seed_points", "grid", )"
+       R"("step_height", "head_clearance", "eye_height", "tolerance_deg"))"},
       {"unknown_member_odd_key", sceneJson("", std::string(kHead) + R"(, "my key": 1)"),
        R"($["my key"]: unknown member (expected one of "probeproxy_scene", "up", )"
        R"("meters_per_unit", "level", "probes", "measured_with"))"},
