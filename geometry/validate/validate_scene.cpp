@@ -58,7 +58,10 @@ std::vector<ValidationFinding> validateScene(const Scene& scene, const LevelRayC
                        options.measures("too_many_overlaps") || options.measures("weight_jump");
   const WalkableFloor walked = onFloor ? walkedFloor(scene, level, options) : WalkableFloor{};
   const std::vector<FloorCell>& floor = walked.cells;
-  for (const Probe& probe : scene.probes) {
+  std::vector<InfluenceVolume> volumes;
+  for (const Probe& probe : scene.probes) volumes.push_back(probe.influence);
+  for (std::size_t index = 0; index < scene.probes.size(); ++index) {
+    const Probe& probe = scene.probes[index];
     // Later rules measure what earlier ones establish: a proxy that is not a closed convex
     // mesh, or that misses its capture point, has no meaningful error yet; a capture point
     // outside its influence volume has no samples. Fix those first, then see the rest.
@@ -71,7 +74,8 @@ std::vector<ValidationFinding> validateScene(const Scene& scene, const LevelRayC
     if (options.measures("capture_outside_level")) checkCaptureInsideLevel(level, probe, findings);
     if (authored &&
         (options.measures("proxy_error_over_tolerance") || options.measures("split_probe")))
-      checkProxyError(level, probe, *authored, floor, options, findings);
+      checkProxyError(level, probe, volumes, static_cast<int>(index), *authored, floor, options,
+                      findings);
     // Cameras over the floor behind the wall a volume leaks through are outside any proxy of
     // this probe's room: that is the leak, reported once.
     std::vector<ValidationFinding> leak;

@@ -28,9 +28,12 @@ void checkCaptureInsideInfluence(const Probe& probe, std::vector<ValidationFindi
 void checkCaptureInsideLevel(const LevelRayCaster& level, const Probe& probe,
                              std::vector<ValidationFinding>& out);
 // With split_probe where neither the authored nor the generated proxy is within the tolerance.
-void checkProxyError(const LevelRayCaster& level, const Probe& probe, const ProxyShape& authored,
-                     const std::vector<FloorCell>& floor, const ValidateOptions& options,
-                     std::vector<ValidationFinding>& out);
+// `volumes`: every probe's influence, in scene order (the blend the probe serves in);
+// `probeIndex`: this probe's.
+void checkProxyError(const LevelRayCaster& level, const Probe& probe,
+                     std::span<const InfluenceVolume> volumes, int probeIndex,
+                     const ProxyShape& authored, const std::vector<FloorCell>& floor,
+                     const ValidateOptions& options, std::vector<ValidationFinding>& out);
 // split_probe: whether a second capture point over the probe's floor, the volume split halfway
 // between the two, brings `samples` (its mirror_floor samples) within the tolerance; `own` is
 // the probe's best proxy, of p95 ownP95Deg. Names the best such point.

@@ -101,7 +101,7 @@ README = """
 
 Each `validate_*.scene.json` is `validate_clean` (one probe in the room, capture (0.5, 0.25,
 1.6), influence the room with inner range (1.5, 1.0, 1.5), proxy the room's box) with one
-change; `validate --json` on it reports exactly the rule in the last column (exit 1), and on
+change; `validate --json` on it reports exactly the findings in the last column (exit 1), and on
 `validate_clean` nothing (exit 0).
 
 | scene file | the one change | finding |
@@ -116,8 +116,8 @@ change; `validate --json` on it reports exactly the rule in the last column (exi
 | `validate_too_many_overlaps` | five probes, one per quarter and one in the middle, whose volumes all meet at the centre (the blend takes four) | `too_many_overlaps` |
 | `validate_inner_ranges_overlap` | two probes whose inner ranges share x -0.25..0.25 | `inner_ranges_overlap` |
 | `validate_weight_jump` | two probes whose volumes only touch at x = 0, no fade band there | `weight_jump` |
-| `validate_influence_leak` | level `partitioned_room.obj` (a wall at x = 0.5, a door at its north end); the probe west of it, its influence the whole room | `influence_leak` |
-| `validate_reflected_camera` | proxy box starts 0.3 m above the floor (the reflection plane) | `reflected_camera_outside_proxy` |
+| `validate_influence_leak` | level `partitioned_room.obj` (a wall at x = 0.5, a door at its north end); the probe west of it, its influence the whole room | `influence_leak`, and `proxy_error_over_tolerance` as information (the far room's floor is not the room box's to serve, and no generated proxy serves it better) |
+| `validate_reflected_camera` | proxy box starts 0.3 m above the floor (the reflection plane) | `reflected_camera_outside_proxy`, and what follows from it: `proxy_error_over_tolerance` (every floor reflection starts outside the proxy: a miss) and `split_probe` (information) |
 """
 
 
