@@ -102,10 +102,10 @@ void checkProxyError(const LevelRayCaster& level, const Probe& probe,
                      "the error is what is left"});
     }
   }
-  // Where the proxy fails its floor, a second probe may take the part it fails, the probe
-  // keeping its own proxy for the rest (a room box fails the other arm of an L, and a second
-  // probe in that arm serves it exactly, where a proxy for both arms serves neither).
-  if (options.measures("split_probe"))
+  // Where no proxy of its own serves the floor, a second probe may take the part the probe's
+  // own proxy fails (a room box fails the other arm of an L, and a second probe in that arm
+  // serves it exactly, where a proxy fitted to both arms serves neither).
+  if (generatedError.p95Deg > tolerance && options.measures("split_probe"))
     checkSplitProbe(level, probe, authored, error.p95Deg, samples, floor, options, out);
 }
 
