@@ -78,6 +78,13 @@ for obj, want in zip(suggested, cli_probes):
 figures = cli_figures["survey"]
 check(settings.layout_summary.startswith("%d probes: p95 %.1f deg" % (len(cli_probes), figures["p95_deg"])),
       "the panel's summary is the CLI's figures: " + settings.layout_summary)
+# The floor the layout measured on stays with the scene: the next Validate, and Save Scene,
+# carry the CLI's measured_with, so they measure the same floor.
+measured = json.loads(settings.measured_with_json)
+check(measured == cli_scene.get("measured_with") and measured.get("seed_points"),
+      "the layout's measured_with kept: %s (CLI %s)" % (measured, cli_scene.get("measured_with")))
+check(scene_io.scene_dict(bpy.context.scene).get("measured_with") == measured,
+      "the scene the add-on hands over carries it")
 image = bpy.data.images.get(os.path.basename(settings.layout_map))
 check(image is not None and image.size[0] >= 800, "the error map is loaded for the panel: %s %s"
       % (settings.layout_map, tuple(image.size) if image else None))
