@@ -117,7 +117,7 @@ change; `validate --json` on it reports exactly the findings in the last column 
 | `validate_inner_ranges_overlap` | two probes whose inner ranges share x -0.25..0.25 | `inner_ranges_overlap` |
 | `validate_weight_jump` | two probes whose volumes only touch at x = 0, no fade band there | `weight_jump` |
 | `validate_influence_leak` | level `partitioned_room.obj` (a wall at x = 0.5, a door at its north end); the probe west of it, its influence the whole room | `influence_leak`, and `proxy_error_over_tolerance` as information (the far room's floor is not the room box's to serve, and no generated proxy serves it better) |
-| `validate_reflected_camera` | proxy box starts 0.3 m above the floor (the reflection plane) | `reflected_camera_outside_proxy`, and what follows from it: `proxy_error_over_tolerance` (every floor reflection starts outside the proxy: a miss) and `split_probe` (information) |
+| `validate_reflected_camera` | proxy box starts 0.3 m above the floor (the reflection plane) | `reflected_camera_outside_proxy`, and what follows from it: `proxy_error_over_tolerance` (every floor reflection starts outside the proxy: a miss; the generated proxy serves the floor, so no `split_probe`) |
 """
 
 
