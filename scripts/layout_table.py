@@ -30,9 +30,16 @@ import tempfile
 GRID_FACTORS = (2, 4)
 
 
+class LayoutFailed(Exception):
+    pass
+
+
 def layout_json(probeproxy, scene, out, *extra):
-    subprocess.run([probeproxy, "layout", scene, "--out", out, "--json", *extra], check=True,
-                   capture_output=True, text=True)
+    done = subprocess.run([probeproxy, "layout", scene, "--out", out, "--json", *extra],
+                          capture_output=True, text=True)
+    if done.returncode != 0:
+        raise LayoutFailed("exit %d: %s" % (done.returncode, done.stderr.strip().splitlines()[-1]
+                                            if done.stderr.strip() else ""))
     with open(os.path.join(out, "layout.json")) as f:
         return json.load(f)
 
@@ -154,13 +161,20 @@ def main():
             print("|" + "---|" * header.count(" |"))
             rows = []
             for scene in scenes:
-                row = measure(args, scene, work)
+                try:
+                    row = measure(args, scene, work)
+                except LayoutFailed as failed:  # a map the layout refuses is a row, not the end
+                    level = os.path.basename(os.path.dirname(scene))
+                    print("| %s | **failed**: %s |" % (level, failed), flush=True)
+                    continue
                 row["set"] = name
                 rows.append(row)
                 print_row(row, args)
                 if args.jsonl:
                     with open(args.jsonl, "a") as f:
                         f.write(json.dumps(row) + "\n")
+            if not rows:
+                continue
             print("\n%s set, worst map: p95 ratio %.2f, %.1f%% over 5 deg, %.2f%% uncovered; "
                   "survey agrees on %d of %d" % (
                       name, max(r["p95_ratio"] for r in rows),
