@@ -5,6 +5,7 @@
 // anything none of them says. survey, validate and layout resolve them the same way, so a
 // layout's figures and a later survey of its scene are measured on the same floor.
 
+#include "core/errors/input_error.h"
 #include "core/scene/measure_settings.h"
 #include "core/scene/scene.h"
 #include "geometry/layout/layout_options.h"
@@ -23,6 +24,18 @@ void applyMeasureSettings(const MeasureSettings& m, SurveyOptions& survey);
 void applyMeasureSettings(const MeasureSettings& m, ValidateOptions& validate);
 // The player only (the layout's coarse floor keeps its own grid) and the tolerance.
 void applyMeasureSettings(const MeasureSettings& m, LayoutOptions& layout);
+
+// Runs `check` on options that now hold the scene's measured_with: the user's own were checked
+// before the scene was read, so a value refused here is the scene's, and the line names its file.
+template <class Check>
+void checkWithSceneSettings(const Scene& scene, Check check) {
+  try {
+    check();
+  } catch (const InputError& e) {
+    if (scene.measuredWith.empty()) throw;
+    throw InputError(scene.file, "$.measured_with: " + e.file().string() + ": " + e.problem());
+  }
+}
 
 // Every member set, as `survey` measured: what a layout writes into its scene.
 MeasureSettings measuredWith(const SurveyOptions& survey, std::vector<glm::dvec3> seedsMeters);

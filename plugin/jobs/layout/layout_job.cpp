@@ -277,8 +277,10 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
   SurveyOptions survey = o.survey;
   applyMeasureSettings(measure, layout);
   applyMeasureSettings(measure, survey);
-  layout.check();  // the scene's and the level's settings, too
-  survey.check();
+  checkWithSceneSettings(input, [&] {
+    layout.check();
+    survey.check();
+  });
   // Players enter where the user, the scene or the level says (its spawn points); a level
   // without them (an OBJ room) at its probes; a bare mesh on its largest floor region.
   LayoutJobResult r;

@@ -28,7 +28,7 @@ SurveyJobResult runSurveyJob(const SurveyJobOptions& o, const Progress& progress
   // a level without spawn points (an OBJ room) is entered at its probes.
   SurveyOptions survey = o.survey;
   applyMeasureSettings(resolvedMeasureSettings(o.given, scene, level), survey);
-  survey.check();  // the scene's and the level's settings, too
+  checkWithSceneSettings(scene, [&] { survey.check(); });
 
   SurveyJobResult r;
   r.result = runSurvey(scene, rayCaster, survey, progress);

@@ -21,7 +21,7 @@ ValidateJobResult runValidateJob(const ValidateJobOptions& o) {
   // The floor a player walks starts where the level starts them (as survey's and layout's).
   ValidateOptions validate = o.validate;
   applyMeasureSettings(resolvedMeasureSettings(o.given, scene, level), validate);
-  validate.check();  // the scene's and the level's settings, too
+  checkWithSceneSettings(scene, [&] { validate.check(); });
   ValidateJobResult result;
   result.findings = validateScene(scene, rayCaster, validate);
   result.fails = findingsFail(result.findings);
