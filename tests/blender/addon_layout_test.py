@@ -85,6 +85,10 @@ check(measured == cli_scene.get("measured_with") and measured.get("seed_points")
       "the layout's measured_with kept: %s (CLI %s)" % (measured, cli_scene.get("measured_with")))
 check(scene_io.scene_dict(bpy.context.scene).get("measured_with") == measured,
       "the scene the add-on hands over carries it")
+check(bpy.ops.probeproxy.validate_volumes() == {"FINISHED"}, "Validate after Suggest Probes")
+failing = [f.rule for f in settings.findings if f.severity != "info"]
+check(not failing, "the layout validates as `probeproxy validate` does, by its own tolerance: %s"
+      % failing)
 image = bpy.data.images.get(os.path.basename(settings.layout_map))
 check(image is not None and image.size[0] >= 800, "the error map is loaded for the panel: %s %s"
       % (settings.layout_map, tuple(image.size) if image else None))

@@ -355,9 +355,14 @@ class PROBEPROXY_OT_validate_volumes(_NeedsModule, bpy.types.Operator):
         def work():
             _take_edited_proxies(self, context)
             parts, used = scene_io.level_parts(context, objects)
+            current = scene_io.scene_dict(scene)
+            # A laid-out scene is judged by the tolerance its layout was made for, as
+            # `probeproxy validate` judges it; else by the panel's.
+            options = {}
+            if "tolerance_deg" not in current.get("measured_with", {}):
+                options["tolerance_deg"] = scene_io.f32(settings.tolerance_deg)
             findings = native.module.validate_scene(
-                scene_io.scene_dict(scene), scene_io.scene_anchor(scene), parts,
-                {"tolerance_deg": scene_io.f32(settings.tolerance_deg)})
+                current, scene_io.scene_anchor(scene), parts, options)
             settings.findings.clear()
             for f in findings:
                 item = settings.findings.add()
