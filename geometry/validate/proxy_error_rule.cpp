@@ -17,9 +17,10 @@
 #include "geometry/evaluation/evaluate_shape.h"
 #include "geometry/probe_proxies/build_probe_proxy.h"
 #include "geometry/survey/area_percentile.h"
+#include "geometry/survey/blended_error.h"
 #include "geometry/validate/validation_rules.h"
 
-#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace probeproxy {
@@ -27,7 +28,6 @@ namespace probeproxy {
 namespace {
 
 constexpr double kClearlyLessFloor = 0.02;  // share of the served floor's weight
-constexpr double kMissDeg = 180.0;
 
 struct ServedError {
   double p95Deg = 0.0;     // weighted, a miss at 180 degrees; NaN: no weighted visible sample
@@ -42,7 +42,7 @@ ServedError servedError(const ProxyShape& shape, glm::dvec3 capture,
   for (std::size_t i = 0; i < samples.size(); ++i) {
     if (samples[i].occluded || weights[i] <= 0.0) continue;
     const double e = angularErrorDeg(shape, capture, samples[i]);
-    const double cost = std::isnan(e) ? kMissDeg : e;
+    const double cost = std::isnan(e) ? kMissErrorDeg : e;
     weighted.push_back({cost, weights[i]});
     total += weights[i];
     if (!(e <= toleranceDeg)) over += weights[i];
