@@ -25,6 +25,12 @@ void WalkableFloorOptions::check() const {
   requireInRange<std::size_t>("max_cells", maxCells, 1, std::size_t(1) << 40);
 }
 
+void raiseKneeOverStep(WalkableFloorOptions& o) {
+  if (o.kneeHeightMeters > o.stepHeightMeters) return;
+  o.kneeHeightMeters =
+      std::min(o.stepHeightMeters + 0.15, 0.5 * (o.stepHeightMeters + o.headClearanceMeters));
+}
+
 bool WalkableFloor::reaches(glm::dvec3 p, double heightToleranceMeters) const {
   if (spacingMeters <= 0.0) return false;
   const int column = static_cast<int>(std::floor((p.x - originMeters.x) / spacingMeters));

@@ -31,6 +31,10 @@ struct WalkableFloorOptions {
   void check() const;  // InputError on a value out of range
 };
 
+// The wall test between two cells runs above a step: a taller step than the knee (Nexuiz's
+// 1.06 m) lifts the knee over it, below the head.
+void raiseKneeOverStep(WalkableFloorOptions& options);
+
 struct FloorCell {
   int column = 0, row = 0;        // grid indices (x, y)
   glm::dvec3 pointMeters{0.0};    // on the surface, at the cell's centre column

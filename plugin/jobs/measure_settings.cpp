@@ -1,6 +1,10 @@
 #include "plugin/jobs/measure_settings.h"
 
+#include "core/scene/scene_limits.h"
+
 #include <algorithm>
+#include <cmath>
+#include <string>
 
 namespace probeproxy::jobs {
 
@@ -25,11 +29,7 @@ void applyMeasureSettings(const MeasureSettings& m, WalkableFloorOptions& floor)
   if (m.gridSpacingMeters) floor.gridSpacingMeters = *m.gridSpacingMeters;
   if (m.stepHeightMeters) floor.stepHeightMeters = *m.stepHeightMeters;
   if (m.headClearanceMeters) floor.headClearanceMeters = *m.headClearanceMeters;
-  // The wall test between two cells runs above a step: a taller step (Nexuiz's 1.06 m) lifts it.
-  if (floor.kneeHeightMeters <= floor.stepHeightMeters) {
-    floor.kneeHeightMeters = std::min(floor.stepHeightMeters + 0.15,
-                                      0.5 * (floor.stepHeightMeters + floor.headClearanceMeters));
-  }
+  raiseKneeOverStep(floor);
 }
 
 void applyMeasureSettings(const MeasureSettings& m, SurveyOptions& survey) {
@@ -49,6 +49,15 @@ void applyMeasureSettings(const MeasureSettings& m, ValidateOptions& validate) {
 void applyMeasureSettings(const MeasureSettings& m, LayoutOptions& layout) {
   applyMeasureSettings(playerOf(m), layout.floor);
   if (m.toleranceDeg) layout.toleranceDeg = *m.toleranceDeg;
+}
+
+void checkGivenSeeds(const MeasureSettings& given) {
+  for (const glm::dvec3& s : given.seedPointsMeters) {
+    if (!(std::max({std::abs(s.x), std::abs(s.y), std::abs(s.z)}) <= kMaxSceneMeters)) {
+      throw InputError("--seed", "a seed point is past " + std::to_string(int(kMaxSceneMeters)) +
+                                     " m from the origin (the limit of a scene)");
+    }
+  }
 }
 
 MeasureSettings measuredWith(const SurveyOptions& survey, std::vector<glm::dvec3> seedsMeters) {

@@ -25,6 +25,19 @@ void applyMeasureSettings(const MeasureSettings& m, ValidateOptions& validate);
 // The player only (the layout's coarse floor keeps its own grid) and the tolerance.
 void applyMeasureSettings(const MeasureSettings& m, LayoutOptions& layout);
 
+// Refuses a seed point past the scene's limit, as the scene file's reader does (InputError
+// "--seed").
+void checkGivenSeeds(const MeasureSettings& given);
+
+// `options` as the user's settings make them, checked before the scene is read: a bad option is
+// one line naming it, at once.
+template <class Options>
+void checkAsGiven(Options options, const MeasureSettings& given) {
+  applyMeasureSettings(given, options);
+  options.check();
+  checkGivenSeeds(given);
+}
+
 // Runs `check` on options that now hold the scene's measured_with: the user's own were checked
 // before the scene was read, so a value refused here is the scene's, and the line names its file.
 template <class Check>

@@ -5,7 +5,6 @@
 #include "core/errors/input_error.h"
 #include "core/io/atomic_write.h"
 #include "core/io/output_folder.h"
-#include "core/scene/scene_limits.h"
 #include "geometry/export/runtime_export.h"
 #include "geometry/floor/floor_seed.h"
 #include "geometry/layout/candidate_service.h"
@@ -243,21 +242,11 @@ std::string layoutReportJson(const LayoutJobOptions& o, const LayoutJobResult& r
 }  // namespace
 
 void LayoutJobOptions::check() const {
-  LayoutOptions layoutAsGiven = layout;
-  SurveyOptions surveyAsGiven = survey;
-  applyMeasureSettings(given, layoutAsGiven);
-  applyMeasureSettings(given, surveyAsGiven);
-  layoutAsGiven.check();
-  surveyAsGiven.check();
+  checkAsGiven(layout, given);
+  checkAsGiven(survey, given);
   if (survey.engine != Engine::Generic)
     throw InputError("option engine", "a layout's engines are LayoutJobOptions::engines");
   if (!outFolder.empty()) checkOutputFolder(outFolder);
-  for (const glm::dvec3& s : given.seedPointsMeters) {
-    if (!(std::max({std::abs(s.x), std::abs(s.y), std::abs(s.z)}) <= kMaxSceneMeters)) {
-      throw InputError("--seed", "a seed point is past " + std::to_string(int(kMaxSceneMeters)) +
-                                     " m from the origin (the limit of a scene)");
-    }
-  }
 }
 
 LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress) {

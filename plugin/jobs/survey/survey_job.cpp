@@ -12,9 +12,7 @@
 namespace probeproxy::jobs {
 
 void SurveyJobOptions::check() const {
-  SurveyOptions asGiven = survey;
-  applyMeasureSettings(given, asGiven);
-  asGiven.check();
+  checkAsGiven(survey, given);
   if (!outFolder.empty()) checkOutputFolder(outFolder);
 }
 

@@ -6,11 +6,7 @@
 
 namespace probeproxy::jobs {
 
-void ValidateJobOptions::check() const {
-  ValidateOptions asGiven = validate;
-  applyMeasureSettings(given, asGiven);
-  asGiven.check();
-}
+void ValidateJobOptions::check() const { checkAsGiven(validate, given); }
 
 ValidateJobResult runValidateJob(const ValidateJobOptions& o) {
   o.check();
