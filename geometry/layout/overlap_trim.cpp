@@ -49,13 +49,17 @@ BoxInfluence cutBox(BoxInfluence box, const Cut& cut) {
 }
 
 // The half extent along `axis` that leaves the cell of `p` out of the box, if the band keeps
-// its least width.
+// its least width and the box its capture point (a fill's capture may stand in its band, on the
+// side the trim cuts).
 std::optional<double> halfExtentLeaving(const BoxInfluence& box, int axis, glm::dvec3 p,
-                                        glm::dvec3 cellMeters, double gapMeters) {
+                                        glm::dvec3 cellMeters, double gapMeters,
+                                        glm::dvec3 captureMeters) {
   const double half =
       std::abs(p[axis] - box.centerMeters[axis]) - 0.5 * cellMeters[axis] - kFaceClearanceMeters;
   const double band = half - box.innerHalfExtentsMeters[axis];
   if (band < kLeastTrimmedBandOverGap * gapMeters) return std::nullopt;
+  if (half < std::abs(captureMeters[axis] - box.centerMeters[axis]) + kCaptureMarginMeters)
+    return std::nullopt;
   return half;
 }
 
@@ -210,13 +214,13 @@ std::optional<Cut> nextCut(std::span<const OverlapPoint> points,
       const std::size_t v = static_cast<std::size_t>(index);
       if (v < keptCount || !innerRangeOf(volumes[v])) continue;  // the layout's own boxes only
       const BoxInfluence& box = std::get<BoxInfluence>(volumes[v]);
+      const glm::dvec3 capture = probes[v - keptCount].captureMeters;
       for (int axis : {0, 1}) {
-        if (auto half = halfExtentLeaving(box, axis, p.pointMeters, cellMeters, gapMeters))
+        if (auto half = halfExtentLeaving(box, axis, p.pointMeters, cellMeters, gapMeters, capture))
           asked[{v, axis, 0}].push_back(*half);
         if (!facesMove.count(v - keptCount)) continue;
         for (int side : {-1, 1})
-          if (auto cut = faceCutLeaving(box, axis, side, p.pointMeters, cellMeters,
-                                        probes[v - keptCount].captureMeters))
+          if (auto cut = faceCutLeaving(box, axis, side, p.pointMeters, cellMeters, capture))
             asked[{v, axis, side}].push_back(*cut);
       }
     }

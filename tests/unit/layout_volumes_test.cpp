@@ -386,6 +386,28 @@ TEST(TrimBandsOverOverlapLimit, FiveBandsOverTheGapBesideAStripComeDownToFourAnd
   expectEveryCellCovered(room.floor, room.volumes());
 }
 
+TEST(TrimBandsOverOverlapLimit, ABandHoldingItsProbesCapturePointIsNotTrimmedPastIt) {
+  // A fill's capture point may stand in its band (the nearest clear cell to its middle): each
+  // probe's in turn stands 2 cm inside each side of its box, and no trim leaves it outside.
+  int trims = 0;
+  for (std::size_t p = 0; p < kCrossingByAStrip.size(); ++p) {
+    for (int axis : {0, 1}) {
+      for (int side : {-1, 1}) {
+        RangesInARoom room(kCrossingByAStrip);
+        const BoxInfluence was = room.box(p);
+        room.probes[p].captureMeters[axis] =
+            was.centerMeters[axis] + side * (was.halfExtentsMeters[axis] - 0.02);
+        trimBandsOverOverlapLimit(room.level, room.floor, 1.0, ValidateOptions{}, {}, room.probes);
+        trims += room.box(p).halfExtentsMeters != was.halfExtentsMeters;
+        for (const LayoutProbe& probe : room.probes)
+          EXPECT_TRUE(insideInfluence(probe.influence, probe.captureMeters))
+              << "probe " << p << " axis " << axis << " side " << side;
+      }
+    }
+  }
+  EXPECT_GE(trims, 1) << "the other sides are trimmed still";
+}
+
 TEST(TrimBandsOverOverlapLimit, AFillWhoseBandsCannotBeTrimmedMovesAFaceOffTheCrowd) {
   // Trimmed to keep 1.5 m, bands 1.5 m deep cannot be trimmed: an optional fill's case.
   RangesInARoom trimmedOnly(kCrossingByAStrip), facesMoved(kCrossingByAStrip);
