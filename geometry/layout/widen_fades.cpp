@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <optional>
+#include <set>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -80,17 +81,70 @@ bool insideOneInnerRange(std::span<const InfluenceVolume> near, glm::dvec2 lo, g
   });
 }
 
+// Where a camera can be on each walked cell's scan grid at a capture height, remembered: a
+// spot is scanned again for every widening tried, and the cameras do not move. A slot holds one
+// cell's rows at one height in the order the scan asks for them, for each height a camera over
+// the cell can be at; a scan's tasks each ask for a slot of their own, so they need no lock.
+class CameraSpaceCache {
+ public:
+  using Slot = std::vector<std::vector<char>>;
+  CameraSpaceCache(const LevelRayCaster& level, const WalkableFloor& walked, double headRoom,
+                   std::span<const double> heights)
+      : level_(level), walked_(walked), headRoom_(headRoom), heights_(heights) {
+    firstSlot_.reserve(walked.cells.size() + 1);
+    firstSlot_.push_back(0);
+    for (const FloorCell& c : walked.cells) {
+      const auto [lo, hi] = heightsOver(c);
+      firstSlot_.push_back(firstSlot_.back() + static_cast<std::size_t>(hi - lo));
+    }
+    slots_.resize(firstSlot_.back());
+  }
+  // The slot of a cell at one of the heights a camera over it can be at.
+  Slot& slot(std::size_t cell, double z) {
+    const auto lo = heightsOver(walked_.cells[cell]).first;
+    return slots_[firstSlot_[cell] +
+                  static_cast<std::size_t>(std::lower_bound(lo, heights_.end(), z) - lo)];
+  }
+  ReachableMask mask(Slot& slot) const {
+    return [this, &slot, row = std::size_t{0}](std::span<const glm::dvec3> points,
+                                               std::span<char> reachable) mutable {
+      if (row == slot.size()) {
+        slot.emplace_back(points.size(), 0);
+        markCameraSpace(level_, walked_, headRoom_, points, slot.back());
+      }
+      std::copy(slot[row].begin(), slot[row].end(), reachable.begin());
+      ++row;
+    };
+  }
+
+ private:
+  // The heights a camera over the cell can be at, as scanBlend takes them.
+  using Heights = std::span<const double>::iterator;
+  std::pair<Heights, Heights> heightsOver(const FloorCell& c) const {
+    const double z = c.pointMeters.z;
+    return std::pair(std::lower_bound(heights_.begin(), heights_.end(), z),
+                     std::upper_bound(heights_.begin(), heights_.end(), z + headRoom_));
+  }
+  const LevelRayCaster& level_;
+  const WalkableFloor& walked_;
+  double headRoom_;
+  std::span<const double> heights_;  // sorted, each once
+  std::vector<std::size_t> firstSlot_;
+  std::vector<Slot> slots_;
+};
+
 // The blend where a camera can be over the walked cells that meet the region, at the heights
 // within it: each cell's square on a grid of whole multiples of kScanGridMeters (shared by
 // neighbouring cells, one point past its low sides so every neighbouring pair is compared).
 // Only pops over `popThreshold` are measured: steepestPerCentimeter is the steepest of those, 0
 // when there is none.
-BlendScan scanBlend(const LevelRayCaster& level, const WalkableFloor& walked, double headRoom,
+BlendScan scanBlend(const WalkableFloor& walked, double headRoom,
                     std::span<const InfluenceVolume> volumes, std::span<const double> heights,
-                    const Region& region, double popThreshold) {
+                    const Region& region, double popThreshold, CameraSpaceCache& cameraSpace) {
   struct Task {
     std::size_t cell;
     double z;
+    CameraSpaceCache::Slot* cameras;
   };
   const double halfCell = 0.5 * walked.spacingMeters;
   std::vector<Task> tasks;
@@ -101,7 +155,7 @@ BlendScan scanBlend(const LevelRayCaster& level, const WalkableFloor& walked, do
       continue;
     for (double z : heights)
       if (f.z <= z && z <= f.z + headRoom && region.lo.z <= z && z <= region.hi.z)
-        tasks.push_back({c, z});
+        tasks.push_back({c, z, &cameraSpace.slot(c, z)});
   }
   std::vector<Region> bounds(volumes.size());  // once, not for every cell
   for (std::size_t v = 0; v < volumes.size(); ++v)
@@ -155,11 +209,8 @@ BlendScan scanBlend(const LevelRayCaster& level, const WalkableFloor& walked, do
     for (std::size_t k = 0; k < near.size(); ++k) turn = std::max(turn, largest[k] - least[k]);
     found.mostOverlapping = most;
     if (turn < popThreshold * 100.0 * s) return;
-    const ReachableMask cameras = [&](std::span<const glm::dvec3> points,
-                                      std::span<char> reachable) {
-      markCameraSpace(level, walked, headRoom, points, reachable);
-    };
-    const WeightContinuity c = measureWeightContinuity(near, grid, {}, cameras);
+    const WeightContinuity c =
+        measureWeightContinuity(near, grid, {}, cameraSpace.mask(*tasks[t].cameras));
     const double perCentimeter = c.largestJump / (100.0 * s);
     if (perCentimeter <= popThreshold) return;
     found.pop = {perCentimeter, c.jumpFromMeters, c.jumpToMeters};
@@ -234,8 +285,9 @@ std::size_t widenFadesWhereWeightsJump(const LevelRayCaster& level, const Walkab
 
   const double headRoom = limits.cameraHeadRoomMeters;
   const double target = kShareOfLimit * limits.maxWeightJumpPerCentimeter;
+  CameraSpaceCache cameraSpace(level, walked, headRoom, heights);
   const auto scan = [&](const Region& region, std::span<const double> zs, double threshold) {
-    return scanBlend(level, walked, headRoom, volumes, zs, region, threshold);
+    return scanBlend(walked, headRoom, volumes, zs, region, threshold, cameraSpace);
   };
   Region everywhere;
   influenceBounds(volumes, everywhere.lo, everywhere.hi);
@@ -245,6 +297,11 @@ std::size_t widenFadesWhereWeightsJump(const LevelRayCaster& level, const Walkab
   std::sort(pops.begin(), pops.end(),
             [](const Pop& a, const Pop& b) { return a.order() < b.order(); });
 
+  // A band that pops along its length shows in every cell beside it; once no widening of the
+  // volumes reaching one of its spots helped, the others, with those volumes as they were, are
+  // left as they are (on bleach each was tried again, cell after cell, for minutes).
+  std::vector<int> changes(volumes.size(), 0);
+  std::set<std::vector<std::pair<std::size_t, int>>> triedInVain;
   std::size_t widened = 0;
   for (const Pop& pop : pops) {
     const Region spot = around(pop, walked.spacingMeters);
@@ -252,6 +309,11 @@ std::size_t widenFadesWhereWeightsJump(const LevelRayCaster& level, const Walkab
     for (int round = 0; round < kMostWideningsPerSpot; ++round) {
       const double now = scan(spot, spotHeight, target).steepestPerCentimeter();
       if (now <= target) break;
+      std::vector<std::pair<std::size_t, int>> reaching;  // the layout's volumes, as they are
+      for (std::size_t v = kept.size(); v < volumes.size(); ++v)
+        if (insideInfluence(volumes[v], pop.from) || insideInfluence(volumes[v], pop.to))
+          reaching.emplace_back(v, changes[v]);
+      if (triedInVain.count(reaching)) break;
       // The axis the weight turns along first.
       const glm::dvec3 step = glm::abs(pop.to - pop.from);
       const std::array<int, 2> axes = step.x >= step.y ? std::array{0, 1} : std::array{1, 0};
@@ -301,7 +363,11 @@ std::size_t widenFadesWhereWeightsJump(const LevelRayCaster& level, const Walkab
         }
       }
       if (!chosen) chosen = smoother;
-      if (!chosen) break;
+      if (!chosen) {
+        triedInVain.insert(std::move(reaching));
+        break;
+      }
+      ++changes[chosen->first];
       volumes[chosen->first] = chosen->second;
       probes[chosen->first - kept.size()].influence = chosen->second;
       ++widened;
