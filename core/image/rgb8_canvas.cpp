@@ -53,7 +53,16 @@ constexpr Glyph kGlyphs[] = {
     {'v', {".....", ".....", "#...#", "#...#", "#...#", ".#.#.", "..#.."}},
     {'w', {".....", ".....", "#...#", "#...#", "#.#.#", "#.#.#", ".#.#."}},
     {'y', {".....", ".....", "#...#", "#...#", ".####", "....#", ".###."}},
+    {'z', {".....", ".....", "#####", "...#.", "..#..", ".#...", "#####"}},
+    {'j', {"...#.", ".....", "..##.", "...#.", "...#.", "#..#.", ".##.."}},
+    {'q', {".....", ".....", ".####", "#...#", ".####", "....#", "....#"}},
+    {'_', {".....", ".....", ".....", ".....", ".....", ".....", "#####"}},
+    {':', {".....", ".##..", ".##..", ".....", ".##..", ".##..", "....."}},
+    {'=', {".....", ".....", "#####", ".....", "#####", ".....", "....."}},
 };
+
+// One case only: names (probe_A, Hall) read in lower case rather than with gaps.
+char lowerCase(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; }
 
 const Glyph* findGlyph(char c) {
   for (const Glyph& g : kGlyphs)
@@ -66,7 +75,7 @@ const Glyph* findGlyph(char c) {
 int drawText(Rgb8Canvas& canvas, int col, int row, std::string_view text, int scale, std::uint8_t r,
              std::uint8_t g, std::uint8_t b) {
   for (const char c : text) {
-    if (const Glyph* glyph = findGlyph(c)) {
+    if (const Glyph* glyph = findGlyph(lowerCase(c))) {
       for (int y = 0; y < kGlyphHeight; ++y)
         for (int x = 0; x < kGlyphWidth; ++x)
           if (glyph->rows[y][x] == '#')

@@ -1,7 +1,7 @@
 #pragma once
 // Pictures with legends (the survey's maps, bench's mirror-view comparisons) drawn without a
 // font library: an RGB canvas and a fixed 5x7 bitmap font of the digits, a few signs and the
-// lower-case letters the legends use. Characters it lacks are drawn as blanks.
+// letters, upper case drawn as lower case. Characters it lacks are drawn as blanks.
 
 #include <cstdint>
 #include <string_view>

@@ -1,6 +1,7 @@
 #include "geometry/survey/survey_map.h"
 
 #include "core/blend/weight_picture.h"
+#include "core/image/scale_bar.h"
 #include "core/image/write_png.h"
 #include "geometry/survey/storeys.h"
 
@@ -152,23 +153,6 @@ void drawInfluences(Rgb8Canvas& canvas, const MapFrame& f, std::span<const Probe
   }
 }
 
-// A bar of a round length (1, 2 or 5 times a power of ten) near a fifth of the map's width, in
-// its lower left corner on a white ground, so it reads against any floor.
-void drawScaleBar(Rgb8Canvas& canvas, const MapFrame& f) {
-  const double target = 0.2 * f.width / f.pixelsPerMeter;
-  const double decade = std::pow(10.0, std::floor(std::log10(target)));
-  double meters = decade;
-  for (double multiple : {2.0, 5.0})
-    if (multiple * decade <= target) meters = multiple * decade;
-  const int bar = std::max(1, static_cast<int>(std::lround(meters * f.pixelsPerMeter)));
-  const int x = 12, y = f.height - 40;
-  canvas.fill(x - 6, y - 6, bar + 12, 36, 255, 255, 255);
-  canvas.fill(x, y, bar, 6, 0, 0, 0);
-  canvas.fill(x, y - 4, 2, 10, 0, 0, 0);
-  canvas.fill(x + bar - 2, y - 4, 2, 10, 0, 0, 0);
-  drawText(canvas, x, y + 10, degreeLabel(meters) + " m", 2, 0, 0, 0);
-}
-
 void drawMarker(Rgb8Canvas& canvas, int col, int row) {
   canvas.fill(col - 4, row - 4, 9, 9, 255, 255, 255);
   canvas.fill(col - 2, row - 2, 5, 5, 0, 0, 0);
@@ -255,7 +239,7 @@ Rgb8Canvas renderSurveyMap(const SurveyResult& r, std::span<const Probe> probes,
       drawText(canvas, col + 8, row - 3, p.name, 1, 0, 0, 0);
     }
   }
-  drawScaleBar(canvas, f);
+  drawScaleBar(canvas, f.width, f.height, f.pixelsPerMeter);
   drawLegend(canvas, f.width, storey, storeyCount);
   return canvas;
 }

@@ -3,6 +3,7 @@
 
 #include "core/blend/mix_cubemaps.h"
 #include "core/blend/weight_picture.h"
+#include "core/blend/weight_picture_legend.h"
 
 #include <gtest/gtest.h>
 
@@ -104,6 +105,37 @@ TEST(WeightPicture, EachProbeIsItsColourAndOverlapsAreTheWeightedSum) {
   EXPECT_EQ(pixelAt(-4.99, 0.3), glm::ivec3(255, 0, 0));  // just inside probe 0's outer side
   EXPECT_EQ(probeColour(0), glm::u8vec3(255, 0, 0));
   EXPECT_EQ(probeColour(2), glm::u8vec3(0, 0, 255));
+}
+
+TEST(WeightPicture, TheLegendUnderTheSliceNamesEachProbesColourAndTheScale) {
+  const std::vector<InfluenceVolume> v = {
+      BoxInfluence{{-2, 0, 0}, {3, 1, 1}, {1, 0, 0, 0}, {1.5, 1, 1}},
+      BoxInfluence{{2, 0, 0}, {3, 1, 1}, {1, 0, 0, 0}, {1.5, 1, 1}}};
+  const WeightPicture p = renderWeightPicture(v, 0.0, {}, 400);
+  const std::vector<std::string> names = {"left", "right"};
+  const Rgb8Canvas c = weightPictureWithLegend(p, names, "blend weights");
+  ASSERT_EQ(c.width, p.width);
+  ASSERT_GT(c.height, p.height + 100) << "a title, two rows of keys and a scale bar";
+  const auto pixelAt = [&](int col, int row) {
+    const std::size_t i = (static_cast<std::size_t>(row) * c.width + col) * 3;
+    return glm::ivec3(c.rgb8[i], c.rgb8[i + 1], c.rgb8[i + 2]);
+  };
+  for (int row = 0; row < p.height; ++row)  // the slice as it was
+    for (int col = 0; col < p.width; col += 7)
+      ASSERT_EQ(pixelAt(col, row),
+                glm::ivec3(p.rgb8[(row * p.width + col) * 3], p.rgb8[(row * p.width + col) * 3 + 1],
+                           p.rgb8[(row * p.width + col) * 3 + 2]));
+  // The keys, 12 px in and under a 26 px title, one 220 px column in 400 px: the probes'
+  // swatches first, a 24 px row each.
+  const int keys = p.height + 12 + 26 + 9;
+  EXPECT_EQ(pixelAt(12 + 14, keys), glm::ivec3(255, 0, 0));
+  EXPECT_EQ(pixelAt(12 + 14, keys + 24), glm::ivec3(0, 255, 0));
+  // The scale bar: 2 m at this picture's 36.4 px per metre (a fifth of 400 px is 2.2 m),
+  // black from column 12, its end tick at 12 + 73 - 2.
+  const int bar = c.height - 40 + 2;
+  EXPECT_EQ(pixelAt(12 + 40, bar), glm::ivec3(0, 0, 0));
+  EXPECT_EQ(pixelAt(12 + 73 - 1, bar), glm::ivec3(0, 0, 0));
+  EXPECT_EQ(pixelAt(12 + 73 + 3, bar), glm::ivec3(255, 255, 255));
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 #include "plugin/jobs/blend/blend_job.h"
 
 #include "core/blend/mix_cubemaps.h"
-#include "core/blend/weight_picture.h"
+#include "core/blend/weight_picture_legend.h"
 #include "core/cube/cubemap_io.h"
 #include "core/cube/write_depth_cube.h"
 #include "core/errors/input_error.h"
@@ -125,10 +125,7 @@ BlendJobResult runBlendJob(const BlendJobOptions& o) {
     result.levels = mixed.numLevels();
   }
   if (!o.weightsPng.empty()) {
-    std::vector<glm::dvec3> captures;
-    for (const Probe& p : scene.probes) captures.push_back(p.captureMeters);
-    const WeightPicture picture =
-        renderWeightPicture(volumes, o.atMeters.z, o.blend, 800, captures);
+    const Rgb8Canvas picture = sceneWeightPicture(scene, o.atMeters.z, o.blend);
     writePng(o.weightsPng, picture.width, picture.height, picture.rgb8);
     result.written.push_back(o.weightsPng.string());
   }

@@ -1,6 +1,6 @@
 #include "plugin/jobs/demo/demo_job.h"
 
-#include "core/blend/weight_picture.h"
+#include "core/blend/weight_picture_legend.h"
 #include "core/cube/write_depth_cube.h"
 #include "core/errors/input_error.h"
 #include "core/errors/option_checks.h"
@@ -134,14 +134,7 @@ void runDemoJob(const DemoJobOptions& o, std::ostream& narrative) {
   printFindings(narrative, sceneFile.string(), findings);
 
   // 5. Where each probe contributes: the top-down blend-weight picture at capture height.
-  std::vector<InfluenceVolume> volumes;
-  std::vector<glm::dvec3> captures;
-  for (const Probe& p : scene.probes) {
-    volumes.push_back(p.influence);
-    captures.push_back(p.captureMeters);
-  }
-  const WeightPicture picture =
-      renderWeightPicture(volumes, scene.probes.front().captureMeters.z, {}, 800, captures);
+  const Rgb8Canvas picture = sceneWeightPicture(scene, scene.probes.front().captureMeters.z, {});
   writePng(out / "blend_weights.png", picture.width, picture.height, picture.rgb8);
   narrative << "wrote the blend weights seen from above: " << (out / "blend_weights.png").string()
             << "\n";
