@@ -66,6 +66,25 @@ def label(row):
     return f"{row['probe']}: {row.get('candidate', row['method'])}"
 
 
+def label_front_apart(fig, ax, front):
+    """Each point of the front named beside it; a label that would cover an earlier one moves
+    a line down, then up, then two, until it covers none (front points cluster where cheap
+    methods tie)."""
+    fig.canvas.draw()  # the axes' scales and limits, as the labels will be placed
+    renderer = fig.canvas.get_renderer()
+    offsets = [4] + [4 + sign * 9 * k for k in range(1, 7) for sign in (-1, 1)]
+    placed = []
+    for cost, err, row in front:
+        for i, dy in enumerate(offsets):
+            text = ax.annotate(label(row), (cost, err), textcoords="offset points",
+                               xytext=(5, dy), fontsize=7)
+            box = text.get_window_extent(renderer).expanded(1.02, 1.1)
+            if i == len(offsets) - 1 or not any(box.overlaps(other) for other in placed):
+                break
+            text.remove()
+        placed.append(box)
+
+
 def error_vs_cost(level, rows, out_dir):
     fig, ax = plt.subplots(figsize=(9.5, 5.5))
     probes = sorted({r["probe"] for r in rows})
@@ -85,9 +104,7 @@ def error_vs_cost(level, rows, out_dir):
     if front:
         ax.step([p[0] for p in front], [p[1] for p in front], where="post", color="0.3",
                 linewidth=1.2, linestyle="--", zorder=2, label="Pareto front")
-        for i, (cost, err, row) in enumerate(front):
-            ax.annotate(label(row), (cost, err), textcoords="offset points",
-                        xytext=(5, 4 + 8 * (i % 2)), fontsize=7)
+        label_front_apart(fig, ax, front)
     for p in probes:
         ax.scatter([], [], color=colors[p], marker="o", label=f"probe {p}")
     for m in METHODS:
