@@ -737,6 +737,11 @@ Scene rebasedFor(const Scene& scene, const fs::path& absoluteTarget) {
     if (auto* convex = std::get_if<AuthoredConvexMesh>(&probe.proxy)) {
       convex->meshAsWritten = spellingIn(convex->mesh, convex->meshAsWritten, oldFolder, newFolder);
     }
+    // A cubemap is a pattern (`{face}`), kept as written and read against the scene's folder.
+    if (probe.cubemap && !oldFolder.empty() && fs::path(*probe.cubemap).is_relative()) {
+      const fs::path images = (oldFolder / *probe.cubemap).lexically_normal();
+      probe.cubemap = spellingIn(images, *probe.cubemap, oldFolder, newFolder).string();
+    }
   }
   return rebased;
 }

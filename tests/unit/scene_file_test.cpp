@@ -328,7 +328,8 @@ TEST_F(SceneFileTest, GltfMeshesDefaultToYUpOthersToTheScenes) {
 
 TEST_F(SceneFileTest, RelativePathsResolveAgainstTheSceneFolder) {
   const std::string probe =
-      probeJson({{"proxy", R"({"kind": "convex", "mesh": "proxies/../proxies/a.obj"})"}});
+      probeJson({{"proxy", R"({"kind": "convex", "mesh": "proxies/../proxies/a.obj"})"},
+                 {"cubemap", R"("cubes/a_{face}.exr")"}});
   const fs::path file = write("levels/a/level.scene.json",
                               sceneJson(probe, R"("probeproxy_scene": 1, "up": "Z", "level":
                  ["../meshes/room.glb", "/opt/shared/props.obj"])"));
@@ -353,6 +354,8 @@ TEST_F(SceneFileTest, RelativePathsResolveAgainstTheSceneFolder) {
   const Scene reread = readSceneFile(copy);
   EXPECT_EQ(reread.level[0].path, scene.level[0].path);
   EXPECT_EQ(std::get<AuthoredConvexMesh>(reread.probes[0].proxy).mesh, convex.mesh);
+  EXPECT_EQ(reread.probes[0].cubemap, "../levels/a/cubes/a_{face}.exr")
+      << "the same images, reached from the new folder";
 }
 
 TEST_F(SceneFileTest, FailedWriteLeavesNoFileBehind) {
