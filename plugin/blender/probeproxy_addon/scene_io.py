@@ -262,10 +262,9 @@ def set_probe_from_dict(obj, d, meters_per_unit=1.0):
     s.extra_json = json.dumps(extra)
 
 
-def world_triangles(obj, depsgraph, meters_per_unit=1.0):
-    """The evaluated mesh of `obj` as flat world-space vertices (float64, Blender units times
-    `meters_per_unit`) and triangles."""
-    evaluated = obj.evaluated_get(depsgraph)
+def _append_triangles(evaluated, matrix, meters_per_unit, world, triangles):
+    """Appends an evaluated mesh object's triangles, placed by `matrix`, to `world` (flat
+    vertices) and `triangles` (indices into them)."""
     mesh = evaluated.to_mesh()
     try:
         mesh.calc_loop_triangles()
@@ -273,14 +272,32 @@ def world_triangles(obj, depsgraph, meters_per_unit=1.0):
         mesh.vertices.foreach_get("co", co)
         tris = array.array("i", [0]) * (len(mesh.loop_triangles) * 3)
         mesh.loop_triangles.foreach_get("vertices", tris)
-        m = evaluated.matrix_world
-        world = array.array("d")
+        first = len(world) // 3
         for i in range(0, len(co), 3):
-            p = m @ Vector((co[i], co[i + 1], co[i + 2]))
+            p = matrix @ Vector((co[i], co[i + 1], co[i + 2]))
             world.extend(p if meters_per_unit == 1.0 else [c * meters_per_unit for c in p])
-        return world, tris
+        triangles.extend(tris if first == 0 else array.array("i", (t + first for t in tris)))
     finally:
         evaluated.to_mesh_clear()
+
+
+def world_triangles(obj, depsgraph, meters_per_unit=1.0):
+    """The evaluated mesh of `obj` (or, for a collection instance, of every mesh it instances
+    that renders) as flat world-space vertices (float64, Blender units times
+    `meters_per_unit`) and triangles."""
+    world, triangles = array.array("d"), array.array("i")
+    if is_collection_instance(obj):
+        for instance in depsgraph.object_instances:
+            parent = instance.parent
+            member = instance.object
+            if (instance.is_instance and parent is not None and parent.original == obj
+                    and member.type == "MESH" and renders(member.original)):
+                _append_triangles(member, instance.matrix_world.copy(), meters_per_unit, world,
+                                  triangles)
+    else:
+        evaluated = obj.evaluated_get(depsgraph)
+        _append_triangles(evaluated, evaluated.matrix_world, meters_per_unit, world, triangles)
+    return world, triangles
 
 
 def mesh_fingerprint(obj, probe):
@@ -308,9 +325,25 @@ def fingerprint(obj, depsgraph):
     return h.hexdigest()
 
 
+def renders(obj):
+    """Whether a render shows the object: its own Disable in Renders and its collections'. A
+    mesh hidden from renders (a blocking volume, a helper) is no wall a reflection lands on."""
+    return not obj.hide_render and not any(c.hide_render for c in obj.users_collection)
+
+
+def is_collection_instance(obj):
+    return (obj.type == "EMPTY" and obj.instance_type == "COLLECTION"
+            and obj.instance_collection is not None)
+
+
 def is_level_object(obj):
+    """A mesh, or an instance of a collection (its meshes that render), that the view layer
+    renders and that is no probe or proxy. A collection's own objects may be excluded from the
+    view layer and still render where it is instanced."""
     s = obj.probeproxy
-    return obj.type == "MESH" and not s.is_probe and not s.is_proxy
+    return ((obj.type == "MESH" or is_collection_instance(obj)) and not s.is_probe
+            and not s.is_proxy and renders(obj)
+            and obj.name in bpy.context.view_layer.objects)  # not in an excluded collection
 
 
 def level_parts(context, objects):
