@@ -3,7 +3,8 @@
 #       --addon-dir plugin/blender --module-dir build/plugin/python \
 #       --cli build/plugin/cli/probeproxy --scene build/scenes/l_room/l_room.scene.json --work DIR
 # Each case is compared with the same level authored in metres without parents:
-#   - a centimetre scene (Unit Scale 0.01): Add Probe makes a 2 m volume (200 cm); Import
+#   - a centimetre scene (Unit Scale 0.01): Add Probe makes a 2 m volume (200 cm), and a
+#     refused probe is named by its object, its capture point in centimetres; Import
 #     Scene puts every length in centimetres,
 #     the library gets the same metres, Generate keeps the same proxies with the same figures,
 #     the proxy meshes are the same in metres, Save Scene reads back to the same metres (the
@@ -103,6 +104,18 @@ added = bpy.context.view_layer.objects.active
 check(all(abs(h - 200.0) <= 1e-3 for h in added.probeproxy.half_extents)
       and abs(added.probeproxy.radius - 200.0) <= 1e-3,
       "cm: the new probe's volume is 2 m (200 cm): %r" % (tuple(added.probeproxy.half_extents),))
+# A probe whose capture point is outside its volume: the refusal names the object and says
+# where in the scene's units, not `$.probes[N]` and metres.
+added.probeproxy.influence_offset = (1000.0, 0.0, 0.0)  # 10 m off, in centimetres
+added.location = (50.0, 0.0, 150.0)  # centimetres
+try:
+    bpy.ops.probeproxy.generate_proxies()
+    refusal = ""
+except RuntimeError as e:
+    refusal = str(e)
+check("probe '%s' captures at (50 cm, 0 m, 1.5 m)" % added.name in refusal
+      and "$.probes" not in refusal,
+      "cm: the refusal names the probe, in centimetres: %r" % refusal.strip())
 bpy.data.objects.remove(added)
 cm = scene_io.scene_dict(scene)
 diff = largest_difference(cm, metres)
