@@ -4,6 +4,8 @@
 #include "geometry/probe_proxies/authored_proxy_shape.h"
 #include "geometry/validate/validation_rules.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 
 namespace probeproxy {
@@ -60,32 +62,37 @@ std::vector<ValidationFinding> validateScene(const Scene& scene, const LevelRayC
   const std::vector<FloorCell>& floor = walked.cells;
   std::vector<InfluenceVolume> volumes;
   for (const Probe& probe : scene.probes) volumes.push_back(probe.influence);
-  for (std::size_t index = 0; index < scene.probes.size(); ++index) {
+  // Each probe's rules read only the level and the scene (a probe's proxy build is most of a
+  // validate on a laid-out map): the probes run in parallel, their findings in probe order.
+  std::vector<std::vector<ValidationFinding>> perProbe(scene.probes.size());
+  tbb::parallel_for(std::size_t{0}, scene.probes.size(), [&](std::size_t index) {
     const Probe& probe = scene.probes[index];
+    std::vector<ValidationFinding>& found = perProbe[index];
     // Later rules measure what earlier ones establish: a proxy that is not a closed convex
     // mesh, or that misses its capture point, has no meaningful error yet; a capture point
     // outside its influence volume has no samples. Fix those first, then see the rest.
-    const std::size_t first = findings.size();
-    checkAuthoredMesh(scene, probe, findings);
+    checkAuthoredMesh(scene, probe, found);
     const std::optional<ProxyShape> authored = authoredProxyShape(probe.proxy, scene);
-    if (authored && !hasError(findings, first)) checkCaptureInsideProxy(probe, *authored, findings);
-    checkCaptureInsideInfluence(probe, findings);
-    if (hasError(findings, first)) continue;
-    if (options.measures("capture_outside_level")) checkCaptureInsideLevel(level, probe, findings);
+    if (authored && !hasError(found, 0)) checkCaptureInsideProxy(probe, *authored, found);
+    checkCaptureInsideInfluence(probe, found);
+    if (hasError(found, 0)) return;
+    if (options.measures("capture_outside_level")) checkCaptureInsideLevel(level, probe, found);
     if (authored &&
         (options.measures("proxy_error_over_tolerance") || options.measures("split_probe")))
       checkProxyError(level, probe, volumes, static_cast<int>(index), *authored, floor, options,
-                      findings);
+                      found);
     // Cameras over the floor behind the wall a volume leaks through are outside any proxy of
     // this probe's room: that is the leak, reported once.
     std::vector<ValidationFinding> leak;
     const bool cameras = authored && options.measures("reflected_camera_outside_proxy");
     if (cameras || options.measures("influence_leak"))
       checkInfluenceLeak(level, probe, floor, options, leak);
-    if (options.measures("influence_leak"))
-      findings.insert(findings.end(), leak.begin(), leak.end());
-    if (cameras && leak.empty()) checkReflectedCameras(level, probe, *authored, options, findings);
-  }
+    if (options.measures("influence_leak")) found.insert(found.end(), leak.begin(), leak.end());
+    if (cameras && leak.empty()) checkReflectedCameras(level, probe, *authored, options, found);
+  });
+  for (std::vector<ValidationFinding>& found : perProbe)
+    findings.insert(findings.end(), std::make_move_iterator(found.begin()),
+                    std::make_move_iterator(found.end()));
   if (options.measures("too_many_overlaps")) checkOverlaps(scene, level, walked, options, findings);
   // Overlapping inner ranges make the weights jump where one range ends (both claim 100%):
   // that is one problem, reported once.
