@@ -18,6 +18,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <atomic>
 #include <condition_variable>
 #include <exception>
 #include <mutex>
@@ -71,7 +72,9 @@ using Progress = jobs::Progress;
 
 // Runs `work` on a worker thread with the GIL released and calls `progress(done, total)` on
 // this thread as the work reports it (Blender's progress bar may only be touched from the
-// main thread). Exceptions of either side come out here, after the worker has finished.
+// main thread). Exceptions of either side come out here, after the worker has finished; a
+// `progress` that raises stops the work at its next report (that is how the add-on cancels),
+// and its exception comes out.
 template <typename Result>
 Result runWithProgress(const std::function<Result(const Progress&)>& work,
                        const py::object& progress) {
@@ -82,11 +85,13 @@ Result runWithProgress(const std::function<Result(const Progress&)>& work,
   std::optional<Result> result;
   std::exception_ptr workError;
   std::optional<py::error_already_set> callbackError;
+  std::atomic<bool> stop{false};
   {
     py::gil_scoped_release release;
     std::thread worker([&] {
       try {
         result = work([&](std::size_t done, std::size_t total) {
+          if (stop) throw jobs::JobCancelled();
           const std::lock_guard<std::mutex> lock(mutex);
           pending = {done, total};
           wake.notify_one();
@@ -111,14 +116,15 @@ Result runWithProgress(const std::function<Result(const Progress&)>& work,
           progress(report->first, report->second);
         } catch (py::error_already_set& e) {
           callbackError.emplace(std::move(e));
+          stop = true;
         }
       }
       if (last) break;
     }
     worker.join();
   }
-  if (workError) std::rethrow_exception(workError);
   if (callbackError) throw std::move(*callbackError);
+  if (workError) std::rethrow_exception(workError);
   return std::move(*result);
 }
 
