@@ -11,7 +11,7 @@ from bpy.props import BoolProperty, StringProperty
 from bpy_extras.io_utils import ExportHelper, ImportHelper
 from mathutils import Matrix
 
-from . import native, scene_io
+from . import background_job, native, scene_io
 
 
 def _collection(scene, name):
@@ -107,6 +107,12 @@ def _with_progress(context, work):
         return work(lambda done, total: wm.progress_update(int(1000 * done / max(total, 1))))
     finally:
         wm.progress_end()
+
+
+class _LibraryJob(background_job.ModalJob):
+    """An operator whose library call runs as a job (background_job.py)."""
+    run_guarded = staticmethod(_run)
+    with_progress = staticmethod(_with_progress)
 
 
 def _remove_probe(probe):
@@ -245,14 +251,14 @@ def _build_findings(settings, results):
     return count
 
 
-class PROBEPROXY_OT_generate_proxies(_NeedsModule, bpy.types.Operator):
+class PROBEPROXY_OT_generate_proxies(_NeedsModule, _LibraryJob, bpy.types.Operator):
     """Build every probe's convex proxy from the level (the whole level, or the selected level
     objects when Level is set to Selected) and add it as a mesh in the "Proxies" collection"""
     bl_idname = "probeproxy.generate_proxies"
     bl_label = "Generate Proxies"
     bl_options = {"REGISTER", "UNDO"}
 
-    def execute(self, context):
+    def steps(self, context):
         # A failure must not leave the last success's "Last built from" on show.
         context.scene.probeproxy.level_used = ""
         scene = context.scene
@@ -261,29 +267,26 @@ class PROBEPROXY_OT_generate_proxies(_NeedsModule, bpy.types.Operator):
         objects = _probes_and_level(self, context)
         if objects is None:
             return {"CANCELLED"}
-
-        def work():
-            _take_edited_proxies(self, context)
-            parts, used = scene_io.level_parts(context, objects)
-            results = _with_progress(context, lambda progress: native.module.build_proxies(
-                scene_io.scene_dict(scene), scene_io.scene_anchor(scene), parts,
-                _build_options(settings), progress))
-            by_name = {p.name: p for p in probes}
-            for result in results:
-                _take_build_result(scene, by_name[result["name"]], result)
-            settings.level_used = used
-            warnings = _build_findings(settings, results)
-            if warnings:
-                self.report({"WARNING"}, "built %d proxies from %s; %d finding%s (see Findings)"
-                            % (len(results), used, warnings, "" if warnings == 1 else "s"))
-            else:
-                self.report({"INFO"}, "built %d proxies from %s" % (len(results), used))
-            return {"FINISHED"}
-
-        return _run(self, work)
+        _take_edited_proxies(self, context)
+        parts, used = scene_io.level_parts(context, objects)
+        scene_data, anchor = scene_io.scene_dict(scene), scene_io.scene_anchor(scene)
+        options = _build_options(settings)
+        results = yield lambda progress: native.module.build_proxies(
+            scene_data, anchor, parts, options, progress)
+        by_name = {p.name: p for p in probes}
+        for result in results:
+            _take_build_result(scene, by_name[result["name"]], result)
+        settings.level_used = used
+        warnings = _build_findings(settings, results)
+        if warnings:
+            self.report({"WARNING"}, "built %d proxies from %s; %d finding%s (see Findings)"
+                        % (len(results), used, warnings, "" if warnings == 1 else "s"))
+        else:
+            self.report({"INFO"}, "built %d proxies from %s" % (len(results), used))
+        return {"FINISHED"}
 
 
-class PROBEPROXY_OT_suggest_probes(_NeedsModule, bpy.types.Operator):
+class PROBEPROXY_OT_suggest_probes(_NeedsModule, _LibraryJob, bpy.types.Operator):
     """Lay out probes for the whole level, as `probeproxy layout` does: the fewest that serve
     the walkable floor within the layout tolerance, each with an influence box and its proxy.
     They replace the scene's probes, which seed the floor where the level has no spawn points
@@ -292,7 +295,7 @@ class PROBEPROXY_OT_suggest_probes(_NeedsModule, bpy.types.Operator):
     bl_label = "Suggest Probes"
     bl_options = {"REGISTER", "UNDO"}
 
-    def execute(self, context):
+    def steps(self, context):
         # A failure must not leave the last success's "Last built from" on show.
         context.scene.probeproxy.level_used = ""
         scene = context.scene
@@ -302,51 +305,48 @@ class PROBEPROXY_OT_suggest_probes(_NeedsModule, bpy.types.Operator):
             self.report({"ERROR"}, _no_level_message(context))
             return {"CANCELLED"}
 
-        def work():
-            _take_edited_proxies(self, context)
-            parts, used = scene_io.level_parts(context, objects)
-            anchor = scene_io.scene_anchor(scene)
-            out = os.path.splitext(os.path.splitext(anchor)[0])[0] + "_layout"
-            options = {"tolerance_deg": scene_io.f32(settings.layout_tolerance_deg)}
-            if settings.layout_max_probes:
-                options["max_probes"] = settings.layout_max_probes
-            # A new layout starts from the probes the artist has now, not the last layout's floor.
-            current = scene_io.scene_dict(scene)
-            current.pop("measured_with", None)
-            result = _with_progress(context, lambda progress: native.module.suggest_probes(
-                current, anchor, out, parts, options, progress))
-            for old in scene_io.probes(scene):
-                _remove_probe(old)
-            coll = _collection(scene, "Probes")
-            k = scene_io.meters_per_bu(scene)
-            for order, (d, built) in enumerate(zip(result["scene"]["probes"], result["probes"])):
-                obj = bpy.data.objects.new(d["name"], None)
-                obj.empty_display_type = "PLAIN_AXES"
-                obj.empty_display_size = 0.25
-                coll.objects.link(obj)
-                if isinstance(d["proxy"], dict) and "mesh" in d["proxy"]:
-                    # The layout's proxy files are in `out`; the scene's paths are the anchor's.
-                    d["proxy"]["mesh"] = os.path.relpath(os.path.join(out, d["proxy"]["mesh"]),
-                                                         os.path.dirname(anchor))
-                scene_io.set_probe_from_dict(obj, d, k)
-                obj.probeproxy.order = order
-                _take_build_result(scene, obj, built)
-            settings.measured_with_json = json.dumps(result["scene"].get("measured_with", {}))
-            figures = result["figures"]["survey"]
-            maps = [f for f in result["files"] if f.endswith(".png")]
-            settings.layout_map = maps[0] if maps else ""
-            if maps:
-                bpy.data.images.load(maps[0], check_existing=True).reload()
-            settings.layout_summary = "%d probes: p95 %.1f deg, %.1f%% of the floor over %.3g deg" % (
-                len(result["probes"]), figures["p95_deg"] or 0.0,
-                100 * figures["over_tolerance_share"], settings.layout_tolerance_deg)
-            settings.level_used = used
-            settings.findings.clear()
-            settings.validated = False
-            self.report({"INFO"}, "suggested " + settings.layout_summary + " (files in %s)" % out)
-            return {"FINISHED"}
-
-        return _run(self, work)
+        _take_edited_proxies(self, context)
+        parts, used = scene_io.level_parts(context, objects)
+        anchor = scene_io.scene_anchor(scene)
+        out = os.path.splitext(os.path.splitext(anchor)[0])[0] + "_layout"
+        options = {"tolerance_deg": scene_io.f32(settings.layout_tolerance_deg)}
+        if settings.layout_max_probes:
+            options["max_probes"] = settings.layout_max_probes
+        # A new layout starts from the probes the artist has now, not the last layout's floor.
+        current = scene_io.scene_dict(scene)
+        current.pop("measured_with", None)
+        result = yield lambda progress: native.module.suggest_probes(
+            current, anchor, out, parts, options, progress)
+        for old in scene_io.probes(scene):
+            _remove_probe(old)
+        coll = _collection(scene, "Probes")
+        k = scene_io.meters_per_bu(scene)
+        for order, (d, built) in enumerate(zip(result["scene"]["probes"], result["probes"])):
+            obj = bpy.data.objects.new(d["name"], None)
+            obj.empty_display_type = "PLAIN_AXES"
+            obj.empty_display_size = 0.25
+            coll.objects.link(obj)
+            if isinstance(d["proxy"], dict) and "mesh" in d["proxy"]:
+                # The layout's proxy files are in `out`; the scene's paths are the anchor's.
+                d["proxy"]["mesh"] = os.path.relpath(os.path.join(out, d["proxy"]["mesh"]),
+                                                     os.path.dirname(anchor))
+            scene_io.set_probe_from_dict(obj, d, k)
+            obj.probeproxy.order = order
+            _take_build_result(scene, obj, built)
+        settings.measured_with_json = json.dumps(result["scene"].get("measured_with", {}))
+        figures = result["figures"]["survey"]
+        maps = [f for f in result["files"] if f.endswith(".png")]
+        settings.layout_map = maps[0] if maps else ""
+        if maps:
+            bpy.data.images.load(maps[0], check_existing=True).reload()
+        settings.layout_summary = "%d probes: p95 %.1f deg, %.1f%% of the floor over %.3g deg" % (
+            len(result["probes"]), figures["p95_deg"] or 0.0,
+            100 * figures["over_tolerance_share"], settings.layout_tolerance_deg)
+        settings.level_used = used
+        settings.findings.clear()
+        settings.validated = False
+        self.report({"INFO"}, "suggested " + settings.layout_summary + " (files in %s)" % out)
+        return {"FINISHED"}
 
 
 def findings_summary(severities):
@@ -416,7 +416,7 @@ class PROBEPROXY_OT_validate_volumes(_NeedsModule, bpy.types.Operator):
         return _run(self, work)
 
 
-class PROBEPROXY_OT_export_proxies(_NeedsModule, bpy.types.Operator):
+class PROBEPROXY_OT_export_proxies(_NeedsModule, _LibraryJob, bpy.types.Operator):
     """Write proxies.json and proxies.glb for the game runtime into a folder"""
     bl_idname = "probeproxy.export_proxies"
     bl_label = "Export Proxies"
@@ -425,10 +425,11 @@ class PROBEPROXY_OT_export_proxies(_NeedsModule, bpy.types.Operator):
     directory: StringProperty(name="Folder", subtype="DIR_PATH")
 
     def invoke(self, context, event):
+        self._modal_wanted = True  # once the folder is chosen, as a job with progress and Esc
         context.window_manager.fileselect_add(self)
         return {"RUNNING_MODAL"}
 
-    def execute(self, context):
+    def steps(self, context):
         scene = context.scene
         if not self.directory:
             self.report({"ERROR"}, "no folder: choose the folder to write proxies.json into")
@@ -437,19 +438,16 @@ class PROBEPROXY_OT_export_proxies(_NeedsModule, bpy.types.Operator):
         if objects is None:
             return {"CANCELLED"}
         out = bpy.path.abspath(self.directory)
-
-        def work():
-            _take_edited_proxies(self, context)
-            parts, used = scene_io.level_parts(context, objects)
-            results = _with_progress(context, lambda progress: native.module.export_proxies(
-                scene_io.scene_dict(scene), scene_io.scene_anchor(scene), out, parts,
-                _build_options(scene.probeproxy), progress))
-            scene.probeproxy.level_used = used
-            self.report({"INFO"}, "wrote %d probes to %s (level: %s)" % (
-                len(results), os.path.join(out, "proxies.json"), used))
-            return {"FINISHED"}
-
-        return _run(self, work)
+        _take_edited_proxies(self, context)
+        parts, used = scene_io.level_parts(context, objects)
+        scene_data, anchor = scene_io.scene_dict(scene), scene_io.scene_anchor(scene)
+        options = _build_options(scene.probeproxy)
+        results = yield lambda progress: native.module.export_proxies(
+            scene_data, anchor, out, parts, options, progress)
+        scene.probeproxy.level_used = used
+        self.report({"INFO"}, "wrote %d probes to %s (level: %s)" % (
+            len(results), os.path.join(out, "proxies.json"), used))
+        return {"FINISHED"}
 
 
 def _import_level_mesh(path, up, meters_per_unit, meters_per_bu):
