@@ -7,9 +7,12 @@
 #include "geometry/validate/camera_space.h"
 #include "geometry/validate/validation_rules.h"
 
+#include <tbb/parallel_for.h>
+
 #include <cmath>
 #include <cstdio>
 #include <set>
+#include <vector>
 
 namespace probeproxy {
 
@@ -25,18 +28,25 @@ void checkWeightJumps(const Scene& scene, const LevelRayCaster& level, const Wal
   const ReachableMask cameras = [&](std::span<const glm::dvec3> points, std::span<char> reachable) {
     markCameraSpace(level, walked, options.cameraHeadRoomMeters, points, reachable);
   };
-  WeightContinuity worst;
-  double worstPerCm = 0.0, worstSpacing = 0.0;
-  for (double z : heights) {
-    WeightGrid grid = gridOverVolumes(volumes, z, options.weightGridMeters);
+  // Each height on its own (a laid-out map has dozens), the worst taken in height order.
+  const std::vector<double> zs(heights.begin(), heights.end());
+  std::vector<WeightContinuity> found(zs.size());
+  std::vector<double> spacing(zs.size());
+  tbb::parallel_for(std::size_t{0}, zs.size(), [&](std::size_t h) {
+    WeightGrid grid = gridOverVolumes(volumes, zs[h], options.weightGridMeters);
     const glm::dvec2 size = grid.maxMeters - grid.minMeters;
     const double points = (size.x / grid.spacingMeters + 1) * (size.y / grid.spacingMeters + 1);
     const double budget = static_cast<double>(options.gridPointBudget);
     if (points > budget)
-      grid = gridOverVolumes(volumes, z, options.weightGridMeters * std::sqrt(points / budget));
-    const WeightContinuity c = measureWeightContinuity(volumes, grid, {}, cameras);
-    const double perCm = c.largestJump / (100.0 * grid.spacingMeters);
-    if (perCm > worstPerCm) worstPerCm = perCm, worst = c, worstSpacing = grid.spacingMeters;
+      grid = gridOverVolumes(volumes, zs[h], options.weightGridMeters * std::sqrt(points / budget));
+    found[h] = measureWeightContinuity(volumes, grid, {}, cameras);
+    spacing[h] = grid.spacingMeters;
+  });
+  WeightContinuity worst;
+  double worstPerCm = 0.0, worstSpacing = 0.0;
+  for (std::size_t h = 0; h < zs.size(); ++h) {
+    const double perCm = found[h].largestJump / (100.0 * spacing[h]);
+    if (perCm > worstPerCm) worstPerCm = perCm, worst = found[h], worstSpacing = spacing[h];
   }
   if (worstPerCm <= options.maxWeightJumpPerCentimeter || worst.jumpProbe < 0) return;
   const std::string& name = scene.probes[static_cast<std::size_t>(worst.jumpProbe)].name;
