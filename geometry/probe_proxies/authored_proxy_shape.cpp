@@ -2,22 +2,46 @@
 
 #include "geometry/level/load_level.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <tuple>
 
 namespace probeproxy {
 
 ConvexProxy convexFromMesh(std::vector<glm::dvec3> vertices, std::vector<glm::uvec3> triangles) {
-  ConvexProxy convex;
-  double size = 0.0;
-  for (const glm::dvec3& v : vertices) size = std::max(size, glm::length(v - vertices.front()));
-  const double offsetTolerance = 1e-6 * std::max(size, 1.0);
+  // The planes depend on the triangles as points only, not on how a file orders its vertices
+  // and faces (a mesh read back through Assimp comes in another order, and a plane taken from
+  // another of a face's triangles differs in its last bits): each triangle starts at its least
+  // corner, winding kept, and the triangles are taken in the order of their corners.
+  using Corners = std::array<glm::dvec3, 3>;
+  const auto less = [](const glm::dvec3& a, const glm::dvec3& b) {
+    return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+  };
+  std::vector<Corners> faces;
+  faces.reserve(triangles.size());
+  glm::dvec3 lo(0.0), hi(0.0);
+  if (!vertices.empty()) lo = hi = vertices.front();
+  for (const glm::dvec3& v : vertices) lo = glm::min(lo, v), hi = glm::max(hi, v);
   for (const glm::uvec3& t : triangles) {
-    const glm::dvec3 n = glm::cross(vertices[t.y] - vertices[t.x], vertices[t.z] - vertices[t.x]);
+    Corners c{vertices[t.x], vertices[t.y], vertices[t.z]};
+    const std::size_t first =
+        less(c[1], c[0]) ? (less(c[2], c[1]) ? 2 : 1) : (less(c[2], c[0]) ? 2 : 0);
+    std::rotate(c.begin(), c.begin() + static_cast<std::ptrdiff_t>(first), c.end());
+    faces.push_back(c);
+  }
+  std::sort(faces.begin(), faces.end(), [&](const Corners& a, const Corners& b) {
+    return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end(), less);
+  });
+  ConvexProxy convex;
+  const double offsetTolerance = 1e-6 * std::max(glm::length(hi - lo), 1.0);
+  for (const Corners& c : faces) {
+    const glm::dvec3 n = glm::cross(c[1] - c[0], c[2] - c[0]);
     if (glm::length(n) == 0.0) continue;
-    const ProxyPlane plane{glm::normalize(n), glm::dot(glm::normalize(n), vertices[t.x])};
+    const ProxyPlane plane{glm::normalize(n), glm::dot(glm::normalize(n), c[0])};
     const bool known =
         std::any_of(convex.planes.begin(), convex.planes.end(), [&](const ProxyPlane& p) {
           return glm::dot(p.normal, plane.normal) > 1.0 - 1e-9 &&
