@@ -19,6 +19,10 @@
 // turns steeper than that or than it did, no more volumes meet over a camera than the blend
 // takes or than did, and a grown range keeps its influence out of its probe's sight under
 // bands_in_sight.h's target or where it was.
+//
+// A band that pops along its length shows in every cell beside it: once no widening of the
+// volumes reaching one spot helped, the band's other spots are not tried again until one of
+// those volumes changes. Where a camera can be is measured once per cell and height.
 
 #include "core/scene/influence_volume.h"
 #include "geometry/floor/walkable_floor.h"
