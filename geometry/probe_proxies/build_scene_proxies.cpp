@@ -8,24 +8,16 @@
 
 #include <glm/geometric.hpp>
 
+#include <limits>
 #include <mutex>
 #include <sstream>
 
 namespace probeproxy {
 
-SurfaceNearby nearestSurface(const LevelRayCaster& level, glm::dvec3 point) {
-  SurfaceNearby near;
-  for (int x = -1; x <= 1; ++x) {
-    for (int y = -1; y <= 1; ++y) {
-      for (int z = -1; z <= 1; ++z) {
-        if (x == 0 && y == 0 && z == 0) continue;
-        const glm::vec3 direction = glm::normalize(glm::vec3(x, y, z));
-        const RayHit hit = level.firstHit({point, direction});
-        if (hit.hit() && double(hit.t) < near.distanceMeters) near = {double(hit.t), hit.triangle};
-      }
-    }
-  }
-  return near;
+SurfacePoint nearestSurface(const LevelRayCaster& level, glm::dvec3 point) {
+  const SurfacePoint nearest =
+      level.nearestTriangle(point, std::numeric_limits<double>::infinity());
+  return {nearest.distanceMeters, nearest.triangle};
 }
 
 void checkCapturePoints(const Scene& scene, const LevelRayCaster& level) {
@@ -47,7 +39,7 @@ void checkCapturePoints(const Scene& scene, const LevelRayCaster& level) {
   // Said before any work, with the nearest surface and how far to move.
   for (std::size_t i = 0; i < scene.probes.size(); ++i) {
     const Probe& probe = scene.probes[i];
-    const SurfaceNearby near = nearestSurface(level, probe.captureMeters);
+    const SurfacePoint near = nearestSurface(level, probe.captureMeters);
     if (near.distanceMeters < kMinCaptureClearanceMeters) {
       std::ostringstream problem;
       problem << "$.probes[" << i << "]: probe '" << probe.name << "' captures at ("

@@ -12,14 +12,9 @@
 
 namespace probeproxy {
 
-struct SurfaceNearby {
-  double distanceMeters = 1e300;
-  std::uint32_t triangle = kNoTriangle;
-};
-
-// The nearest surface along the 26 directions to a cube's faces, edges and corners: enough to
-// find a floor, wall or corner a point sits on.
-SurfaceNearby nearestSurface(const LevelRayCaster& level, glm::dvec3 point);
+// The level surface nearest `point`, in any direction: a point lying in a wall's own plane is
+// on that wall, though every ray along the plane misses it.
+SurfacePoint nearestSurface(const LevelRayCaster& level, glm::dvec3 point);
 
 // A capture point closer than this to a level surface is refused (InputError naming the probe,
 // the distance and the triangle): its cubemap would see the level from behind the surface.

@@ -20,6 +20,9 @@ struct LevelRayCaster::Embree {
   // level's bounds, so a level 10 km from the world origin is cast as precisely as one at it.
   glm::dvec3 originMeters{0.0};
   glm::dvec3 boundsMinMeters{0.0}, boundsMaxMeters{0.0};
+  // The geometry's own buffers (Embree's, alive as long as the scene): point queries read them.
+  const float* vertices = nullptr;
+  const unsigned* indices = nullptr;
 };
 
 namespace {
@@ -57,6 +60,60 @@ RayHit fromEmbree(const RTCRayHit& rh) {
   // Embree's Ng is (v0 - v2) x (v1 - v0) = (v1 - v0) x (v2 - v0): counter-clockwise winding.
   hit.geometricNormal = glm::normalize(glm::vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z));
   return hit;
+}
+
+// Real-Time Collision Detection (Ericson 2005), 5.1.5: the triangle's Voronoi regions in turn.
+glm::dvec3 closestPointOnTriangle(glm::dvec3 p, glm::dvec3 a, glm::dvec3 b, glm::dvec3 c) {
+  const glm::dvec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return a;
+  const glm::dvec3 bp = p - b;
+  const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
+  if (d3 >= 0.0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + ab * (d1 / (d1 - d3));
+  const glm::dvec3 cp = p - c;
+  const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
+  if (d6 >= 0.0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + ac * (d2 / (d2 - d6));
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0)
+    return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
+  const double sum = va + vb + vc;
+  // A degenerate triangle (real levels hold them) has no inside: its nearest vertex stands in.
+  if (!(sum > 0.0)) {
+    const double da = glm::dot(ap, ap), db = glm::dot(bp, bp), dc = glm::dot(cp, cp);
+    return da <= db && da <= dc ? a : (db <= dc ? b : c);
+  }
+  return a + ab * (vb / sum) + ac * (vc / sum);
+}
+
+struct PointQueryState {
+  const float* vertices;
+  const unsigned* indices;
+  glm::dvec3 point;  // relative to the level's centre, as the vertices are
+  SurfacePoint nearest;
+};
+
+bool onTriangleInReach(RTCPointQueryFunctionArguments* args) {
+  auto* state = static_cast<PointQueryState*>(args->userPtr);
+  const unsigned* t = state->indices + 3 * std::size_t(args->primID);
+  auto vertex = [&](unsigned i) {
+    const float* v = state->vertices + 3 * std::size_t(i);
+    return glm::dvec3(v[0], v[1], v[2]);
+  };
+  const glm::dvec3 nearest =
+      closestPointOnTriangle(state->point, vertex(t[0]), vertex(t[1]), vertex(t[2]));
+  const double distance = glm::length(nearest - state->point);
+  SurfacePoint& best = state->nearest;
+  if (distance > best.distanceMeters ||
+      (distance == best.distanceMeters && args->primID >= best.triangle))
+    return false;
+  best = {distance, args->primID};
+  if (distance >= args->query->radius) return false;
+  args->query->radius = static_cast<float>(distance);  // nothing farther need be visited
+  return true;
 }
 
 // Embree's stream call takes a batch this size or smaller; TBB hands out whole batches, so the
@@ -97,6 +154,8 @@ LevelRayCaster::LevelRayCaster(const LevelMesh& level) : embree_(std::make_uniqu
   auto* indices = static_cast<unsigned*>(
       rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                               3 * sizeof(unsigned), level.triangles.size()));
+  embree_->vertices = vertices;
+  embree_->indices = indices;
   for (std::size_t i = 0; i < level.triangles.size(); ++i) {
     indices[3 * i + 0] = level.triangles[i].x;
     indices[3 * i + 1] = level.triangles[i].y;
@@ -123,6 +182,21 @@ RayHit LevelRayCaster::firstHit(const Ray& ray) const {
   RTCRayHit rh = toEmbree(ray, embree_->originMeters);
   rtcIntersect1(embree_->scene, &context, &rh);
   return fromEmbree(rh);
+}
+
+SurfacePoint LevelRayCaster::nearestTriangle(glm::dvec3 point, double radiusMeters) const {
+  PointQueryState state{embree_->vertices, embree_->indices, point - embree_->originMeters, {}};
+  if (embree_->indices == nullptr) return state.nearest;
+  RTCPointQuery query{};
+  query.x = static_cast<float>(state.point.x);
+  query.y = static_cast<float>(state.point.y);
+  query.z = static_cast<float>(state.point.z);
+  query.radius = static_cast<float>(std::min(radiusMeters, 1e30));
+  RTCPointQueryContext context;
+  rtcInitPointQueryContext(&context);
+  rtcPointQuery(embree_->scene, &query, &context, onTriangleInReach, &state);
+  if (state.nearest.distanceMeters > radiusMeters) return {};
+  return state.nearest;
 }
 
 void LevelRayCaster::firstHits(std::span<const Ray> rays, std::span<RayHit> hits,

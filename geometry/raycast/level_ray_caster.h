@@ -20,6 +20,11 @@ class LevelRayCaster {
 
   RayHit firstHit(const Ray& ray) const;
 
+  // The level triangle nearest `point` in any direction (Embree's point query, exact to the
+  // float vertices), none (infinite distance) when none lies within `radiusMeters`. Ties go to
+  // the lower triangle index, so the answer is the same every run.
+  SurfacePoint nearestTriangle(glm::dvec3 point, double radiusMeters) const;
+
   // The axis-aligned bounds of the level's vertices, world frame (empty level: both 0).
   glm::dvec3 boundsMinMeters() const;
   glm::dvec3 boundsMaxMeters() const;

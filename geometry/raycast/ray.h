@@ -27,4 +27,9 @@ struct RayHit {
   bool hit() const { return triangle != kNoTriangle; }
 };
 
+struct SurfacePoint {
+  double distanceMeters = std::numeric_limits<double>::infinity();
+  std::uint32_t triangle = kNoTriangle;  // index into LevelMesh::triangles; none: kNoTriangle
+};
+
 }  // namespace probeproxy

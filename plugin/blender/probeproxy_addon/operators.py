@@ -4,13 +4,14 @@
 import json
 import math
 import os
+import tempfile
 
 import bpy
 from bpy.props import BoolProperty, StringProperty
 from bpy_extras.io_utils import ExportHelper, ImportHelper
 from mathutils import Matrix
 
-from . import background_job, native, scene_io
+from . import background_job, eevee_probes, native, scene_io
 from .artist_message import artist_message
 
 
@@ -568,6 +569,77 @@ class PROBEPROXY_OT_save_scene(_NeedsModule, bpy.types.Operator, ExportHelper):
         return _run(self, work)
 
 
+def _take_eevee_presets(operator, scene, export, source):
+    """Makes the Reflection Cubemaps of a proxies.json's EEVEE presets and says how many, and
+    which probes got none (no closed proxy to fit a parallax box to)."""
+    presets = eevee_probes.presets_in_export(export)
+    made = eevee_probes.make_light_probes(scene, presets, scene_io.meters_per_bu(scene))
+    missing = [p["name"] for p in export["probes"] if p["name"] not in presets]
+    text = "%d EEVEE Reflection Cubemap%s from %s (collection \"%s\")" % (
+        len(made), "" if len(made) == 1 else "s", source, eevee_probes.COLLECTION)
+    if missing:
+        operator.report({"WARNING"}, text + "; none for " + ", ".join(missing) +
+                        ": no closed proxy (see proxies.json)")
+    else:
+        operator.report({"INFO"}, text)
+    return {"FINISHED"}
+
+
+class PROBEPROXY_OT_eevee_probes(_NeedsModule, _LibraryJob, bpy.types.Operator):
+    """Turn the scene's probes into EEVEE Reflection Cubemaps that render as probeproxy measured
+    them: the EEVEE preset the export writes for each probe (influence, falloff, custom
+    parallax box), in the "EEVEE Probes" collection, ready to bake"""
+    bl_idname = "probeproxy.eevee_probes"
+    bl_label = "EEVEE Probes"
+    bl_options = {"REGISTER", "UNDO"}
+
+    def steps(self, context):
+        scene = context.scene
+        objects = _probes_and_level(self, context)
+        if objects is None:
+            return {"CANCELLED"}
+        _take_edited_proxies(self, context)
+        parts, used = scene_io.level_parts(context, objects)
+        scene_data, anchor = scene_io.scene_dict(scene), scene_io.scene_anchor(scene)
+        options = _build_options(scene.probeproxy)
+        # The export's own bytes, so that the light probes are exactly what it would write.
+        with tempfile.TemporaryDirectory(prefix="probeproxy-eevee-") as out:
+            yield lambda progress: native.module.export_proxies(
+                scene_data, anchor, out, parts, options, progress)
+            with open(os.path.join(out, "proxies.json")) as f:
+                export = json.load(f)
+        scene.probeproxy.level_used = used
+        return _take_eevee_presets(self, scene, export, "the scene's probes")
+
+
+class PROBEPROXY_OT_eevee_probes_from_file(_NeedsModule, bpy.types.Operator, ImportHelper):
+    """EEVEE Reflection Cubemaps from a proxies.json that `probeproxy build` or `probeproxy
+    layout --engine eevee` wrote"""
+    bl_idname = "probeproxy.eevee_probes_from_file"
+    bl_label = "EEVEE Probes from File"
+    bl_options = {"REGISTER", "UNDO"}
+
+    filename_ext = ".json"
+    filter_glob: StringProperty(default="*.json", options={"HIDDEN"})
+
+    def execute(self, context):
+        def work():
+            path = os.path.abspath(self.filepath)
+            try:
+                with open(path) as f:
+                    export = json.load(f)
+            except OSError as e:
+                raise native.module.InputError("%s: cannot open: %s" % (path, e.strerror))
+            except ValueError as e:
+                raise native.module.InputError("%s: not JSON: %s" % (path, e))
+            if not isinstance(export, dict) or "probeproxy_runtime" not in export:
+                raise native.module.InputError(
+                    "%s: not a probeproxy proxies.json (no \"probeproxy_runtime\")" % path)
+            return _take_eevee_presets(self, context.scene, export, os.path.basename(path))
+
+        return _run(self, work)
+
+
 class PROBEPROXY_OT_add_probe(bpy.types.Operator):
     """Add a reflection probe at the 3D cursor"""
     bl_idname = "probeproxy.add_probe"
@@ -601,8 +673,9 @@ class PROBEPROXY_OT_add_probe(bpy.types.Operator):
 
 classes = (PROBEPROXY_OT_generate_proxies, PROBEPROXY_OT_validate_volumes,
            PROBEPROXY_OT_suggest_probes,
-           PROBEPROXY_OT_export_proxies, PROBEPROXY_OT_import_scene, PROBEPROXY_OT_save_scene,
-           PROBEPROXY_OT_add_probe)
+           PROBEPROXY_OT_export_proxies, PROBEPROXY_OT_eevee_probes,
+           PROBEPROXY_OT_eevee_probes_from_file, PROBEPROXY_OT_import_scene,
+           PROBEPROXY_OT_save_scene, PROBEPROXY_OT_add_probe)
 
 
 register, unregister = bpy.utils.register_classes_factory(classes)

@@ -1,0 +1,87 @@
+# Blender's own Reflection Cubemap light probes from the EEVEE presets a build or a layout
+# exports (proxies.json's "eevee_reflection_cubemap", docs/engines.md), and back: what an artist
+# bakes and renders in EEVEE is what probeproxy measured for it.
+#
+# The preset is in Blender's frame (Z up, metres) and names Blender's own properties: the
+# object's location (the capture point, also the centre of both volumes), rotation and scale
+# (the influence box's half-extents or the ellipsoid's radii), the light probe's influence type
+# and distance, falloff, and a custom parallax box, a uniformly scaled copy of the influence.
+
+import bpy
+from mathutils import Quaternion, Vector
+
+PRESET = "eevee_reflection_cubemap"
+COLLECTION = "EEVEE Probes"
+SUFFIX = "_eevee"
+# What a preset sets on the light probe data, beside the object's transform.
+DATA_FIELDS = ("influence_type", "influence_distance", "falloff", "use_custom_parallax",
+               "parallax_type", "parallax_distance")
+
+
+def _collection(scene):
+    coll = bpy.data.collections.get(COLLECTION)
+    if coll is None:
+        coll = bpy.data.collections.new(COLLECTION)
+    if coll.name not in scene.collection.children:
+        scene.collection.children.link(coll)
+    return coll
+
+
+def presets_in_export(export):
+    """{probe name: EEVEE preset} of a proxies.json's probes that have one (a probe whose kept
+    proxy is open or flat has none: the file says why)."""
+    return {p["name"]: p["engines"][PRESET] for p in export["probes"]
+            if p.get("engines", {}).get(PRESET) is not None}
+
+
+def make_light_probe(scene, name, preset, meters_per_bu):
+    """The Reflection Cubemap `name` + "_eevee" set from `preset` (made, or updated in place so
+    that a bake the artist started keeps its object). Lengths become Blender units."""
+    obj = bpy.data.objects.get(name + SUFFIX)
+    if obj is None or obj.type != "LIGHT_PROBE" or obj.data.type != "CUBEMAP":
+        data = bpy.data.lightprobes.new(name + SUFFIX, "CUBE")  # type "CUBEMAP" once made
+        obj = bpy.data.objects.new(name + SUFFIX, data)
+        _collection(scene).objects.link(obj)
+    obj["probeproxy_probe"] = name
+    obj.location = Vector(preset["location"]) / meters_per_bu
+    x, y, z, w = preset["rotation_xyzw"]
+    obj.rotation_mode = "QUATERNION"
+    obj.rotation_quaternion = Quaternion((w, x, y, z))
+    obj.scale = Vector(preset["scale"]) / meters_per_bu
+    for field in DATA_FIELDS:
+        setattr(obj.data, field, preset[field])
+    return obj
+
+
+def preset_of_light_probe(obj, meters_per_bu):
+    """The preset a Reflection Cubemap object stands for, in the export's terms (metres)."""
+    q = obj.matrix_world.to_quaternion()
+    preset = {"location": [c * meters_per_bu for c in obj.matrix_world.translation],
+              "rotation_xyzw": [q.x, q.y, q.z, q.w],
+              "scale": [c * meters_per_bu for c in obj.matrix_world.to_scale()]}
+    for field in DATA_FIELDS:
+        preset[field] = getattr(obj.data, field)
+    return preset
+
+
+def light_probes(scene):
+    """The scene's Reflection Cubemaps made from probes: {probe name: object}."""
+    return {o["probeproxy_probe"]: o for o in scene.objects
+            if o.type == "LIGHT_PROBE" and "probeproxy_probe" in o}
+
+
+def make_light_probes(scene, presets, meters_per_bu, progress=None):
+    """One Reflection Cubemap per preset; the ones made from probes no longer in `presets`
+    go. Returns the objects, in the presets' order."""
+    made = []
+    for i, (name, preset) in enumerate(presets.items()):
+        made.append(make_light_probe(scene, name, preset, meters_per_bu))
+        if progress is not None:
+            progress(i + 1, len(presets))
+    for name, obj in light_probes(scene).items():
+        if name not in presets:
+            data = obj.data
+            bpy.data.objects.remove(obj)
+            if data.users == 0:
+                bpy.data.lightprobes.remove(data)
+    return made
