@@ -92,6 +92,34 @@ TEST(RayCaster, DegenerateTrianglesAreIgnoredNotFatal) {
   EXPECT_FLOAT_EQ(caster.firstHit({{2, 2, 1}, {0, 0, -1}}).t, 1.0f);
 }
 
+TEST(RayCaster, NearestTriangleIsExactInEveryDirection) {
+  const LevelMesh room = boxRoom({0, 0, 0}, {4, 4, 3});
+  const LevelRayCaster caster(room);
+  // The nearer of two walls.
+  EXPECT_NEAR(caster.nearestTriangle({1.0, 2.0, 1.5}, 10.0).distanceMeters, 1.0, 1e-6);
+  EXPECT_NEAR(caster.nearestTriangle({0.3, 2.0, 0.4}, 10.0).distanceMeters, 0.3, 1e-6);
+  // A point in a wall's own plane is on it, though every ray along the plane misses the wall.
+  const SurfacePoint inPlane = caster.nearestTriangle({0.0, 2.0, 1.5}, 10.0);
+  EXPECT_NEAR(inPlane.distanceMeters, 0.0, 1e-6);
+  EXPECT_LT(inPlane.triangle, room.triangles.size());
+  // Outside the room, past a corner: the corner's distance.
+  EXPECT_NEAR(caster.nearestTriangle({-1.0, -1.0, -1.0}, 10.0).distanceMeters, std::sqrt(3.0),
+              1e-6);
+  // Nothing within the radius.
+  const SurfacePoint none = caster.nearestTriangle({2.0, 2.0, 1.5}, 0.5);
+  EXPECT_EQ(none.triangle, kNoTriangle);
+  EXPECT_TRUE(std::isinf(none.distanceMeters));
+  // Degenerate triangles (a point, a line) are measured as their nearest corner, not fatal.
+  LevelMesh withDegenerate = room;
+  withDegenerate.positionsMeters.push_back({2, 2, 1.0f});
+  const auto v = static_cast<std::uint32_t>(withDegenerate.positionsMeters.size() - 1);
+  withDegenerate.triangles.push_back({v, v, v});
+  const LevelRayCaster degenerate(withDegenerate);
+  const SurfacePoint point = degenerate.nearestTriangle({2.0, 2.0, 1.25}, 10.0);
+  EXPECT_NEAR(point.distanceMeters, 0.25, 1e-6);
+  EXPECT_EQ(point.triangle, withDegenerate.triangles.size() - 1);
+}
+
 std::vector<Ray> randomRays(int count) {
   std::mt19937 rng(42);
   std::normal_distribution<float> gauss;
