@@ -5,11 +5,17 @@
 // with the GIL released; progress is reported on the calling thread.
 
 #include "core/errors/input_error.h"
+#include "geometry/engines/engine.h"
+#include "geometry/engines/engine_reflection.h"
+#include "geometry/evaluation/reflection_samples.h"
 #include "geometry/export/runtime_export.h"
+#include "geometry/raycast/level_ray_caster.h"
 #include "geometry/scene/scene_file.h"
+#include "geometry/survey/survey_map.h"
 #include "plugin/jobs/build/build_job.h"
 #include "plugin/jobs/build/build_report.h"
 #include "plugin/jobs/layout/layout_job.h"
+#include "plugin/jobs/scene_input.h"
 #include "plugin/jobs/validate/validate_job.h"
 #include "plugin/jobs/validate/validate_report.h"
 #include "plugin/python/python_level.h"
@@ -17,6 +23,7 @@
 
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+#include <tbb/parallel_for.h>
 
 #include <atomic>
 #include <condition_variable>
@@ -136,6 +143,86 @@ jobs::SceneInput sceneInput(const py::dict& sceneData, const std::string& anchor
   input.scene = sceneFromDict(sceneData, anchor, std::nullopt, std::nullopt);
   if (!level.is_none()) input.level = levelSources(*input.scene, level.cast<py::list>());
   return input;
+}
+
+using Triple = std::array<double, 3>;
+
+glm::dvec3 vec(const Triple& t) { return {t[0], t[1], t[2]}; }
+
+py::object tripleOrNone(const std::optional<glm::dvec3>& v) {
+  if (!v) return py::none();
+  return py::make_tuple(v->x, v->y, v->z);
+}
+
+// For each shaded point (with its normal and the camera that sees it): where its mirror
+// reflection really lands and what `engine` shows there from the presets of `proxies`
+// (geometry/engines/engine_reflection.h), on the level of the scene file `scene`.
+py::dict engineReflections(const std::string& scenePath, const std::string& proxiesPath,
+                           const std::string& engineName, const std::vector<Triple>& points,
+                           const std::vector<Triple>& normals, const std::vector<Triple>& eyes) {
+  if (normals.size() != points.size() || eyes.size() != points.size())
+    throw py::value_error("points, normals and eyes must have the same length");
+  const Engine engine = parseEngine(engineName, "engine");
+  std::vector<ReflectionSample> samples(points.size());
+  std::vector<EngineReflection> shown(points.size());
+  {
+    py::gil_scoped_release release;
+    jobs::SceneInput input;
+    input.file = scenePath;
+    const Scene scene = jobs::readSceneInput(input);
+    const LevelRayCaster level(jobs::loadSceneLevel(scene, input));
+    const EngineModel model = engineModel(engine, readRuntimeExport(proxiesPath), BlendOptions{});
+    tbb::parallel_for(std::size_t(0), points.size(), [&](std::size_t i) {
+      ReflectionSample& s = samples[i];
+      s.xMeters = vec(points[i]);
+      s.normal = glm::normalize(vec(normals[i]));
+      s.eyeMeters = vec(eyes[i]);
+      s.reflected = glm::reflect(glm::normalize(s.xMeters - s.eyeMeters), s.normal);
+      traceTrueHit(level, s);
+      shown[i] = engineReflection(level, model, s);
+    });
+  }
+  py::list trueHits, shownPoints, surfaceWeights, skyWeights, fallbackWeights;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    trueHits.append(samples[i].hitsSky ? py::none() : tripleOrNone(samples[i].trueHitMeters));
+    shownPoints.append(tripleOrNone(shown[i].shownMeters));
+    surfaceWeights.append(shown[i].surfaceWeight);
+    skyWeights.append(shown[i].skyWeight);
+    fallbackWeights.append(shown[i].fallbackWeight);
+  }
+  py::dict out;
+  out["true_hit"] = trueHits;
+  out["shown"] = shownPoints;
+  out["surface_weight"] = surfaceWeights;
+  out["sky_weight"] = skyWeights;
+  out["fallback_weight"] = fallbackWeights;
+  return out;
+}
+
+// The level of the scene file `scene` as the library loads it: (vertices, triangles), world
+// metres, Z up: what a renderer must draw for its pixels to be compared with the library's rays.
+py::tuple levelTriangles(const std::string& scenePath) {
+  jobs::SceneInput input;
+  input.file = scenePath;
+  LevelMesh level;
+  {
+    py::gil_scoped_release release;
+    level = jobs::loadSceneLevel(jobs::readSceneInput(input), input);
+  }
+  py::list vertices, triangles;
+  for (const glm::vec3& v : level.positionsMeters) vertices.append(py::make_tuple(v.x, v.y, v.z));
+  for (const glm::uvec3& t : level.triangles) triangles.append(py::make_tuple(t.x, t.y, t.z));
+  return py::make_tuple(vertices, triangles);
+}
+
+// The survey maps' degree scale: [(lower edge in degrees, (r, g, b)), ...], bins in order.
+py::list surveyScale() {
+  py::list bins;
+  for (double edge : kSurveyScaleDeg) {
+    const auto rgb = surveyErrorColour(edge);
+    bins.append(py::make_tuple(edge, py::make_tuple(rgb[0], rgb[1], rgb[2])));
+  }
+  return bins;
 }
 
 // The build job on the dict's scene; writes proxies.json + proxies.glb into `outFolder` when
@@ -302,6 +389,18 @@ PYBIND11_MODULE(probeproxy_py, m) {
       "build_proxies, then writes out_dir/proxies.json and proxies.glb (the bytes `probeproxy "
       "build SCENE --out DIR` writes for the same scene, level and options).");
 
+  m.def("engine_reflections", &engineReflections, py::arg("scene"), py::arg("proxies"),
+        py::arg("engine"), py::arg("points"), py::arg("normals"), py::arg("eyes"),
+        "For each shaded point (world metres, Z up), with its surface normal and the eye that "
+        "sees it: {true_hit: where its mirror reflection lands (None: the sky), shown: the "
+        "weight-averaged level point the engine's probe lookups show there (None: none meets a "
+        "surface), surface_weight, sky_weight, fallback_weight}, each a list. scene: a scene "
+        "file (its level); proxies: a proxies.json; engine: as `survey --engine`.");
+  m.def("level_triangles", &levelTriangles, py::arg("scene"),
+        "The level of a scene file as the library loads it: (vertices, triangles), world "
+        "metres, Z up.");
+  m.def("survey_scale", &surveyScale,
+        "The survey maps' colour scale: [(lower edge in degrees, (r, g, b)), ...].");
   m.def("suggest_probes", &suggestProbes, py::arg("scene"), py::arg("anchor"), py::arg("out_dir"),
         py::arg("level") = py::none(), py::arg("options") = py::dict(),
         py::arg("progress") = py::none(),

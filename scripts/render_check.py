@@ -1,0 +1,259 @@
+#!/usr/bin/python3
+"""Proof in pixels: a real renderer shows the exported probes, and the walls say where each
+reflection came from.
+
+Every level surface is coloured by its own world position and the floor is a mirror, so each
+mirror pixel shows the level point the engine's probe lookup returned (a blend of them where
+probes blend). The true reflection is the camera ray mirrored at the floor, cast to the level.
+The angle between the two, seen from the floor point, is the renderer's error at that pixel,
+in degrees, with no shading model and no reference image. Beside it, the error the engine
+model (`survey --engine E`'s rules, geometry/engines/) predicts for that pixel: the same angle
+to the weight-averaged point the model's lookups show (probeproxy_py.engine_reflections).
+
+For a level (a scene file) and its cameras (scripts/render_check/cameras/<level>.json), three
+sets of probes, each laid out by the CLI for the engine:
+  layout   `probeproxy layout SCENE --engine E`
+  grid     `probeproxy layout SCENE --baseline grid --max-probes N --engine E` (N: layout's)
+  default  the layout's probes as the engine does by default (EEVEE: the parallax box is the
+           influence box: parallax_distance 1)
+Writes OUT/<set>/ (the CLI's files, the frames), OUT/render_check.json (figures per set) and
+OUT/render_check_<camera>.png (rendered and predicted error per set, survey's colour scale).
+
+  /usr/bin/python3 scripts/render_check.py build/plugin/cli/probeproxy \\
+      build/scenes/l_room/l_room.scene.json scripts/render_check/cameras/l_room.json \\
+      --module-dir build/plugin/python --out out/render_check/l_room
+Exit 0 when it ran (the figures say how the engines did), 2 on bad input.
+"""
+import argparse
+import json
+import math
+import os
+import subprocess
+import sys
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+MIRROR_NORMAL_Z = 0.7  # as eevee_frames.py
+MIN_WEIGHT = 0.02      # a mirror pixel with less probe weight shows the (black) sky: uncovered
+OVER_DEG = 5.0
+
+
+def run_json(*command):
+    done = subprocess.run(command, capture_output=True, text=True)
+    if done.returncode != 0:
+        sys.exit("render_check: %s failed: %s" % (" ".join(command[:3]), done.stderr.strip()))
+    return json.loads(done.stdout)
+
+
+def lay_out(args, out):
+    """The three probe sets' proxies.json (and whether EEVEE takes the custom parallax)."""
+    layout = run_json(args.probeproxy, "layout", args.scene, "--engine", args.engine,
+                      "--out", os.path.join(out, "layout"), "--json")
+    run_json(args.probeproxy, "layout", args.scene, "--engine", args.engine, "--baseline", "grid",
+             "--max-probes", str(layout["probes"]), "--out", os.path.join(out, "grid"), "--json")
+    proxies = {k: os.path.join(out, k, "proxies.json") for k in ("layout", "grid")}
+    # EEVEE's default, no custom parallax, is a parallax box equal to the influence: the
+    # layout's presets with parallax_distance 1, for the renderer and the model alike.
+    with open(proxies["layout"]) as f:
+        export = json.load(f)
+    for probe in export["probes"]:
+        preset = probe.get("engines", {}).get("eevee_reflection_cubemap")
+        if preset is not None:
+            preset["parallax_distance"] = 1.0
+    os.makedirs(os.path.join(out, "default"), exist_ok=True)
+    proxies["default"] = os.path.join(out, "default", "proxies.json")
+    with open(proxies["default"], "w") as f:
+        json.dump(export, f, indent=1)
+    return [(k, proxies[k]) for k in ("layout", "grid", "default")]
+
+
+def render_eevee(args, proxies, out):
+    command = ["xvfb-run", "-a", args.blender, "-b", "--factory-startup", "--python-exit-code",
+               "1", "--python", os.path.join(HERE, "render_check", "eevee_frames.py"), "--",
+               "--module-dir", args.module_dir, "--addon-dir", os.path.join(ROOT, "plugin",
+                                                                           "blender"),
+               "--scene", args.scene, "--proxies", proxies, "--cameras", args.cameras,
+               "--out", out]
+    done = subprocess.run(command, capture_output=True, text=True)
+    if done.returncode != 0:
+        sys.exit("render_check: EEVEE failed:\n" + done.stdout[-2000:] + done.stderr[-2000:])
+    with open(os.path.join(out, "frames.json")) as f:
+        return json.load(f)
+
+
+def decode_axis(frames, meta, axis, white):
+    """One axis of the shown point: the coarse code, refined by each period's phase while
+    the blend kept it (a blend of points far apart on that period averages its phase away)."""
+    lo, size = meta["lo"][axis], meta["size"][axis]
+    estimate = None
+    for code_axis, period in meta["codes"]:
+        if code_axis != axis:
+            continue
+        code = frames["code_%d_%g" % (axis, period)] / white[..., None]
+        if estimate is None:
+            estimate = lo + (code[..., 0] - 1.0) * size
+        c, s = 2.0 * code[..., 1] - 1.0, 2.0 * code[..., 2] - 1.0
+        kept = np.hypot(c, s) > 0.5
+        fine = np.arctan2(s, c) / (2.0 * math.pi) * period
+        refined = fine + period * np.round((estimate - fine) / period)
+        estimate = np.where(kept, refined, estimate)
+    return estimate
+
+
+def angle_deg(a, b):
+    cos = np.sum(a * b, axis=-1) / np.maximum(
+        np.linalg.norm(a, axis=-1) * np.linalg.norm(b, axis=-1), 1e-12)
+    return np.degrees(np.arccos(np.clip(cos, -1.0, 1.0)))
+
+
+def camera_pixels(module, args, proxies, meta, camera, frames):
+    """Per mirror pixel: rendered and predicted error (nan where uncovered), weights."""
+    white = frames["white"][..., 0]
+    normal = frames["normal"] * 2.0 - 1.0
+    mirror = normal[..., 2] > MIRROR_NORMAL_Z
+    x = frames["position"] + np.array(meta["lo"])
+    safe = np.where(white > 1e-6, white, 1.0)
+    shown = np.stack([decode_axis(frames, meta, a, safe) for a in range(3)], axis=-1)
+    points, normals = x[mirror], normal[mirror]
+    eye = np.array(camera["eye"])
+    model = module.engine_reflections(args.scene, proxies, args.engine,
+                                      [tuple(p) for p in points], [tuple(n) for n in normals],
+                                      [tuple(eye)] * len(points))
+    true_hit = np.array([h if h is not None else (np.nan,) * 3 for h in model["true_hit"]])
+    predicted = np.array([s if s is not None else (np.nan,) * 3 for s in model["shown"]])
+    rendered_error = angle_deg(shown[mirror] - points, true_hit - points)
+    predicted_error = angle_deg(predicted - points, true_hit - points)
+    rendered_covered = white[mirror] > MIN_WEIGHT
+    predicted_weight = np.array(model["surface_weight"])
+    rendered_error[~rendered_covered] = np.nan
+    predicted_error[predicted_weight <= MIN_WEIGHT] = np.nan
+    sky = np.isnan(true_hit[:, 0])
+    rendered_error[sky] = np.nan
+    predicted_error[sky] = np.nan
+    return {"mirror": mirror, "rendered": rendered_error, "predicted": predicted_error,
+            "white": white[mirror], "predicted_weight": predicted_weight}
+
+
+def figures(errors):
+    valid = errors[~np.isnan(errors)]
+    if valid.size == 0:
+        return {"median_deg": None, "p95_deg": None, "over_5_share": None}
+    return {"median_deg": float(np.median(valid)), "p95_deg": float(np.percentile(valid, 95)),
+            "over_5_share": float(np.mean(valid > OVER_DEG))}
+
+
+def set_figures(pixels):
+    rendered = np.concatenate([p["rendered"] for p in pixels])
+    predicted = np.concatenate([p["predicted"] for p in pixels])
+    both = ~np.isnan(rendered) & ~np.isnan(predicted)
+    white = np.concatenate([p["white"] for p in pixels])
+    weight = np.concatenate([p["predicted_weight"] for p in pixels])
+    r, p = figures(rendered), figures(predicted)
+    return {"mirror_pixels": int(rendered.size),
+            "rendered": r | {"uncovered_share": float(np.mean(np.isnan(rendered)))},
+            "predicted": p | {"uncovered_share": float(np.mean(np.isnan(predicted)))},
+            "median_abs_difference_deg": float(np.median(np.abs(rendered[both] - predicted[both])))
+            if both.any() else None,
+            "over_5_share_difference": (r["over_5_share"] - p["over_5_share"])
+            if r["over_5_share"] is not None and p["over_5_share"] is not None else None,
+            "median_weight_difference": float(np.median(np.abs(white - weight)))}
+
+
+def picture(module, path, camera, rows, width, height):
+    """Per set: rendered error | predicted error, survey's colour scale, with a legend."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.colors import BoundaryNorm, ListedColormap
+    scale = module.survey_scale()
+    edges = [e for e, _ in scale] + [180.0]
+    cmap = ListedColormap([tuple(c / 255.0 for c in rgb) for _, rgb in scale])
+    cmap.set_bad((0.12, 0.12, 0.12))
+    norm = BoundaryNorm(edges, cmap.N)
+    fig, axes = plt.subplots(len(rows), 2, figsize=(12, 3.6 * len(rows) + 0.8), squeeze=False)
+    for row, (name, pixels, fig_r, fig_p) in enumerate(rows):
+        for col, (kind, figs) in enumerate((("rendered", fig_r), ("predicted", fig_p))):
+            image = np.full((height, width), np.nan)
+            image[pixels["mirror"]] = pixels[kind]
+            ax = axes[row][col]
+            ax.imshow(np.ma.masked_invalid(image), cmap=cmap, norm=norm,
+                      interpolation="nearest")
+            over = figs["over_5_share"]
+            ax.set_title("%s, %s by %s: median %s deg, %s over 5 deg" % (
+                name, kind, "EEVEE" if kind == "rendered" else "the model",
+                "-" if figs["median_deg"] is None else "%.2f" % figs["median_deg"],
+                "-" if over is None else "%.0f%%" % (100 * over)), fontsize=9)
+            ax.set_xticks([]), ax.set_yticks([])
+    bar = fig.colorbar(plt.cm.ScalarMappable(norm=norm, cmap=cmap), ax=axes, orientation=
+                       "horizontal", fraction=0.04, pad=0.03, ticks=edges[:-1])
+    bar.set_label("reflection error at the mirror pixel, degrees (dark grey: not a mirror, "
+                  "or no probe: the sky)")
+    fig.suptitle("camera %s: eye %s, looking at %s" % (camera["name"], camera["eye"],
+                                                       camera["target"]))
+    fig.savefig(path, dpi=100)
+    plt.close(fig)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("probeproxy")
+    parser.add_argument("scene")
+    parser.add_argument("cameras")
+    parser.add_argument("--module-dir", required=True, help="where probeproxy_py is built")
+    parser.add_argument("--engine", choices=("eevee",), default="eevee")
+    parser.add_argument("--blender", default="blender")
+    parser.add_argument("--out", required=True)
+    args = parser.parse_args()
+    for path in (args.scene, args.cameras):
+        if not os.path.isfile(path):
+            print("render_check: %s: no such file" % path, file=sys.stderr)
+            return 2
+    args.scene, args.cameras = os.path.abspath(args.scene), os.path.abspath(args.cameras)
+    args.module_dir = os.path.abspath(args.module_dir)
+    sys.path.insert(0, args.module_dir)
+    import probeproxy_py as module
+    out = os.path.abspath(args.out)
+    os.makedirs(out, exist_ok=True)
+    with open(args.cameras) as f:
+        cameras = json.load(f)["cameras"]
+    report = {"scene": args.scene, "engine": args.engine, "sets": {}}
+    rows = {c["name"]: [] for c in cameras}
+    for name, proxies in lay_out(args, out):
+        meta = render_eevee(args, proxies, os.path.join(out, name, "frames"))
+        pixels = []
+        for camera in cameras:
+            frames = dict(np.load(os.path.join(out, name, "frames", camera["name"] + ".npz")))
+            p = camera_pixels(module, args, proxies, meta, camera, frames)
+            pixels.append(p)
+            rows[camera["name"]].append((name, p, figures(p["rendered"]),
+                                         figures(p["predicted"])))
+        report["sets"][name] = set_figures(pixels) | {
+            "proxies": os.path.relpath(proxies, out),
+            "probes": len(meta["probes"]), "render_seconds": meta["seconds"]}
+    for camera in cameras:
+        picture(module, os.path.join(out, "render_check_%s.png" % camera["name"]), camera,
+                rows[camera["name"]], meta["width"], meta["height"])
+    with open(os.path.join(out, "render_check.json"), "w") as f:
+        json.dump(report, f, indent=1)
+    for name, s in report["sets"].items():
+        r, p = s["rendered"], s["predicted"]
+        print("%-8s rendered: median %s p95 %s over 5 %s uncovered %.0f%% | predicted: over 5 %s "
+              "uncovered %.0f%% | median |diff| %s deg" % (
+                  name, fmt(r["median_deg"]), fmt(r["p95_deg"]), pct(r["over_5_share"]),
+                  100 * r["uncovered_share"], pct(p["over_5_share"]), 100 * p["uncovered_share"],
+                  fmt(s["median_abs_difference_deg"])))
+    return 0
+
+
+def fmt(v):
+    return "-" if v is None else "%.2f" % v
+
+
+def pct(v):
+    return "-" if v is None else "%.1f%%" % (100 * v)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
