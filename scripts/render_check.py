@@ -22,7 +22,8 @@ OUT/render_check_<camera>.png (rendered and predicted error per set, survey's co
   /usr/bin/python3 scripts/render_check.py build/plugin/cli/probeproxy \\
       build/scenes/l_room/l_room.scene.json scripts/render_check/cameras/l_room.json \\
       --module-dir build/plugin/python --out out/render_check/l_room
-Exit 0 when it ran (the figures say how the engines did), 2 on bad input.
+Exit 0 when it ran (the figures say how the engines did), 1 with --require-agreement when the
+model and the renderer disagree, 2 on bad input.
 """
 import argparse
 import json
@@ -38,6 +39,8 @@ ROOT = os.path.dirname(HERE)
 MIRROR_NORMAL_Z = 0.7  # as eevee_frames.py
 MIN_WEIGHT = 0.02      # a mirror pixel with less probe weight shows the (black) sky: uncovered
 OVER_DEG = 5.0
+AGREE_DEG = 1.0     # the model against the pixels: median |rendered - predicted| per pixel
+AGREE_SHARE = 0.05  # and the shares of mirror pixels over 5 deg
 
 
 def run_json(*command):
@@ -113,6 +116,10 @@ def camera_pixels(module, args, proxies, meta, camera, frames):
     white = frames["white"][..., 0]
     normal = frames["normal"] * 2.0 - 1.0
     mirror = normal[..., 2] > MIRROR_NORMAL_Z
+    if not mirror.any():
+        print("render_check: %s: camera %s sees no floor (no surface facing up): move it" % (
+            args.cameras, camera["name"]), file=sys.stderr)
+        sys.exit(2)
     x = frames["position"] + np.array(meta["lo"])
     safe = np.where(white > 1e-6, white, 1.0)
     shown = np.stack([decode_axis(frames, meta, a, safe) for a in range(3)], axis=-1)
@@ -205,6 +212,10 @@ def main():
     parser.add_argument("--engine", choices=("eevee",), default="eevee")
     parser.add_argument("--blender", default="blender")
     parser.add_argument("--out", required=True)
+    parser.add_argument("--require-agreement", action="store_true",
+                        help="exit 1 unless, for every set, the median absolute difference "
+                        "between rendered and predicted per-pixel error is under %g deg and the "
+                        "shares over 5 deg are within %g points" % (AGREE_DEG, 100 * AGREE_SHARE))
     args = parser.parse_args()
     for path in (args.scene, args.cameras):
         if not os.path.isfile(path):
@@ -244,7 +255,19 @@ def main():
                   name, fmt(r["median_deg"]), fmt(r["p95_deg"]), pct(r["over_5_share"]),
                   100 * r["uncovered_share"], pct(p["over_5_share"]), 100 * p["uncovered_share"],
                   fmt(s["median_abs_difference_deg"])))
+    if args.require_agreement:
+        disagree = [name for name, s in report["sets"].items() if not agrees(s)]
+        if disagree:
+            print("render_check: the model and %s disagree on %s (over %g deg median, or %g "
+                  "points of the share over 5 deg)" % (args.engine, ", ".join(disagree),
+                                                       AGREE_DEG, 100 * AGREE_SHARE))
+            return 1
     return 0
+
+
+def agrees(s):
+    d, share = s["median_abs_difference_deg"], s["over_5_share_difference"]
+    return d is not None and d < AGREE_DEG and share is not None and abs(share) <= AGREE_SHARE
 
 
 def fmt(v):

@@ -41,10 +41,14 @@ double attenuation(const EeveeReflectionCubemap& e, glm::dvec3 x) {
   return std::min({axes.x, axes.y, axes.z});
 }
 
-// mat4_to_scale of the inverse influence matrix: |diag(1 / scale) R^T (1, 1, 1) / sqrt(3)|.
+// mat4_to_scale of the inverse influence matrix: |diag(1 / scale) R^T (1, 1, 1) / sqrt(3)|, in
+// float as Blender holds the object's scale and sorts: two probes whose scales differ by less
+// than a float (a layout's storeys, 3e-8 m apart) tie, and keep the order Blender gathered them
+// in, the scene's. Blender's own float matrix inversion can still part such a tie by one unit
+// in the last place (scripts/render_check.py found one on u_corridors' grid).
 double inverseScale(const EeveeReflectionCubemap& e) {
-  const glm::dvec3 u = glm::conjugate(e.rotation) * glm::dvec3(1.0 / std::sqrt(3.0));
-  return glm::length(u / e.scale);
+  const glm::vec3 u = glm::conjugate(glm::quat(e.rotation)) * glm::vec3(1.0f / std::sqrt(3.0f));
+  return glm::length(u / glm::vec3(e.scale));
 }
 
 }  // namespace
