@@ -151,6 +151,17 @@ def figures(errors):
             "over_5_share": float(np.mean(valid > OVER_DEG))}
 
 
+def level_survey(out, name):
+    """The layout's own level-wide figures for the engine (survey's floor and cameras, the
+    angle seen from the capture point): beside the pixels, not the same measure."""
+    path = os.path.join(out, name, "layout.json")
+    if not os.path.isfile(path):
+        return None
+    with open(path) as f:
+        survey = json.load(f)["survey"]
+    return {k: survey[k] for k in ("p95_deg", "over_tolerance_share", "uncovered_share")}
+
+
 def set_figures(pixels):
     rendered = np.concatenate([p["rendered"] for p in pixels])
     predicted = np.concatenate([p["predicted"] for p in pixels])
@@ -241,7 +252,7 @@ def main():
             rows[camera["name"]].append((name, p, figures(p["rendered"]),
                                          figures(p["predicted"])))
         report["sets"][name] = set_figures(pixels) | {
-            "proxies": os.path.relpath(proxies, out),
+            "proxies": os.path.relpath(proxies, out), "survey": level_survey(out, name),
             "probes": len(meta["probes"]), "render_seconds": meta["seconds"]}
     for camera in cameras:
         picture(module, os.path.join(out, "render_check_%s.png" % camera["name"]), camera,
