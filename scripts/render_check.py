@@ -31,14 +31,20 @@ import math
 import os
 import subprocess
 import sys
+import time
 
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 MIRROR_NORMAL_Z = 0.7  # as eevee_frames.py
+WIDTH, HEIGHT = 320, 180  # as eevee_frames.py's default
 MIN_WEIGHT = 0.02      # a mirror pixel with less probe weight shows the (black) sky: uncovered
 OVER_DEG = 5.0
+# Each renderer: the proxies.json preset its probes are made from, and what its default is.
+PRESETS = {"eevee": "eevee_reflection_cubemap", "godot3": "godot_reflection_probe"}
+DEFAULTS = {"eevee": ("parallax_distance", 1.0),   # no custom parallax: parallax = influence
+            "godot3": ("box_projection", False)}   # a ReflectionProbe's box projection is off
 AGREE_DEG = 1.0     # the model against the pixels: median |rendered - predicted| per pixel
 AGREE_SHARE = 0.05  # and the shares of mirror pixels over 5 deg
 
@@ -50,26 +56,50 @@ def run_json(*command):
     return json.loads(done.stdout)
 
 
-def lay_out(args, out):
-    """The three probe sets' proxies.json (and whether EEVEE takes the custom parallax)."""
+def lay_out(args, out, region):
+    """The three probe sets' proxies.json, as rendered: within `region` when the cameras
+    file gives one."""
     layout = run_json(args.probeproxy, "layout", args.scene, "--engine", args.engine,
                       "--out", os.path.join(out, "layout"), "--json")
     run_json(args.probeproxy, "layout", args.scene, "--engine", args.engine, "--baseline", "grid",
              "--max-probes", str(layout["probes"]), "--out", os.path.join(out, "grid"), "--json")
-    proxies = {k: os.path.join(out, k, "proxies.json") for k in ("layout", "grid")}
-    # EEVEE's default, no custom parallax, is a parallax box equal to the influence: the
-    # layout's presets with parallax_distance 1, for the renderer and the model alike.
-    with open(proxies["layout"]) as f:
-        export = json.load(f)
-    for probe in export["probes"]:
-        preset = probe.get("engines", {}).get("eevee_reflection_cubemap")
+    exports = {}
+    for name in ("layout", "grid"):
+        with open(os.path.join(out, name, "proxies.json")) as f:
+            exports[name] = json.load(f)
+    # The engine's default on the layout's probes, for the renderer and the model alike.
+    exports["default"] = json.loads(json.dumps(exports["layout"]))
+    field, value = DEFAULTS[args.engine]
+    for probe in exports["default"]["probes"]:
+        preset = probe.get("engines", {}).get(PRESETS[args.engine])
         if preset is not None:
-            preset["parallax_distance"] = 1.0
-    os.makedirs(os.path.join(out, "default"), exist_ok=True)
-    proxies["default"] = os.path.join(out, "default", "proxies.json")
-    with open(proxies["default"], "w") as f:
-        json.dump(export, f, indent=1)
-    return [(k, proxies[k]) for k in ("layout", "grid", "default")]
+            preset[field] = value
+    sets = []
+    for name, export in exports.items():
+        if region is not None:
+            export["probes"] = [p for p in export["probes"]
+                                if reaches(p.get("engines", {}).get(PRESETS[args.engine]),
+                                           region)]
+        path = os.path.join(out, name, "rendered.proxies.json")
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        with open(path, "w") as f:
+            json.dump(export, f, indent=1)
+        sets.append((name, path))
+    return sets
+
+
+def reaches(preset, region):
+    """Whether a probe's preset (its bounding sphere) meets the region's box: a map's region is
+    rendered with those probes only, for the renderer and the model alike."""
+    if preset is None:
+        return False
+    if "location" in preset:  # EEVEE: world axes, the box centred on the location
+        centre, radius = np.array(preset["location"]), np.linalg.norm(preset["scale"])
+    else:  # Godot: its axes, world (x, y, z) = Godot (x, -z, y)
+        x, y, z = preset["origin"]
+        centre, radius = np.array([x, -z, y]), 0.5 * np.linalg.norm(preset["size"])
+    nearest = np.clip(centre, region["lo"], region["hi"])
+    return float(np.linalg.norm(nearest - centre)) <= radius
 
 
 def render_eevee(args, proxies, out):
@@ -84,6 +114,66 @@ def render_eevee(args, proxies, out):
         sys.exit("render_check: EEVEE failed:\n" + done.stdout[-2000:] + done.stderr[-2000:])
     with open(os.path.join(out, "frames.json")) as f:
         return json.load(f)
+
+
+def godot_point(p):
+    """World (Z up) to Godot's axes (Y up)."""
+    return [p[0], p[2], -p[1]]
+
+
+def render_godot(args, proxies, out):
+    """Godot 3 (godot3-runner, GLES3 under xvfb-run): one process per pass, frames as EEVEE's."""
+    sys.path.insert(0, os.path.join(HERE, "render_check"))
+    import position_code
+    import probeproxy_py
+    os.makedirs(out, exist_ok=True)
+    with open(os.path.join(out, "project.godot"), "w") as f:
+        f.write('config_version=4\n[application]\nconfig/name="render_check"\n'
+                '[rendering]\nquality/driver/driver_name="GLES3"\n')
+    vertices, triangles = probeproxy_py.level_triangles(args.scene)
+    lo, size = position_code.bounds(vertices)
+    with open(args.cameras) as f:
+        cameras = json.load(f)["cameras"]
+    spec = {"level": {"vertices": [godot_point(v) for v in vertices], "triangles": triangles},
+            "cameras": [{"name": c["name"], "eye": godot_point(c["eye"]),
+                         "target": godot_point(c["target"]), "hfov_deg": c.get("fov_deg", 70.0)}
+                        for c in cameras],
+            "width": WIDTH, "height": HEIGHT, "far": float(np.linalg.norm(size)), "lo": lo,
+            "size": size, "importer": os.path.join(ROOT, "plugin", "engines", "godot"),
+            "out": out}
+    coded = position_code.codes(size)
+    passes = [("position", {}), ("normal", {}), ("white", {"proxies": proxies})] + [
+        ("code_%d_%g" % (a, p), {"proxies": proxies, "code": {"axis": a, "period": p}})
+        for a, p in coded]
+    seconds = {}
+    for name, extra in passes:
+        start = time.time()
+        path = os.path.join(out, name + ".spec.json")
+        with open(path, "w") as f:
+            json.dump(spec | extra | {"name": name, "pass": name.split("_")[0]}, f)
+        done = subprocess.run(["xvfb-run", "-a", "godot3-runner", "--path", out, "-s",
+                               os.path.join(HERE, "render_check", "godot_frames.gd"), "--args",
+                               path], capture_output=True, text=True)
+        raw = [os.path.join(out, "%s_%s.rgbah" % (c["name"], name)) for c in cameras]
+        if done.returncode != 0 or not all(os.path.isfile(r) for r in raw):
+            sys.exit("render_check: Godot failed:\n" + done.stdout[-2000:] + done.stderr[-2000:])
+        seconds[name] = time.time() - start
+    for c in cameras:
+        frames = {}
+        for name, _ in passes:
+            path = os.path.join(out, "%s_%s.rgbah" % (c["name"], name))
+            with open(path, "rb") as f:
+                rgba = np.frombuffer(f.read(), dtype=np.float16).reshape(HEIGHT, WIDTH, 4)
+            frames[name] = rgba[..., :3].astype(np.float32)
+            os.remove(path)
+        np.savez_compressed(os.path.join(out, c["name"] + ".npz"), **frames)
+    meta = {"renderer": "godot3", "lo": lo, "size": size, "codes": coded, "cameras": cameras,
+            "width": WIDTH, "height": HEIGHT, "seconds": seconds,
+            "probes": [p["name"] for p in json.load(open(proxies))["probes"]
+                       if p.get("engines", {}).get(PRESETS["godot3"]) is not None]}
+    with open(os.path.join(out, "frames.json"), "w") as f:
+        json.dump(meta, f, indent=1)
+    return meta
 
 
 def decode_axis(frames, meta, axis, white):
@@ -179,7 +269,10 @@ def set_figures(pixels):
             "median_weight_difference": float(np.median(np.abs(white - weight)))}
 
 
-def picture(module, path, camera, rows, width, height):
+RENDERER_NAMES = {"eevee": "EEVEE", "godot3": "Godot 3"}
+
+
+def picture(module, path, camera, rows, width, height, engine):
     """Per set: rendered error | predicted error, survey's colour scale, with a legend."""
     import matplotlib
     matplotlib.use("Agg")
@@ -200,7 +293,7 @@ def picture(module, path, camera, rows, width, height):
                       interpolation="nearest")
             over = figs["over_5_share"]
             ax.set_title("%s, %s by %s: median %s deg, %s over 5 deg" % (
-                name, kind, "EEVEE" if kind == "rendered" else "the model",
+                name, kind, RENDERER_NAMES[engine] if kind == "rendered" else "the model",
                 "-" if figs["median_deg"] is None else "%.2f" % figs["median_deg"],
                 "-" if over is None else "%.0f%%" % (100 * over)), fontsize=9)
             ax.set_xticks([]), ax.set_yticks([])
@@ -220,7 +313,8 @@ def main():
     parser.add_argument("scene")
     parser.add_argument("cameras")
     parser.add_argument("--module-dir", required=True, help="where probeproxy_py is built")
-    parser.add_argument("--engine", choices=("eevee",), default="eevee")
+    parser.add_argument("--engine", choices=sorted(PRESETS), default="eevee",
+                        help="the renderer: eevee (Blender) or godot3 (godot3-runner)")
     parser.add_argument("--blender", default="blender")
     parser.add_argument("--out", required=True)
     parser.add_argument("--require-agreement", action="store_true",
@@ -239,11 +333,13 @@ def main():
     out = os.path.abspath(args.out)
     os.makedirs(out, exist_ok=True)
     with open(args.cameras) as f:
-        cameras = json.load(f)["cameras"]
+        camera_file = json.load(f)
+    cameras, region = camera_file["cameras"], camera_file.get("region")
     report = {"scene": args.scene, "engine": args.engine, "sets": {}}
     rows = {c["name"]: [] for c in cameras}
-    for name, proxies in lay_out(args, out):
-        meta = render_eevee(args, proxies, os.path.join(out, name, "frames"))
+    for name, proxies in lay_out(args, out, region):
+        render = render_eevee if args.engine == "eevee" else render_godot
+        meta = render(args, proxies, os.path.join(out, name, "frames"))
         pixels = []
         for camera in cameras:
             frames = dict(np.load(os.path.join(out, name, "frames", camera["name"] + ".npz")))
@@ -256,7 +352,7 @@ def main():
             "probes": len(meta["probes"]), "render_seconds": meta["seconds"]}
     for camera in cameras:
         picture(module, os.path.join(out, "render_check_%s.png" % camera["name"]), camera,
-                rows[camera["name"]], meta["width"], meta["height"])
+                rows[camera["name"]], meta["width"], meta["height"], args.engine)
     with open(os.path.join(out, "render_check.json"), "w") as f:
         json.dump(report, f, indent=1)
     for name, s in report["sets"].items():

@@ -29,21 +29,13 @@ parser.add_argument("--width", type=int, default=320)
 parser.add_argument("--height", type=int, default=180)
 parser.add_argument("--cubemap", default="512")
 args = parser.parse_args(argv)
-sys.path[:0] = [os.path.abspath(args.module_dir), os.path.abspath(args.addon_dir)]
+sys.path[:0] = [os.path.abspath(args.module_dir), os.path.abspath(args.addon_dir),
+                os.path.dirname(os.path.abspath(__file__))]
+import position_code  # noqa: E402
 import probeproxy_py  # noqa: E402
 from probeproxy_addon import eevee_probes  # noqa: E402
 
 MIRROR_NORMAL_Z = 0.7  # surfaces facing up at least this much are mirrors (as survey's floor)
-FINEST_PERIOD_M = 1.0
-
-
-def codes(lo, size):
-    """(axis, period) of the coded bakes: per axis, periods from FINEST_PERIOD_M up by 8x until
-    the coarse code (1/64 of the level's size per step, R11G11B10F) resolves the largest."""
-    periods = [FINEST_PERIOD_M]
-    while max(size) / 64.0 > periods[-1] / 4.0:
-        periods.append(periods[-1] * 8.0)
-    return [(axis, p) for axis in range(3) for p in reversed(periods)]
 
 
 def emission_material(name, colour_of):
@@ -60,47 +52,36 @@ def emission_material(name, colour_of):
     return mat
 
 
-def math_node(nodes, links, op, a, b=None, c=None):
-    node = nodes.new("ShaderNodeMath")
-    node.operation = op
-    for i, v in enumerate((a, b, c)):
-        if v is None:
-            continue
-        if isinstance(v, (int, float)):
-            node.inputs[i].default_value = v
+def node(nodes, links, kind, operation, *inputs):
+    """A shader node of `kind` (its `operation` when given) fed `inputs` in order: sockets
+    linked, constants set; returns its first output."""
+    made = nodes.new(kind)
+    if operation is not None:
+        made.operation = operation
+    for i, value in enumerate(inputs):
+        if hasattr(value, "is_linked"):  # a socket
+            links.new(value, made.inputs[i])
         else:
-            links.new(v, node.inputs[i])
-    return node.outputs[0]
+            made.inputs[i].default_value = value
+    return made.outputs[0]
+
+
+def math_node(nodes, links, op, *inputs):
+    return node(nodes, links, "ShaderNodeMath", op, *inputs)
+
+
+def vector_math(nodes, links, op, *inputs):
+    return node(nodes, links, "ShaderNodeVectorMath", op, *inputs)
 
 
 def combine(nodes, links, r, g, b):
-    node = nodes.new("ShaderNodeCombineXYZ")
-    for i, v in enumerate((r, g, b)):
-        if isinstance(v, (int, float)):
-            node.inputs[i].default_value = v
-        else:
-            links.new(v, node.inputs[i])
-    return node.outputs[0]
+    return node(nodes, links, "ShaderNodeCombineXYZ", None, r, g, b)
 
 
 def axis_of(nodes, links, vector, axis):
     node = nodes.new("ShaderNodeSeparateXYZ")
     links.new(vector, node.inputs[0])
     return node.outputs[axis]
-
-
-def vector_math(nodes, links, op, a, b, c=None):
-    """op(a, b[, c]) of vector sockets or constant triples."""
-    node = nodes.new("ShaderNodeVectorMath")
-    node.operation = op
-    for i, v in enumerate((a, b, c)):
-        if v is None:
-            continue
-        if isinstance(v, (tuple, list)):
-            node.inputs[i].default_value = v
-        else:
-            links.new(v, node.inputs[i])
-    return node.outputs[0]
 
 
 def code_colour(axis, period, lo, size):
@@ -195,8 +176,7 @@ def main():
     mesh.update()
     level = bpy.data.objects.new("level", mesh)
     scene.collection.objects.link(level)
-    lo = np.min(np.array(vertices), axis=0) - 1.0
-    size = np.max(np.array(vertices), axis=0) + 1.0 - lo
+    lo, size = position_code.bounds(vertices)
 
     with open(args.proxies) as f:
         presets = eevee_probes.presets_in_export(json.load(f))
@@ -241,15 +221,15 @@ def main():
     shoot("normal", emission_material("normal", lambda n, l, g: vector_math(
         n, l, "MULTIPLY_ADD", g.outputs["Normal"], (0.5, 0.5, 0.5), (0.5, 0.5, 0.5))), False)
     shoot("white", emission_material("white", lambda n, l, g: combine(n, l, 1.0, 1.0, 1.0)), True)
-    coded = codes(lo, size)
+    coded = position_code.codes(size)
     for axis, period in coded:
         key = "code_%d_%g" % (axis, period)
         shoot(key, emission_material(key, code_colour(axis, period, lo, size)), True)
     for k, c in enumerate(cameras):
         np.savez_compressed(os.path.join(args.out, c["name"] + ".npz"), **frames[k])
     with open(os.path.join(args.out, "frames.json"), "w") as f:
-        json.dump({"renderer": "eevee", "lo": lo.tolist(),
-                   "size": size.tolist(), "codes": coded, "cameras": cameras,
+        json.dump({"renderer": "eevee", "lo": lo,
+                   "size": size, "codes": coded, "cameras": cameras,
                    "width": args.width, "height": args.height, "cubemap": args.cubemap,
                    "probes": sorted(presets), "seconds": timings}, f, indent=1)
 

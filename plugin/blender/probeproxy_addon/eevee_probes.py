@@ -10,21 +10,14 @@
 import bpy
 from mathutils import Quaternion, Vector
 
+from . import scene_io
+
 PRESET = "eevee_reflection_cubemap"
 COLLECTION = "EEVEE Probes"
 SUFFIX = "_eevee"
 # What a preset sets on the light probe data, beside the object's transform.
 DATA_FIELDS = ("influence_type", "influence_distance", "falloff", "use_custom_parallax",
                "parallax_type", "parallax_distance")
-
-
-def _collection(scene):
-    coll = bpy.data.collections.get(COLLECTION)
-    if coll is None:
-        coll = bpy.data.collections.new(COLLECTION)
-    if coll.name not in scene.collection.children:
-        scene.collection.children.link(coll)
-    return coll
 
 
 def presets_in_export(export):
@@ -41,7 +34,7 @@ def make_light_probe(scene, name, preset, meters_per_bu):
     if obj is None or obj.type != "LIGHT_PROBE" or obj.data.type != "CUBEMAP":
         data = bpy.data.lightprobes.new(name + SUFFIX, "CUBE")  # type "CUBEMAP" once made
         obj = bpy.data.objects.new(name + SUFFIX, data)
-        _collection(scene).objects.link(obj)
+        scene_io.collection(scene, COLLECTION).objects.link(obj)
     obj["probeproxy_probe"] = name
     obj.location = Vector(preset["location"]) / meters_per_bu
     x, y, z, w = preset["rotation_xyzw"]

@@ -15,13 +15,10 @@ from . import background_job, eevee_probes, native, scene_io
 from .artist_message import artist_message
 
 
-def _collection(scene, name):
-    coll = bpy.data.collections.get(name)
-    if coll is None:
-        coll = bpy.data.collections.new(name)
-    if coll.name not in scene.collection.children:
-        scene.collection.children.link(coll)
-    return coll
+class _OpensJson(ImportHelper):
+    """An operator that reads a .json file chosen in the file browser."""
+    filename_ext = ".json"
+    filter_glob: StringProperty(default="*.json", options={"HIDDEN"})
 
 
 class _NeedsModule:
@@ -118,7 +115,7 @@ def _proxy_mesh_object(scene, probe, result):
     obj.display_type = "WIRE"
     obj.show_in_front = True
     obj["probeproxy_probe"] = probe.name
-    _collection(scene, "Proxies").objects.link(obj)
+    scene_io.collection(scene, "Proxies").objects.link(obj)
     probe.probeproxy.proxy_object = obj
     probe.probeproxy.proxy_fingerprint = scene_io.mesh_fingerprint(obj, probe)
     return obj
@@ -288,7 +285,7 @@ class PROBEPROXY_OT_suggest_probes(_NeedsModule, _LibraryJob, bpy.types.Operator
             current, anchor, out, parts, options, progress)
         for old in scene_io.probes(scene):
             _remove_probe(old)
-        coll = _collection(scene, "Probes")
+        coll = scene_io.collection(scene, "Probes")
         k = scene_io.meters_per_bu(scene)
         for order, (d, built) in enumerate(zip(result["scene"]["probes"], result["probes"])):
             obj = bpy.data.objects.new(d["name"], None)
@@ -463,8 +460,8 @@ def import_scene(context, path):
     world = module.read_scene(path, world_frame=True)
     scene = context.scene
     settings = scene.probeproxy
-    level_coll = _collection(scene, "Level")
-    probe_coll = _collection(scene, "Probes")
+    level_coll = scene_io.collection(scene, "Level")
+    probe_coll = scene_io.collection(scene, "Probes")
     folder = os.path.dirname(path)
     depsgraph = None
     for index, entry in enumerate(as_written["level"]):
@@ -503,14 +500,11 @@ def import_scene(context, path):
     return len(world["probes"])
 
 
-class PROBEPROXY_OT_import_scene(_NeedsModule, bpy.types.Operator, ImportHelper):
+class PROBEPROXY_OT_import_scene(_NeedsModule, bpy.types.Operator, _OpensJson):
     """Read a probeproxy scene file (*.scene.json): the level meshes and the probes"""
     bl_idname = "probeproxy.import_scene"
     bl_label = "Import Scene"
     bl_options = {"REGISTER", "UNDO"}
-
-    filename_ext = ".json"
-    filter_glob: StringProperty(default="*.json", options={"HIDDEN"})
 
     def execute(self, context):
         def work():
@@ -612,15 +606,12 @@ class PROBEPROXY_OT_eevee_probes(_NeedsModule, _LibraryJob, bpy.types.Operator):
         return _take_eevee_presets(self, scene, export, "the scene's probes")
 
 
-class PROBEPROXY_OT_eevee_probes_from_file(_NeedsModule, bpy.types.Operator, ImportHelper):
+class PROBEPROXY_OT_eevee_probes_from_file(_NeedsModule, bpy.types.Operator, _OpensJson):
     """EEVEE Reflection Cubemaps from a proxies.json that `probeproxy build` or `probeproxy
     layout --engine eevee` wrote"""
     bl_idname = "probeproxy.eevee_probes_from_file"
     bl_label = "EEVEE Probes from File"
     bl_options = {"REGISTER", "UNDO"}
-
-    filename_ext = ".json"
-    filter_glob: StringProperty(default="*.json", options={"HIDDEN"})
 
     def execute(self, context):
         def work():
@@ -663,7 +654,7 @@ class PROBEPROXY_OT_add_probe(bpy.types.Operator):
         obj.probeproxy.is_probe = True
         obj.probeproxy.order = 1 + max((p.probeproxy.order for p in scene_io.probes(context.scene)),
                                        default=-1)
-        _collection(context.scene, "Probes").objects.link(obj)
+        scene_io.collection(context.scene, "Probes").objects.link(obj)
         for o in context.view_layer.objects:
             o.select_set(False)
         obj.select_set(True)

@@ -22,6 +22,16 @@ import bpy
 from mathutils import Matrix, Quaternion, Vector
 
 
+def collection(scene, name):
+    """The collection `name`, made and linked under the scene's when it is missing."""
+    coll = bpy.data.collections.get(name)
+    if coll is None:
+        coll = bpy.data.collections.new(name)
+    if coll.name not in scene.collection.children:
+        scene.collection.children.link(coll)
+    return coll
+
+
 def f32(value):
     """The shortest decimal that is the same 32-bit float as `value`."""
     single = struct.unpack("f", struct.pack("f", value))[0]

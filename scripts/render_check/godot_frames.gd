@@ -1,0 +1,141 @@
+# Godot 3's side of the render check (scripts/render_check.py runs it with godot3-runner under
+# xvfb-run, GLES3 on Mesa's llvmpipe, one process per pass): the level with position-coded walls,
+# a mirror floor, the ReflectionProbes the shipped importer makes from a proxies.json, and one
+# frame per camera, saved as raw half floats (RGBA, rows top down) for the check to decode.
+#
+#   godot3-runner --path DIR -s godot_frames.gd --args SPEC.json
+#
+# SPEC (written by render_check.py; the level and cameras in Godot's axes, metres): level
+# {vertices, triangles}, cameras [{name, eye, target, hfov_deg}], width, height, far, name, pass
+# ("position", "normal", "white" or "code"), lo and size (the coded box, world axes), code
+# {axis, period} for "code" (a world axis), proxies (the proxies.json, absent for the passes
+# without probes), importer (plugin/engines/godot), out. Colours are in the world's axes (Z up:
+# world (x, y, z) = Godot (x, -z, y)), as EEVEE's frames are, so one decoder reads both.
+#
+# The probes see the walls and a copy of the floor coded like them (layer 2); the camera sees
+# the walls and the mirror floor (layer 1). No environment: the sky and ambient are black.
+extends SceneTree
+
+const MIRROR_NORMAL_Y = 0.7
+const CAPTURE_FRAMES = 40
+
+
+func read_json(path):
+	var file = File.new()
+	file.open(path, File.READ)
+	var parsed = JSON.parse(file.get_as_text())
+	file.close()
+	return parsed.result
+
+
+func v3(a):
+	return Vector3(a[0], a[1], a[2])
+
+
+func level_meshes(level):
+	# (walls, floor): the triangles facing up are the floor.
+	var walls = SurfaceTool.new()
+	var floor_ = SurfaceTool.new()
+	walls.begin(Mesh.PRIMITIVE_TRIANGLES)
+	floor_.begin(Mesh.PRIMITIVE_TRIANGLES)
+	var vs = level["vertices"]
+	for t in level["triangles"]:
+		var a = v3(vs[t[0]])
+		var b = v3(vs[t[1]])
+		var c = v3(vs[t[2]])
+		var n = (b - a).cross(c - a)
+		if n.length() == 0.0:
+			continue
+		var st = floor_ if n.normalized().y > MIRROR_NORMAL_Y else walls
+		# Godot winds front faces clockwise: the level's counter-clockwise triangles reversed.
+		st.add_normal(n.normalized())
+		st.add_vertex(a)
+		st.add_normal(n.normalized())
+		st.add_vertex(c)
+		st.add_normal(n.normalized())
+		st.add_vertex(b)
+	return [walls.commit(), floor_.commit()]
+
+
+func coded_material(spec):
+	var colour = "vec3(1.0)"
+	if spec["pass"] == "position":
+		colour = "w - LO"
+	elif spec["pass"] == "normal":
+		colour = "0.5 + 0.5 * vec3(wn.x, -wn.z, wn.y)"
+	elif spec["pass"] == "code":
+		var a = spec["code"]["axis"]
+		var period = spec["code"]["period"]
+		colour = ("vec3(1.0 + (w[%d] - LO[%d]) / SIZE[%d], 0.5 + 0.5 * cos(6.283185307 * w[%d] / %.9f), 0.5 + 0.5 * sin(6.283185307 * w[%d] / %.9f))"
+			% [a, a, a, a, period, a, period])
+	var lo = spec["lo"]
+	var size = spec["size"]
+	var shader = Shader.new()
+	shader.code = ("shader_type spatial; render_mode unshaded, cull_disabled; const vec3 LO = vec3(%.9f, %.9f, %.9f); const vec3 SIZE = vec3(%.9f, %.9f, %.9f); varying vec3 wp; varying vec3 wn; void vertex() { wp = (WORLD_MATRIX * vec4(VERTEX, 1.0)).xyz; wn = normalize((WORLD_MATRIX * vec4(NORMAL, 0.0)).xyz); } void fragment() { vec3 w = vec3(wp.x, -wp.z, wp.y); ALBEDO = %s; }"
+		% [lo[0], lo[1], lo[2], size[0], size[1], size[2], colour])
+	var material = ShaderMaterial.new()
+	material.shader = shader
+	return material
+
+
+func mirror_material():
+	var material = SpatialMaterial.new()
+	material.albedo_color = Color(1, 1, 1)
+	material.metallic = 1.0
+	material.roughness = 0.0
+	return material
+
+
+func instance(mesh, material, layers):
+	var node = MeshInstance.new()
+	node.mesh = mesh
+	node.material_override = material
+	node.layers = layers
+	return node
+
+
+func _init():
+	var args = OS.get_cmdline_args()
+	var spec = read_json(args[args.size() - 1])
+	var root = Spatial.new()
+	get_root().add_child(root)
+	var meshes = level_meshes(spec["level"])
+	var coded = coded_material(spec)
+	var probed = spec.has("proxies")
+	root.add_child(instance(meshes[0], coded, 1 | 2))
+	if probed:
+		root.add_child(instance(meshes[1], mirror_material(), 1))
+		root.add_child(instance(meshes[1], coded, 2))
+		var importer = load(spec["importer"] + "/probeproxy_import.gd")
+		var probes = importer.import_probes(spec["proxies"])
+		for p in probes.get_children():
+			p.cull_mask = 2
+			p.update_mode = ReflectionProbe.UPDATE_ONCE
+		root.add_child(probes)
+	else:
+		root.add_child(instance(meshes[1], coded, 1))
+	get_root().hdr = true
+	get_root().keep_3d_linear = true  # the codes as written, no sRGB curve
+	get_root().size = Vector2(spec["width"], spec["height"])
+	var camera = Camera.new()
+	camera.cull_mask = 1
+	camera.keep_aspect = Camera.KEEP_WIDTH
+	camera.near = 0.05
+	camera.far = spec["far"]
+	root.add_child(camera)
+	camera.current = true
+	for i in range(CAPTURE_FRAMES):
+		yield(self, "idle_frame")
+	for c in spec["cameras"]:
+		camera.fov = c["hfov_deg"]
+		camera.look_at_from_position(v3(c["eye"]), v3(c["target"]), Vector3.UP)
+		for i in range(3):
+			yield(self, "idle_frame")
+		var image = get_root().get_texture().get_data()
+		image.flip_y()
+		image.convert(Image.FORMAT_RGBAH)
+		var file = File.new()
+		file.open("%s/%s_%s.rgbah" % [spec["out"], c["name"], spec["name"]], File.WRITE)
+		file.store_buffer(image.get_data())
+		file.close()
+	quit()
