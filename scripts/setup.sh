@@ -30,6 +30,7 @@ packages=(
   blender python3-matplotlib                         # test levels, reference renders, charts
   clang-14 libclang-rt-14-dev                        # the fuzz targets (libFuzzer, sanitizers)
   godot3-server                                      # the Godot round trip (Godot 3, headless)
+  godot3-runner                                      # Godot 3 renders the probes (scripts/render_check.py)
   xvfb                                               # the add-on screenshot (scripts/addon_screenshot.py)
 )
 
