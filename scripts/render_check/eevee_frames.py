@@ -181,9 +181,7 @@ def main():
     with open(args.proxies) as f:
         presets = eevee_probes.presets_in_export(json.load(f))
     reach = float(np.linalg.norm(size))
-    for obj in eevee_probes.make_light_probes(scene, presets, 1.0):
-        obj.data.clip_start = 0.05
-        obj.data.clip_end = reach
+    eevee_probes.make_light_probes(scene, presets, 1.0, reach)
 
     with open(args.cameras) as f:
         cameras = json.load(f)["cameras"]

@@ -8,6 +8,7 @@
 #   - undo removes them, redo brings them back; a second run updates them in place;
 #   - in a centimetre scene (Unit Scale 0.01) the same presets in metres, lengths in centimetres;
 #   - EEVEE Probes from File on the CLI's proxies.json gives the same light probes;
+#   - each bake sees from 5 cm (a capture point near a wall) to the level's size;
 #   - a file that is not a proxies.json is one error line naming it, and changes nothing.
 
 import json
@@ -65,6 +66,12 @@ def check_light_probes(label, meters_per_bu):
         largest, other = differences(eevee_probes.preset_of_light_probe(obj, meters_per_bu),
                                      expected[name])
         worst, wrong = max(worst, largest), wrong + other
+    level = [o for o in bpy.context.scene.objects if scene_io.is_level_object(o)]
+    size = eevee_probes.level_size_m(level, meters_per_bu)
+    check(all(abs(o.data.clip_start * meters_per_bu - eevee_probes.CLIP_START_M) < 1e-6 and
+              o.data.clip_end * meters_per_bu >= size * (1 - 1e-6) for o in made.values()),
+          "%s: each bake sees from %g m to the level's size (%.2f m)" % (
+              label, eevee_probes.CLIP_START_M, size))
     # Blender keeps floats; a quaternion and a scale come back through a 4x4 matrix.
     check(worst <= 16 * FLOAT32 and not wrong,
           "%s: the light probes read back into the export's presets (largest relative "

@@ -18,6 +18,9 @@ SUFFIX = "_eevee"
 # What a preset sets on the light probe data, beside the object's transform.
 DATA_FIELDS = ("influence_type", "influence_distance", "falloff", "use_custom_parallax",
                "parallax_type", "parallax_distance")
+# A capture point may stand a few centimetres from a wall: Blender's default clip start (0.8 m)
+# would bake through it.
+CLIP_START_M = 0.05
 
 
 def presets_in_export(export):
@@ -27,9 +30,10 @@ def presets_in_export(export):
             if p.get("engines", {}).get(PRESET) is not None}
 
 
-def make_light_probe(scene, name, preset, meters_per_bu):
+def make_light_probe(scene, name, preset, meters_per_bu, clip_end_m=None):
     """The Reflection Cubemap `name` + "_eevee" set from `preset` (made, or updated in place so
-    that a bake the artist started keeps its object). Lengths become Blender units."""
+    that a bake the artist started keeps its object). Lengths become Blender units. The bake
+    sees from CLIP_START_M to `clip_end_m` (the level's size: the default 40 m clips a hall)."""
     obj = bpy.data.objects.get(name + SUFFIX)
     if obj is None or obj.type != "LIGHT_PROBE" or obj.data.type != "CUBEMAP":
         data = bpy.data.lightprobes.new(name + SUFFIX, "CUBE")  # type "CUBEMAP" once made
@@ -43,6 +47,9 @@ def make_light_probe(scene, name, preset, meters_per_bu):
     obj.scale = Vector(preset["scale"]) / meters_per_bu
     for field in DATA_FIELDS:
         setattr(obj.data, field, preset[field])
+    obj.data.clip_start = CLIP_START_M / meters_per_bu
+    if clip_end_m is not None:
+        obj.data.clip_end = max(clip_end_m, CLIP_START_M * 2.0) / meters_per_bu
     return obj
 
 
@@ -57,20 +64,27 @@ def preset_of_light_probe(obj, meters_per_bu):
     return preset
 
 
+def level_size_m(objects, meters_per_bu):
+    """The diagonal of the objects' world bounds, in metres (None without objects)."""
+    corners = [o.matrix_world @ Vector(c) for o in objects for c in o.bound_box]
+    if not corners:
+        return None
+    lo = Vector([min(c[a] for c in corners) for a in range(3)])
+    hi = Vector([max(c[a] for c in corners) for a in range(3)])
+    return (hi - lo).length * meters_per_bu
+
+
 def light_probes(scene):
     """The scene's Reflection Cubemaps made from probes: {probe name: object}."""
     return {o["probeproxy_probe"]: o for o in scene.objects
             if o.type == "LIGHT_PROBE" and "probeproxy_probe" in o}
 
 
-def make_light_probes(scene, presets, meters_per_bu, progress=None):
+def make_light_probes(scene, presets, meters_per_bu, clip_end_m=None):
     """One Reflection Cubemap per preset; the ones made from probes no longer in `presets`
     go. Returns the objects, in the presets' order."""
-    made = []
-    for i, (name, preset) in enumerate(presets.items()):
-        made.append(make_light_probe(scene, name, preset, meters_per_bu))
-        if progress is not None:
-            progress(i + 1, len(presets))
+    made = [make_light_probe(scene, name, preset, meters_per_bu, clip_end_m)
+            for name, preset in presets.items()]
     for name, obj in light_probes(scene).items():
         if name not in presets:
             data = obj.data

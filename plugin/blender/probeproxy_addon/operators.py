@@ -563,11 +563,15 @@ class PROBEPROXY_OT_save_scene(_NeedsModule, bpy.types.Operator, ExportHelper):
         return _run(self, work)
 
 
-def _take_eevee_presets(operator, scene, export, source):
-    """Makes the Reflection Cubemaps of a proxies.json's EEVEE presets and says how many, and
-    which probes got none (no closed proxy to fit a parallax box to)."""
+def _take_eevee_presets(operator, context, export, source):
+    """Makes the Reflection Cubemaps of a proxies.json's EEVEE presets, seeing as far as the
+    level is large, and says how many, and which probes got none (no closed proxy to fit a
+    parallax box to)."""
+    scene = context.scene
+    k = scene_io.meters_per_bu(scene)
     presets = eevee_probes.presets_in_export(export)
-    made = eevee_probes.make_light_probes(scene, presets, scene_io.meters_per_bu(scene))
+    made = eevee_probes.make_light_probes(
+        scene, presets, k, eevee_probes.level_size_m(_level_objects(context), k))
     missing = [p["name"] for p in export["probes"] if p["name"] not in presets]
     text = "%d EEVEE Reflection Cubemap%s from %s (collection \"%s\")" % (
         len(made), "" if len(made) == 1 else "s", source, eevee_probes.COLLECTION)
@@ -603,7 +607,7 @@ class PROBEPROXY_OT_eevee_probes(_NeedsModule, _LibraryJob, bpy.types.Operator):
             with open(os.path.join(out, "proxies.json")) as f:
                 export = json.load(f)
         scene.probeproxy.level_used = used
-        return _take_eevee_presets(self, scene, export, "the scene's probes")
+        return _take_eevee_presets(self, context, export, "the scene's probes")
 
 
 class PROBEPROXY_OT_eevee_probes_from_file(_NeedsModule, bpy.types.Operator, _OpensJson):
@@ -626,7 +630,7 @@ class PROBEPROXY_OT_eevee_probes_from_file(_NeedsModule, bpy.types.Operator, _Op
             if not isinstance(export, dict) or "probeproxy_runtime" not in export:
                 raise native.module.InputError(
                     "%s: not a probeproxy proxies.json (no \"probeproxy_runtime\")" % path)
-            return _take_eevee_presets(self, context.scene, export, os.path.basename(path))
+            return _take_eevee_presets(self, context, export, os.path.basename(path))
 
         return _run(self, work)
 
