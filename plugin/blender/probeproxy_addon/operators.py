@@ -197,6 +197,20 @@ def _probes_and_level(operator, context):
     return objects
 
 
+def _build_input(operator, context):
+    """What a build of the scene's probes hands the library: the level's parts (the artist's
+    edited proxies taken first), what they came from, the scene dict, its anchor and the build
+    options; None (reported) when there are no probes or no level."""
+    scene = context.scene
+    objects = _probes_and_level(operator, context)
+    if objects is None:
+        return None
+    _take_edited_proxies(operator, context)
+    parts, used = scene_io.level_parts(context, objects)
+    return (parts, used, scene_io.scene_dict(scene), scene_io.scene_anchor(scene),
+            _build_options(scene.probeproxy))
+
+
 def _build_findings(settings, results):
     """The build's findings (capture point outside the level, kept proxy not around the capture
     point...) as warnings in the Findings list, where Validate's go: not a line that is gone in
@@ -230,13 +244,10 @@ class PROBEPROXY_OT_generate_proxies(_NeedsModule, _LibraryJob, bpy.types.Operat
         scene = context.scene
         settings = scene.probeproxy
         probes = scene_io.probes(scene)
-        objects = _probes_and_level(self, context)
-        if objects is None:
+        built = _build_input(self, context)
+        if built is None:
             return {"CANCELLED"}
-        _take_edited_proxies(self, context)
-        parts, used = scene_io.level_parts(context, objects)
-        scene_data, anchor = scene_io.scene_dict(scene), scene_io.scene_anchor(scene)
-        options = _build_options(settings)
+        parts, used, scene_data, anchor, options = built
         results = yield lambda progress: native.module.build_proxies(
             scene_data, anchor, parts, options, progress)
         by_name = {p.name: p for p in probes}
@@ -400,14 +411,11 @@ class PROBEPROXY_OT_export_proxies(_NeedsModule, _LibraryJob, bpy.types.Operator
         if not self.directory:
             self.report({"ERROR"}, "no folder: choose the folder to write proxies.json into")
             return {"CANCELLED"}
-        objects = _probes_and_level(self, context)
-        if objects is None:
+        built = _build_input(self, context)
+        if built is None:
             return {"CANCELLED"}
+        parts, used, scene_data, anchor, options = built
         out = bpy.path.abspath(self.directory)
-        _take_edited_proxies(self, context)
-        parts, used = scene_io.level_parts(context, objects)
-        scene_data, anchor = scene_io.scene_dict(scene), scene_io.scene_anchor(scene)
-        options = _build_options(scene.probeproxy)
         results = yield lambda progress: native.module.export_proxies(
             scene_data, anchor, out, parts, options, progress)
         scene.probeproxy.level_used = used
@@ -593,13 +601,10 @@ class PROBEPROXY_OT_eevee_probes(_NeedsModule, _LibraryJob, bpy.types.Operator):
 
     def steps(self, context):
         scene = context.scene
-        objects = _probes_and_level(self, context)
-        if objects is None:
+        built = _build_input(self, context)
+        if built is None:
             return {"CANCELLED"}
-        _take_edited_proxies(self, context)
-        parts, used = scene_io.level_parts(context, objects)
-        scene_data, anchor = scene_io.scene_dict(scene), scene_io.scene_anchor(scene)
-        options = _build_options(scene.probeproxy)
+        parts, used, scene_data, anchor, options = built
         # The export's own bytes, so that the light probes are exactly what it would write.
         with tempfile.TemporaryDirectory(prefix="probeproxy-eevee-") as out:
             yield lambda progress: native.module.export_proxies(
