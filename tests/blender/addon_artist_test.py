@@ -19,14 +19,13 @@
 
 import json
 import os
-import shutil
 import sys
 
 import bpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from addon_harness import (check, clear_objects, enable_addon, finish, inward_box, parse_args,  # noqa: E402
-                           panel_findings, select_only, validate_like_cli)
+from addon_harness import (check, clear_objects, empty_folder, enable_addon, finish,  # noqa: E402
+                           inward_box, panel_findings, parse_args, select_only, validate_like_cli)
 
 ROOM_MIN = (-3.0, -2.0, 0.0)  # metres, world frame (Z up)
 ROOM_MAX = (3.0, 2.0, 3.0)
@@ -34,9 +33,7 @@ CAPTURE = (0.75, -0.5, 1.5)
 LIFT = 0.5  # how far the hand edit moves the proxy's ceiling up, metres
 
 args = parse_args("--addon-dir", "--module-dir", "--cli", "--work")
-work = os.path.abspath(args.work)
-shutil.rmtree(work, ignore_errors=True)
-os.makedirs(work)
+work = empty_folder(args.work)
 native, scene_io = enable_addon(args.addon_dir, args.module_dir)
 cli_path = os.path.abspath(args.cli)
 os.chdir(work)  # an unsaved .blend anchors its scene (and hand-edited proxies) here

@@ -13,19 +13,16 @@
 
 import json
 import os
-import shutil
 import subprocess
 import sys
 
 import bpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from addon_harness import check, enable_addon, finish, import_scene, parse_args  # noqa: E402
+from addon_harness import check, empty_folder, enable_addon, finish, import_scene, parse_args  # noqa: E402
 
 args = parse_args("--addon-dir", "--module-dir", "--cli", "--scene", "--work")
-work = os.path.abspath(args.work)
-shutil.rmtree(work, ignore_errors=True)
-os.makedirs(work)
+work = empty_folder(args.work)
 native, scene_io = enable_addon(args.addon_dir, args.module_dir)
 from probeproxy_addon import eevee_probes  # noqa: E402
 

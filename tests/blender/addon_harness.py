@@ -5,6 +5,7 @@
 import argparse
 import json
 import os
+import shutil
 import subprocess
 import sys
 
@@ -20,6 +21,14 @@ def parse_args(*names):
     for name in names:
         parser.add_argument(name, required=True)
     return parser.parse_args(argv)
+
+
+def empty_folder(path):
+    """`path`, absolute, emptied of an earlier run's files."""
+    path = os.path.abspath(path)
+    shutil.rmtree(path, ignore_errors=True)
+    os.makedirs(path)
+    return path
 
 
 def check(condition, what):

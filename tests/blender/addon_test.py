@@ -15,15 +15,14 @@
 import filecmp
 import json
 import os
-import shutil
 import subprocess
 import sys
 
 import bpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from addon_harness import (check, enable_addon, finish, import_scene, parse_args,  # noqa: E402
-                           validate_like_cli)
+from addon_harness import (check, empty_folder, enable_addon, finish, import_scene,  # noqa: E402
+                           parse_args, validate_like_cli)
 
 args = parse_args("--addon-dir", "--module-dir", "--cli", "--scene", "--work")
 
@@ -66,9 +65,7 @@ def same_bytes(a, b, what):
     check(filecmp.cmp(a, b, shallow=False), what + ": %s == %s byte for byte" % (a, b))
 
 
-work = os.path.abspath(args.work)
-shutil.rmtree(work, ignore_errors=True)
-os.makedirs(work)
+work = empty_folder(args.work)
 
 native, scene_io = enable_addon(args.addon_dir, args.module_dir)
 level = import_scene(args.scene, scene_io)

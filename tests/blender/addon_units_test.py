@@ -16,19 +16,16 @@
 import json
 import math
 import os
-import shutil
 import sys
 
 import bpy
 from mathutils import Matrix, Quaternion, Vector
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from addon_harness import check, enable_addon, finish, import_scene, parse_args  # noqa: E402
+from addon_harness import check, empty_folder, enable_addon, finish, import_scene, parse_args  # noqa: E402
 
 args = parse_args("--addon-dir", "--module-dir", "--cli", "--scene", "--work")
-work = os.path.abspath(args.work)
-shutil.rmtree(work, ignore_errors=True)
-os.makedirs(work)
+work = empty_folder(args.work)
 native, scene_io = enable_addon(args.addon_dir, args.module_dir)
 scene = bpy.context.scene
 
