@@ -102,13 +102,13 @@ def reaches(preset, region):
     return float(np.linalg.norm(nearest - centre)) <= radius
 
 
-def render_eevee(args, proxies, out):
+def render_eevee(args, proxies, out, geometry):
     command = ["xvfb-run", "-a", args.blender, "-b", "--factory-startup", "--python-exit-code",
                "1", "--python", os.path.join(HERE, "render_check", "eevee_frames.py"), "--",
                "--module-dir", args.module_dir, "--addon-dir", os.path.join(ROOT, "plugin",
                                                                            "blender"),
                "--scene", args.scene, "--proxies", proxies, "--cameras", args.cameras,
-               "--out", out]
+               "--out", out] + ([] if geometry else ["--no-geometry"])
     done = subprocess.run(command, capture_output=True, text=True)
     if done.returncode != 0:
         sys.exit("render_check: EEVEE failed:\n" + done.stdout[-2000:] + done.stderr[-2000:])
@@ -121,8 +121,9 @@ def godot_point(p):
     return [p[0], p[2], -p[1]]
 
 
-def render_godot(args, proxies, out):
-    """Godot 3 (godot3-runner, GLES3 under xvfb-run): one process per pass, frames as EEVEE's."""
+def render_godot(args, proxies, out, geometry):
+    """Godot 3 (godot3-runner, GLES3 under xvfb-run): one process per pass, frames as EEVEE's;
+    the position and normal passes only with `geometry`."""
     sys.path.insert(0, os.path.join(HERE, "render_check"))
     import position_code
     import probeproxy_py
@@ -142,7 +143,8 @@ def render_godot(args, proxies, out):
             "size": size, "importer": os.path.join(ROOT, "plugin", "engines", "godot"),
             "out": out}
     coded = position_code.codes(size)
-    passes = [("position", {}), ("normal", {}), ("white", {"proxies": proxies})] + [
+    passes = [("position", {}), ("normal", {})] if geometry else []
+    passes += [("white", {"proxies": proxies})] + [
         ("code_%d_%g" % (a, p), {"proxies": proxies, "code": {"axis": a, "period": p}})
         for a, p in coded]
     seconds = {}
@@ -208,7 +210,7 @@ def camera_pixels(module, args, proxies, meta, camera, frames):
     mirror = normal[..., 2] > MIRROR_NORMAL_Z
     if not mirror.any():
         print("render_check: %s: camera %s sees no floor (no surface facing up): move it" % (
-            args.cameras, camera["name"]), file=sys.stderr)
+            args.camera_file, camera["name"]), file=sys.stderr)
         sys.exit(2)
     x = frames["position"] + np.array(meta["lo"])
     safe = np.where(white > 1e-6, white, 1.0)
@@ -317,6 +319,8 @@ def main():
                         help="the renderer: eevee (Blender) or godot3 (godot3-runner)")
     parser.add_argument("--blender", default="blender")
     parser.add_argument("--out", required=True)
+    parser.add_argument("--max-cameras", type=int, default=None,
+                        help="the first N cameras of the file only (a quicker check)")
     parser.add_argument("--require-agreement", action="store_true",
                         help="exit 1 unless, for every set, the median absolute difference "
                         "between rendered and predicted per-pixel error is under %g deg and the "
@@ -334,15 +338,23 @@ def main():
     os.makedirs(out, exist_ok=True)
     with open(args.cameras) as f:
         camera_file = json.load(f)
-    cameras, region = camera_file["cameras"], camera_file.get("region")
+    cameras, region = camera_file["cameras"][:args.max_cameras], camera_file.get("region")
+    # The renderers read the cameras used, from the output folder.
+    args.camera_file, args.cameras = args.cameras, os.path.join(out, "cameras.json")
+    with open(args.cameras, "w") as f:
+        json.dump(camera_file | {"cameras": cameras}, f, indent=1)
     report = {"scene": args.scene, "engine": args.engine, "sets": {}}
     rows = {c["name"]: [] for c in cameras}
+    geometry = {}  # per camera: where its rays land, the same for every set of probes
     for name, proxies in lay_out(args, out, region):
         render = render_eevee if args.engine == "eevee" else render_godot
-        meta = render(args, proxies, os.path.join(out, name, "frames"))
+        meta = render(args, proxies, os.path.join(out, name, "frames"), not geometry)
         pixels = []
         for camera in cameras:
             frames = dict(np.load(os.path.join(out, name, "frames", camera["name"] + ".npz")))
+            if camera["name"] not in geometry:
+                geometry[camera["name"]] = {k: frames[k] for k in ("position", "normal")}
+            frames |= geometry[camera["name"]]
             p = camera_pixels(module, args, proxies, meta, camera, frames)
             pixels.append(p)
             rows[camera["name"]].append((name, p, figures(p["rendered"]),

@@ -28,6 +28,9 @@ for name in ("--module-dir", "--addon-dir", "--scene", "--proxies", "--cameras",
 parser.add_argument("--width", type=int, default=320)
 parser.add_argument("--height", type=int, default=180)
 parser.add_argument("--cubemap", default="512")
+parser.add_argument("--no-geometry", action="store_true",
+                    help="skip the position and normal frames (another set's serve: they do "
+                    "not depend on the probes)")
 args = parser.parse_args(argv)
 sys.path[:0] = [os.path.abspath(args.module_dir), os.path.abspath(args.addon_dir),
                 os.path.dirname(os.path.abspath(__file__))]
@@ -214,10 +217,11 @@ def main():
         timings[key] = time.time() - start
 
     # Emission colours stay positive: positions from `lo`, normals as 0.5 + 0.5 n.
-    shoot("position", emission_material("position", lambda n, l, g: vector_math(
-        n, l, "SUBTRACT", g.outputs["Position"], tuple(lo))), False)
-    shoot("normal", emission_material("normal", lambda n, l, g: vector_math(
-        n, l, "MULTIPLY_ADD", g.outputs["Normal"], (0.5, 0.5, 0.5), (0.5, 0.5, 0.5))), False)
+    if not args.no_geometry:
+        shoot("position", emission_material("position", lambda n, l, g: vector_math(
+            n, l, "SUBTRACT", g.outputs["Position"], tuple(lo))), False)
+        shoot("normal", emission_material("normal", lambda n, l, g: vector_math(
+            n, l, "MULTIPLY_ADD", g.outputs["Normal"], (0.5, 0.5, 0.5), (0.5, 0.5, 0.5))), False)
     shoot("white", emission_material("white", lambda n, l, g: combine(n, l, 1.0, 1.0, 1.0)), True)
     coded = position_code.codes(size)
     for axis, period in coded:
