@@ -37,6 +37,8 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
+sys.path.insert(0, os.path.join(HERE, "render_check"))
+import position_code  # noqa: E402
 MIRROR_NORMAL_Z = 0.7  # as eevee_frames.py
 WIDTH, HEIGHT = 320, 180  # as eevee_frames.py's default
 MIN_WEIGHT = 0.02      # a mirror pixel with less probe weight shows the (black) sky: uncovered
@@ -124,9 +126,7 @@ def godot_point(p):
 def render_godot(args, proxies, out, geometry):
     """Godot 3 (godot3-runner, GLES3 under xvfb-run): one process per pass, frames as EEVEE's;
     the position and normal passes only with `geometry`."""
-    sys.path.insert(0, os.path.join(HERE, "render_check"))
-    import position_code
-    import probeproxy_py
+    import probeproxy_py  # main() put its folder on the path
     os.makedirs(out, exist_ok=True)
     with open(os.path.join(out, "project.godot"), "w") as f:
         f.write('config_version=4\n[application]\nconfig/name="render_check"\n'
@@ -203,8 +203,9 @@ def angle_deg(a, b):
     return np.degrees(np.arccos(np.clip(cos, -1.0, 1.0)))
 
 
-def camera_pixels(module, args, proxies, meta, camera, frames):
-    """Per mirror pixel: rendered and predicted error (nan where uncovered), weights."""
+def mirror_view(args, meta, camera, frames):
+    """A camera's mirror pixels: mask, floor points, normals, the decoded shown points and
+    the rendered weight."""
     white = frames["white"][..., 0]
     normal = frames["normal"] * 2.0 - 1.0
     mirror = normal[..., 2] > MIRROR_NORMAL_Z
@@ -215,24 +216,36 @@ def camera_pixels(module, args, proxies, meta, camera, frames):
     x = frames["position"] + np.array(meta["lo"])
     safe = np.where(white > 1e-6, white, 1.0)
     shown = np.stack([decode_axis(frames, meta, a, safe) for a in range(3)], axis=-1)
-    points, normals = x[mirror], normal[mirror]
-    eye = np.array(camera["eye"])
-    model = module.engine_reflections(args.scene, proxies, args.engine,
-                                      [tuple(p) for p in points], [tuple(n) for n in normals],
-                                      [tuple(eye)] * len(points))
+    return {"mirror": mirror, "points": x[mirror], "normals": normal[mirror],
+            "eye": camera["eye"], "shown": shown[mirror], "white": white[mirror]}
+
+
+def set_pixels(module, args, proxies, views):
+    """Per camera's mirror pixels: rendered and predicted error (nan where uncovered) and the
+    two weights. The model runs once for all cameras (the level loads once)."""
+    points = np.concatenate([v["points"] for v in views])
+    model = module.engine_reflections(
+        args.scene, proxies, args.engine, [tuple(p) for p in points],
+        [tuple(n) for v in views for n in v["normals"]],
+        [tuple(v["eye"]) for v in views for _ in range(len(v["points"]))])
     true_hit = np.array([h if h is not None else (np.nan,) * 3 for h in model["true_hit"]])
     predicted = np.array([s if s is not None else (np.nan,) * 3 for s in model["shown"]])
-    rendered_error = angle_deg(shown[mirror] - points, true_hit - points)
-    predicted_error = angle_deg(predicted - points, true_hit - points)
-    rendered_covered = white[mirror] > MIN_WEIGHT
     predicted_weight = np.array(model["surface_weight"])
-    rendered_error[~rendered_covered] = np.nan
-    predicted_error[predicted_weight <= MIN_WEIGHT] = np.nan
+    shown = np.concatenate([v["shown"] for v in views])
+    white = np.concatenate([v["white"] for v in views])
+    rendered_error = angle_deg(shown - points, true_hit - points)
+    predicted_error = angle_deg(predicted - points, true_hit - points)
     sky = np.isnan(true_hit[:, 0])
-    rendered_error[sky] = np.nan
-    predicted_error[sky] = np.nan
-    return {"mirror": mirror, "rendered": rendered_error, "predicted": predicted_error,
-            "white": white[mirror], "predicted_weight": predicted_weight}
+    rendered_error[sky | ~(white > MIN_WEIGHT)] = np.nan
+    predicted_error[sky | ~(predicted_weight > MIN_WEIGHT)] = np.nan
+    pixels, start = [], 0
+    for v in views:
+        end = start + len(v["points"])
+        pixels.append({"mirror": v["mirror"], "rendered": rendered_error[start:end],
+                       "predicted": predicted_error[start:end], "white": white[start:end],
+                       "predicted_weight": predicted_weight[start:end]})
+        start = end
+    return pixels
 
 
 def figures(errors):
@@ -349,14 +362,14 @@ def main():
     for name, proxies in lay_out(args, out, region):
         render = render_eevee if args.engine == "eevee" else render_godot
         meta = render(args, proxies, os.path.join(out, name, "frames"), not geometry)
-        pixels = []
+        views = []
         for camera in cameras:
             frames = dict(np.load(os.path.join(out, name, "frames", camera["name"] + ".npz")))
             if camera["name"] not in geometry:
                 geometry[camera["name"]] = {k: frames[k] for k in ("position", "normal")}
-            frames |= geometry[camera["name"]]
-            p = camera_pixels(module, args, proxies, meta, camera, frames)
-            pixels.append(p)
+            views.append(mirror_view(args, meta, camera, frames | geometry[camera["name"]]))
+        pixels = set_pixels(module, args, proxies, views)
+        for camera, p in zip(cameras, pixels):
             rows[camera["name"]].append((name, p, figures(p["rendered"]),
                                          figures(p["predicted"])))
         report["sets"][name] = set_figures(pixels) | {
