@@ -220,7 +220,32 @@ def mirror_view(args, meta, camera, frames):
             "eye": camera["eye"], "shown": shown[mirror], "white": white[mirror]}
 
 
-def set_pixels(module, args, proxies, views):
+def predicted_decode(texels, meta):
+    """The point the decoder reads from the pixel the model predicts: each code's colours
+    blended with the model's weights, then decoded as the renderer's frames are. Where a
+    pixel blends points far apart, the phase codes average to neither (decode_axis keeps the
+    coarse code there): comparing the decoded model with the decoded frame measures the
+    renderer, not the code."""
+    pixel = np.repeat(np.arange(len(texels)), [len(t) for t in texels])
+    flat = np.array([t for ts in texels for t in ts], dtype=float).reshape(-1, 4)
+    weight, points = flat[:, 0], flat[:, 1:]
+
+    def blended(values):
+        out = np.zeros((len(texels),) + values.shape[1:])
+        np.add.at(out, pixel, weight.reshape((-1,) + (1,) * (values.ndim - 1)) * values)
+        return out
+
+    white = blended(np.ones(len(weight)))
+    codes = {"code_%d_%g" % (a, p): blended(position_code.colour(points, meta["lo"],
+                                                                  meta["size"], a, p))
+             for a, p in meta["codes"]}
+    safe = np.where(white > 0.0, white, 1.0)
+    decoded = np.stack([decode_axis(codes, meta, a, safe) for a in range(3)], axis=-1)
+    decoded[~(white > 0.0)] = np.nan
+    return decoded
+
+
+def set_pixels(module, args, proxies, views, meta):
     """Per camera's mirror pixels: rendered and predicted error (nan where uncovered) and the
     two weights. The model runs once for all cameras (the level loads once)."""
     points = np.concatenate([v["points"] for v in views])
@@ -229,7 +254,7 @@ def set_pixels(module, args, proxies, views):
         [tuple(n) for v in views for n in v["normals"]],
         [tuple(v["eye"]) for v in views for _ in range(len(v["points"]))])
     true_hit = np.array([h if h is not None else (np.nan,) * 3 for h in model["true_hit"]])
-    predicted = np.array([s if s is not None else (np.nan,) * 3 for s in model["shown"]])
+    predicted = predicted_decode(model["texels"], meta)
     predicted_weight = np.array(model["surface_weight"])
     shown = np.concatenate([v["shown"] for v in views])
     white = np.concatenate([v["white"] for v in views])
@@ -368,7 +393,7 @@ def main():
             if camera["name"] not in geometry:
                 geometry[camera["name"]] = {k: frames[k] for k in ("position", "normal")}
             views.append(mirror_view(args, meta, camera, frames | geometry[camera["name"]]))
-        pixels = set_pixels(module, args, proxies, views)
+        pixels = set_pixels(module, args, proxies, views, meta)
         for camera, p in zip(cameras, pixels):
             rows[camera["name"]].append((name, p, figures(p["rendered"]),
                                          figures(p["predicted"])))

@@ -108,6 +108,16 @@ std::optional<glm::dvec3> engineLookup(const EngineProbe& probe, glm::dvec3 x, g
   return d;
 }
 
+bool capturedAt(const EngineProbe& probe, glm::dvec3 p) {
+  if (!probe.depth) return true;
+  const glm::dvec3 local = glm::conjugate(probe.depth->worldFromFaces) * (p - probe.captureMeters);
+  const glm::dvec3 a = glm::abs(local);
+  const int axis = a.x >= a.y && a.x >= a.z ? 0 : (a.y >= a.z ? 1 : 2);
+  const double far =
+      local[axis] >= 0.0 ? probe.depth->positiveMeters[axis] : probe.depth->negativeMeters[axis];
+  return a[axis] < far;
+}
+
 double engineLookupErrorDeg(const EngineProbe& probe, const ReflectionSample& s) {
   const std::optional<glm::dvec3> d = engineLookup(probe, s.xMeters, s.reflected);
   if (!d) return std::numeric_limits<double>::quiet_NaN();

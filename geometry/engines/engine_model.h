@@ -15,6 +15,7 @@
 #include "geometry/evaluation/reflection_sample.h"
 #include "geometry/export/runtime_export.h"
 
+#include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
@@ -36,6 +37,15 @@ enum class Projection {
               // too, and t < 0 as it comes, as the shaders do
 };
 
+// How deep each face of a cubemap was rendered: a face sees along its axis (in `worldFromFaces`'
+// frame, from the capture point) only up to its far plane. Level points past it are not in the
+// cubemap; its texels there hold the probe's clear colour, no level point.
+struct CaptureDepth {
+  glm::dquat worldFromFaces{1.0, 0.0, 0.0, 0.0};
+  glm::dvec3 positiveMeters{0.0};  // far plane of the +x, +y, +z faces
+  glm::dvec3 negativeMeters{0.0};  // of the -x, -y, -z faces
+};
+
 struct EngineProbe {
   int sceneProbe = 0;             // the probe's index in the scene (and in the export)
   glm::dvec3 captureMeters{0.0};  // where the cubemap was captured: its texels are seen from here
@@ -47,7 +57,13 @@ struct EngineProbe {
   // up in the probe's own scaled space from the box centre.
   glm::dvec3 lookupOriginMeters{0.0};
   glm::dmat3 lookupFromWorld{1.0};
+  std::optional<CaptureDepth> depth;  // none: the cubemap holds the whole level
 };
+
+// Whether the probe's cubemap holds the level point p: the face p is seen through (the largest
+// axis of p - capture, in the faces' frame) reaches past it. A point on the far plane is
+// clipped: Godot 3 drops a wall lying there (a box fitted to its room, max_distance 0).
+bool capturedAt(const EngineProbe& probe, glm::dvec3 pMeters);
 
 struct EngineWeight {
   int probe = 0;        // index into EngineModel::probes

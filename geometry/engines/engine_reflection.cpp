@@ -16,12 +16,14 @@ EngineReflection engineReflection(const LevelRayCaster& level, const EngineModel
     if (!d) continue;  // no lookup: the engine's shader gives nothing there either
     const glm::vec3 direction(glm::normalize(*d));
     const RayHit hit = level.firstHit({probe.captureMeters, direction});
-    if (!hit.hit()) {
+    // The texel's point: t is in units of the (float) direction the ray took.
+    const glm::dvec3 point = probe.captureMeters + double(hit.t) * glm::dvec3(direction);
+    if (!hit.hit() || !capturedAt(probe, point)) {  // the sky, or the probe's clear colour
       shown.skyWeight += w.weight;
       continue;
     }
-    // The texel's point: t is in units of the (float) direction the ray took.
-    weightedSum += w.weight * (probe.captureMeters + double(hit.t) * glm::dvec3(direction));
+    weightedSum += w.weight * point;
+    shown.texels.push_back({w.weight, point});
     shown.surfaceWeight += w.weight;
   }
   if (shown.surfaceWeight > 0.0) shown.shownMeters = weightedSum / shown.surfaceWeight;

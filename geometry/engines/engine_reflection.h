@@ -12,8 +12,14 @@
 #include "geometry/raycast/level_ray_caster.h"
 
 #include <optional>
+#include <vector>
 
 namespace probeproxy {
+
+struct ShownTexel {
+  double weight = 0.0;  // the probe's blend weight
+  glm::dvec3 pointMeters{0.0};
+};
 
 struct EngineReflection {
   // The weight-averaged level point the lookups show; none when no weighted lookup meets a
@@ -22,6 +28,9 @@ struct EngineReflection {
   double surfaceWeight = 0.0;   // the weights whose lookups meet a surface
   double skyWeight = 0.0;       // the weights whose lookups leave the level (a black sky)
   double fallbackWeight = 1.0;  // the engine's sky / ambient share: no probe's
+  // Each weighted lookup that meets a surface, in the engine's order: a pixel's colour is their
+  // weighted colours' sum, which a colour code that is not linear in position (a phase) needs.
+  std::vector<ShownTexel> texels;
 };
 
 // `sample`'s x, normal, eye and reflected direction are used; its true hit is not.

@@ -17,6 +17,12 @@ GodotProbes godotProbes(const RuntimeExport& presets, bool godot4) {
     p.captureMeters = held.captureMeters;
     p.lookupOriginMeters = held.captureMeters;
     p.projection = preset->boxProjection ? ProxyShape(held.box) : ProxyShape(InfiniteShape{});
+    const glm::dvec3 offset =
+        glm::conjugate(held.box.worldFromBox) * (held.captureMeters - held.box.centerMeters);
+    const glm::dvec3 far(preset->maxDistance);
+    p.depth =
+        CaptureDepth{held.box.worldFromBox, glm::max(far, held.box.halfExtentsMeters - offset),
+                     glm::max(far, held.box.halfExtentsMeters + offset)};
     out.probes.push_back(std::move(p));
     out.boxes.push_back(held);
   }

@@ -1,7 +1,11 @@
 #pragma once
 // What Godot 3 and Godot 4 share: a ReflectionProbe's box is both where it applies and what it
 // projects on (the shaders' reflection_process(): out of the box, `return`; box_project: hit
-// against +-box_extents, lookup = hit - box_offset), centred on the node.
+// against +-box_extents, lookup = hit - box_offset), centred on the node. Its cubemap is
+// rendered from the capture point with each face's far plane on the box's face along that axis
+// (servers/visual/visual_server_scene.cpp, _render_reflection_probe_step, and Godot 4's
+// RendererSceneCull: max_distance = MAX(max_distance, |extents - origin_offset| along the
+// face's normal)): with max_distance 0 nothing on or past the box's faces is in the cubemap.
 
 #include "geometry/engines/engine_model.h"
 #include "geometry/engines/preset_boxes.h"

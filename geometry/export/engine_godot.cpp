@@ -3,7 +3,10 @@
 #include "core/scene/file_frame.h"
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
+
+#include <cmath>
 
 namespace probeproxy {
 
@@ -23,6 +26,8 @@ GodotReflectionProbe godotReflectionProbe(const BoxShape& box, glm::dvec3 captur
   const glm::dvec3 room = probe.size / 2.0 - kGodotOffsetMarginMeters;
   probe.exact = glm::all(glm::lessThanEqual(glm::abs(probe.originOffset), room));
   probe.blendDistance = transitionDistanceMeters(influence);
+  const glm::dvec3 farthestCorner = glm::abs(probe.originOffset) + probe.size / 2.0;
+  probe.maxDistance = std::ceil(glm::length(farthestCorner) * 1000.0) / 1000.0;
   return probe;
 }
 

@@ -142,6 +142,12 @@ struct UnrealSphereReflectionCapture {
 // Blend: Godot 4.3+ `blend_distance` fades per axis over min(blend_distance, extent) inside the
 // box, weights multiplied then squared; Godot 3 has no blend distance (its weight is a fixed
 // curve of |local_pos / extents|): the Godot 3 importer keeps it as node metadata.
+// Capture: Godot renders each cube face with its far plane at MAX(max_distance, the distance
+// from the capture point to the box's face along that axis) (_render_reflection_probe_step);
+// with max_distance 0, Godot's default, a wall the box was fitted to lies on the far plane and
+// is clipped: the probe shows its clear colour where its own room's walls are. `max_distance`
+// is the distance from the capture point to the box's farthest corner, rounded up to the
+// millimetre: everything inside the box is in the cubemap.
 struct GodotReflectionProbe {
   EngineSource source;
   glm::dvec3 origin{0.0};           // node Transform origin: the box centre, metres
@@ -150,6 +156,7 @@ struct GodotReflectionProbe {
                                     // = size / 2)
   glm::dvec3 originOffset{0.0};     // capture point - origin, in the node's frame, metres
   double blendDistance = 0.0;       // metres: transitionDistanceMeters(influence)
+  double maxDistance = 0.0;         // metres: ReflectionProbe.max_distance (0: Godot's default)
   bool boxProjection = true;
   bool exact = true;
 };

@@ -162,7 +162,8 @@ void clipInPlan(BoxShape& box, const InfluenceVolume& influence) {
 RuntimeEngines enginesFor(const ProbeProxyBuild& build, const Probe& probe,
                           const EnginePresetPolicy& policy) {
   InfluenceVolume influence = scaledFade(probe.influence, policy.fadeScale);
-  const double drop = policy.clearTheFloor ? transitionDistanceMeters(influence) : 0.0;
+  const double drop = std::max(kFloorClearanceMeters,
+                               policy.clearTheFloor ? transitionDistanceMeters(influence) : 0.0);
   if (auto* box = std::get_if<BoxInfluence>(&influence)) {
     const glm::dvec3 inner = box->innerHalfExtentsMeters - box->halfExtentsMeters;
     lowerBottom(box->centerMeters, box->halfExtentsMeters, box->worldFromBox, drop);
@@ -170,8 +171,7 @@ RuntimeEngines enginesFor(const ProbeProxyBuild& build, const Probe& probe,
   }
   const auto lowered = [&](BoxShape b) {
     if (policy.clipToInfluence) clipInPlan(b, influence);
-    lowerBottom(b.centerMeters, b.halfExtentsMeters, b.worldFromBox, drop);
-    return b;
+    return withBottomLowered(b, drop);
   };
   RuntimeEngines engines;
   const auto& cs = build.candidates;
@@ -254,6 +254,11 @@ void describeShape(const ProxyShape& shape, RuntimeProbe& out) {
 }
 
 }  // namespace
+
+BoxShape withBottomLowered(BoxShape box, double drop) {
+  lowerBottom(box.centerMeters, box.halfExtentsMeters, box.worldFromBox, drop);
+  return box;
+}
 
 RuntimeExport makeRuntimeExport(const Scene& scene, const std::vector<ProbeProxyBuild>& builds,
                                 const EnginePresetPolicy& policy) {

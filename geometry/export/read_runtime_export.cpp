@@ -41,6 +41,7 @@ struct At {
 // The kit's checks (geometry/scene/json_values.h), at a value and its path.
 double finiteNumber(const At& at) { return probeproxy::finiteNumber(at.value, at.path); }
 double positiveNumber(const At& at) { return probeproxy::positiveNumber(at.value, at.path); }
+double nonNegativeNumber(const At& at) { return probeproxy::nonNegativeNumber(at.value, at.path); }
 glm::dvec3 vec3(const At& at) { return finiteVec3(at.value, at.path); }
 glm::dvec3 positiveVec3(const At& at) { return probeproxy::positiveVec3(at.value, at.path); }
 glm::dquat unitQuaternionWxyz(const At& at) {
@@ -305,6 +306,8 @@ RuntimeEngines engines(const At& at) {
     p.size = vec3(g.member("size"));
     p.originOffset = vec3(g.member("origin_offset"));
     p.blendDistance = finiteNumber(g.member("blend_distance"));
+    // Exports before max_distance was written leave Godot its default, 0.
+    if (g.has("max_distance")) p.maxDistance = nonNegativeNumber(g.member("max_distance"));
     p.boxProjection = boolean(g.member("box_projection"));
     p.exact = boolean(g.member("exact"));
     return p;

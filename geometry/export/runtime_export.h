@@ -155,6 +155,17 @@ struct RuntimeExport {
   std::vector<RuntimeProbe> probes;  // in the order of the builds
 };
 
+// Every engine box's bottom, and a box influence's, goes at least this far under the floor it
+// was fitted to. On a face, an engine's inside test (abs(local) > extents) and its fade (0 on
+// the face) are decided by rounding: Godot 3 rendered a floor lying on its probes' bottom faces
+// in black and lit streaks along image rows, and the models' figures there were as fragile.
+// Reflections off a floor go up, so they never meet the lowered face.
+inline constexpr double kFloorClearanceMeters = 0.02;
+
+// The box with its bottom face (world) lowered by `drop` where its own z is the world's
+// vertical (an aabb, an obb turned about Z); its top stays. Other boxes are returned as given.
+BoxShape withBottomLowered(BoxShape box, double drop);
+
 // How the engine presets are made from each probe's box and influence volume. `build` exports
 // the defaults; `layout --engine E` exports the policy its engine renders best (measured).
 struct EnginePresetPolicy {
@@ -162,9 +173,10 @@ struct EnginePresetPolicy {
   // every engine gets (engine_probes.h, transitionDistanceMeters) and HDRP's per-face blends.
   double fadeScale = 1.0;
   // Lower each engine box's bottom face, and a box influence's, by that fade: engines that fade
-  // inside the box leave a floor lying on its bottom face to the sky; a mirror floor's
+  // inside the box leave a floor lying near its bottom face to the sky; a mirror floor's
   // reflections go up, so they never meet the lowered face. Only boxes whose own z is the
-  // world's vertical (an aabb, an obb turned about Z).
+  // world's vertical (an aabb, an obb turned about Z). Without it the bottom still goes 2 cm
+  // under the floor (make_runtime_export.cpp, kFloorClearanceMeters): never a floor on a face.
   bool clearTheFloor = false;
   // Cut each engine box, in plan, to the probe's influence volume (outer range): where the box
   // is also where the probe applies (Unity, Unreal, Godot, Bevy), a room-sized box reaches floor

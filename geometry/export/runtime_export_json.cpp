@@ -168,6 +168,7 @@ JsonLayoutValue godotJson(const std::optional<GodotReflectionProbe>& godot) {
             {"size", engineVec3(p.size)},
             {"origin_offset", engineVec3(p.originOffset)},
             {"blend_distance", jsonCoordinate(p.blendDistance)},
+            {"max_distance", jsonCoordinate(p.maxDistance)},
             {"box_projection", boolJson(p.boxProjection)},
             {"exact", boolJson(p.exact)}};
   });

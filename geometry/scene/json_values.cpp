@@ -1,6 +1,5 @@
 #include "geometry/scene/json_values.h"
 
-
 namespace probeproxy {
 
 namespace {
@@ -10,16 +9,16 @@ using Json = nlohmann::json;
 // The array's shape first (naming the whole array), then each element (naming it), so a user
 // is pointed at the one number to fix.
 template <std::size_t N>
-std::array<double, N> numbersOf(const Json& value, const std::string& path,
-                                const char* elementKind, bool positive) {
+std::array<double, N> numbersOf(const Json& value, const std::string& path, const char* elementKind,
+                                bool positive) {
   if (!value.is_array() || value.size() != N) {
     failJsonExpected(path, "an array of " + std::to_string(N) + " " + elementKind, value);
   }
   std::array<double, N> numbers{};
   for (std::size_t i = 0; i < N; ++i) {
     const std::string elementPath = jsonIndexPath(path, i);
-    numbers[i] = positive ? positiveNumber(value[i], elementPath)
-                          : finiteNumber(value[i], elementPath);
+    numbers[i] =
+        positive ? positiveNumber(value[i], elementPath) : finiteNumber(value[i], elementPath);
   }
   return numbers;
 }
@@ -65,6 +64,13 @@ double finiteNumber(const Json& value, const std::string& path) {
 double positiveNumber(const Json& value, const std::string& path) {
   if (!isFiniteNumber(value) || !(value.get<double>() > 0.0)) {
     failJsonExpected(path, "a positive number", value);
+  }
+  return value.get<double>();
+}
+
+double nonNegativeNumber(const Json& value, const std::string& path) {
+  if (!isFiniteNumber(value) || !(value.get<double>() >= 0.0)) {
+    failJsonExpected(path, "a number >= 0", value);
   }
   return value.get<double>();
 }

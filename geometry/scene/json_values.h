@@ -38,6 +38,7 @@ inline bool isUnitToRounding(double length) {
 bool isFiniteNumber(const nlohmann::json& value);
 double finiteNumber(const nlohmann::json& value, const std::string& path);
 double positiveNumber(const nlohmann::json& value, const std::string& path);
+double nonNegativeNumber(const nlohmann::json& value, const std::string& path);
 
 glm::dvec3 finiteVec3(const nlohmann::json& value, const std::string& path);
 glm::dvec3 positiveVec3(const nlohmann::json& value, const std::string& path);

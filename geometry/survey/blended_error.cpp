@@ -3,17 +3,21 @@
 #include "geometry/evaluation/evaluate_shape.h"
 #include "geometry/evaluation/reflection_samples.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace probeproxy {
 
 namespace {
 
-// `capture(i)` and `error(i)` of the probe a weight names.
-template <typename Weights, typename Capture, typename Error>
+// `capture(i)`, `error(i)` and `captured(i)` (whether its cubemap holds the true hit) of the
+// probe a weight names. A probe whose cubemap stops short of the true hit shows its clear
+// colour there: that weight is the fallback's, as where no probe reaches.
+template <typename Weights, typename Capture, typename Error, typename Captured>
 SurveySampleError weightedError(const LevelRayCaster& level, const ReflectionSample& sample,
                                 const Weights& weights, double fallbackWeight,
-                                const Capture& capture, const Error& error) {
+                                const Capture& capture, const Error& error,
+                                const Captured& captured) {
   SurveySampleError e;
   e.uncoveredWeight = fallbackWeight;
   if (weights.empty()) {
@@ -23,6 +27,10 @@ SurveySampleError weightedError(const LevelRayCaster& level, const ReflectionSam
   }
   double weightedSum = 0.0, visibleWeight = 0.0;
   for (const auto& w : weights) {
+    if (!captured(w.probe)) {
+      e.uncoveredWeight += w.weight;
+      continue;
+    }
     if (trueHitHiddenFrom(level, capture(w.probe), sample)) {
       e.occludedWeight += w.weight;
       continue;
@@ -34,7 +42,7 @@ SurveySampleError weightedError(const LevelRayCaster& level, const ReflectionSam
   if (visibleWeight > 0.0) {
     e.errorDeg = weightedSum / visibleWeight;
   } else {
-    e.occludedWeight = 1.0 - fallbackWeight;  // the weights sum to that up to rounding
+    e.occludedWeight = std::max(0.0, 1.0 - e.uncoveredWeight);  // the rest, up to rounding
   }
   return e;
 }
@@ -52,7 +60,8 @@ SurveySampleError blendedSampleError(const LevelRayCaster& level,
   };
   return weightedError(
       level, sample, weights, 0.0, [&](int i) { return probe(i).captureMeters; },
-      [&](int i) { return angularErrorDeg(probe(i).proxy, probe(i).captureMeters, sample); });
+      [&](int i) { return angularErrorDeg(probe(i).proxy, probe(i).captureMeters, sample); },
+      [](int) { return true; });
 }
 
 SurveySampleError blendedSampleError(const LevelRayCaster& level, const EngineModel& model,
@@ -64,7 +73,8 @@ SurveySampleError blendedSampleError(const LevelRayCaster& level, const EngineMo
   return weightedError(
       level, sample, blend.weights, blend.fallbackWeight,
       [&](int i) { return probe(i).captureMeters; },
-      [&](int i) { return engineLookupErrorDeg(probe(i), sample); });
+      [&](int i) { return engineLookupErrorDeg(probe(i), sample); },
+      [&](int i) { return sample.hitsSky || capturedAt(probe(i), sample.trueHitMeters); });
 }
 
 }  // namespace probeproxy

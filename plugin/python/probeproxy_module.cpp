@@ -182,13 +182,17 @@ py::dict engineReflections(const std::string& scenePath, const std::string& prox
       shown[i] = engineReflection(level, model, s);
     });
   }
-  py::list trueHits, shownPoints, surfaceWeights, skyWeights, fallbackWeights;
+  py::list trueHits, shownPoints, surfaceWeights, skyWeights, fallbackWeights, texels;
   for (std::size_t i = 0; i < points.size(); ++i) {
     trueHits.append(samples[i].hitsSky ? py::none() : tripleOrNone(samples[i].trueHitMeters));
     shownPoints.append(tripleOrNone(shown[i].shownMeters));
     surfaceWeights.append(shown[i].surfaceWeight);
     skyWeights.append(shown[i].skyWeight);
     fallbackWeights.append(shown[i].fallbackWeight);
+    py::list pixel;
+    for (const ShownTexel& t : shown[i].texels)
+      pixel.append(py::make_tuple(t.weight, t.pointMeters.x, t.pointMeters.y, t.pointMeters.z));
+    texels.append(pixel);
   }
   py::dict out;
   out["true_hit"] = trueHits;
@@ -196,6 +200,7 @@ py::dict engineReflections(const std::string& scenePath, const std::string& prox
   out["surface_weight"] = surfaceWeights;
   out["sky_weight"] = skyWeights;
   out["fallback_weight"] = fallbackWeights;
+  out["texels"] = texels;
   return out;
 }
 
@@ -394,7 +399,8 @@ PYBIND11_MODULE(probeproxy_py, m) {
         "For each shaded point (world metres, Z up), with its surface normal and the eye that "
         "sees it: {true_hit: where its mirror reflection lands (None: the sky), shown: the "
         "weight-averaged level point the engine's probe lookups show there (None: none meets a "
-        "surface), surface_weight, sky_weight, fallback_weight}, each a list. scene: a scene "
+        "surface), surface_weight, sky_weight, fallback_weight, texels: [(weight, x, y, z) of each "
+        "weighted lookup that meets a surface]}, each a list. scene: a scene "
         "file (its level); proxies: a proxies.json; engine: as `survey --engine`.");
   m.def("level_triangles", &levelTriangles, py::arg("scene"),
         "The level of a scene file as the library loads it: (vertices, triangles), world "

@@ -17,7 +17,11 @@
 extends SceneTree
 
 const MIRROR_NORMAL_Y = 0.7
-const CAPTURE_FRAMES = 40
+# Godot 3 updates one UPDATE_ONCE probe at a time, one step a frame (VisualServerScene::
+# render_probes: six faces, then a filter step per roughness level), so the frames waited for
+# grow with the probes: a third probe was not ready after 40 frames and its floor went black.
+const FRAMES_PER_PROBE = 24
+const SETTLE_FRAMES = 10
 
 
 func read_json(path):
@@ -124,7 +128,10 @@ func _init():
 	camera.far = spec["far"]
 	root.add_child(camera)
 	camera.current = true
-	for i in range(CAPTURE_FRAMES):
+	var probe_count = 0
+	if probed:
+		probe_count = root.get_node("probeproxy_probes").get_child_count()
+	for i in range(SETTLE_FRAMES + FRAMES_PER_PROBE * probe_count):
 		yield(self, "idle_frame")
 	for c in spec["cameras"]:
 		camera.fov = c["hfov_deg"]

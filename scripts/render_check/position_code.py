@@ -21,3 +21,13 @@ def codes(size):
     while max(size) / 64.0 > periods[-1] / 4.0:
         periods.append(periods[-1] * 8.0)
     return [(axis, p) for axis in range(3) for p in reversed(periods)]
+
+
+def colour(points, lo, size, axis, period):
+    """The code colour (coarse, cos, sin) of one (axis, period) bake at level points (n x 3):
+    what the frame writers' shaders write, for the decoder's prediction of a blended pixel."""
+    import numpy as np
+    p = np.asarray(points, dtype=float)[:, axis]
+    phase = 2.0 * np.pi * p / period
+    return np.stack([1.0 + (p - lo[axis]) / size[axis], 0.5 + 0.5 * np.cos(phase),
+                     0.5 + 0.5 * np.sin(phase)], axis=-1)

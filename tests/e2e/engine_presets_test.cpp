@@ -115,14 +115,15 @@ double cornerDistance(const std::vector<glm::dvec3>& a, const std::vector<glm::d
   return worst;
 }
 
-// The box the entry says it was made from: the build's candidate of that name, as a box.
+// The box the entry says it was made from: the build's candidate of that name, as a box, its
+// bottom kFloorClearanceMeters under the floor as every engine's box (runtime_export.h).
 BoxShape sourceBox(const ProbeProxyBuild& build, const nlohmann::json& entry) {
   const std::string name = entry["candidate"].get<std::string>();
   for (std::size_t c = 0; c < build.candidates.size(); ++c) {
     if (candidateName(build.candidates[c]) != name) continue;
     EXPECT_EQ(entry["kept_proxy"].get<bool>(), c == build.kept) << build.probe << " " << name;
     const std::optional<BoxShape> box = keptBox(build.candidates[c].shape);
-    if (box) return *box;
+    if (box) return withBottomLowered(*box, kFloorClearanceMeters);
   }
   ADD_FAILURE() << build.probe << ": no box candidate named " << name;
   return {};

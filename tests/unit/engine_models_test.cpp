@@ -238,6 +238,55 @@ TEST(Godot4Model, BlendDistanceSquaredProductAndTheFarthestProbeFirst) {
   EXPECT_EQ(w, (std::map<int, double>{{0, 1.0}}));
 }
 
+// Godot renders each cube face to MAX(max_distance, the capture point's distance to the box's
+// face along it) (_render_reflection_probe_step) and drops what lies on or past that plane. With
+// max_distance 0, Godot's default, the walls a room's box was fitted to are not in its cubemap:
+// the survey leaves that reflection to the fallback. The export's max_distance (the farthest
+// corner, 5.591 m from the centre of a 10 x 4 x 3 m room) holds every point of the box.
+TEST(GodotModels, EachCubeFaceSeesToMaxDistanceOrTheBoxFaceAndNoFurther) {
+  const BoxShape room{{5.0, 2.0, 1.5}, {5.0, 2.0, 1.5}, kUnturned};
+  const LevelRayCaster level(boxRoom({0, 0, 0}, {10, 4, 3}));
+  RuntimeExport exported = oneProbe(room);
+  ASSERT_EQ(exported.probes[0].engines.godot->maxDistance, 5.591);
+  RuntimeExport godotDefault = exported;
+  godotDefault.probes[0].engines.godot->maxDistance = 0.0;
+  godotDefault.probes[0].engines.godot4->maxDistance = 0.0;
+
+  const EngineProbe seesTheRoom = godot3Model(exported).probes[0];
+  EXPECT_TRUE(capturedAt(seesTheRoom, {10.0, 2.0, 1.5}));   // +x face: 5 m deep
+  EXPECT_TRUE(capturedAt(seesTheRoom, {10.0, 4.0, 3.0}));   // the farthest corner
+  EXPECT_FALSE(capturedAt(seesTheRoom, {10.6, 2.0, 1.5}));  // 5.6 m: past 5.591
+  const EngineProbe faceDeep = godot4Model(godotDefault).probes[0];
+  EXPECT_FALSE(capturedAt(faceDeep, {10.0, 2.0, 1.5}));  // on the far plane: dropped
+  EXPECT_TRUE(capturedAt(faceDeep, {9.99, 2.0, 1.5}));
+  EXPECT_FALSE(capturedAt(faceDeep, {5.0, 2.0, 3.0}));  // the ceiling, 1.5 m up
+  EXPECT_TRUE(capturedAt(faceDeep, {9.0, 3.9, 2.9}));   // through the +x face, 4 m deep
+
+  // A wall on the far plane is in or out by the rounding of the traced hit, as in Godot; a box
+  // 0.5 m short of the x = 10 wall leaves it out for sure.
+  RuntimeExport shortOfTheWall = godotDefault;
+  for (auto* g :
+       {&shortOfTheWall.probes[0].engines.godot, &shortOfTheWall.probes[0].engines.godot4})
+    (*g)->size.x = 9.0;
+  ReflectionSample s;
+  s.xMeters = {3.0, 1.5, 1.0};
+  s.reflected = glm::normalize(glm::dvec3(1.0, 0.3, 0.2));  // meets the x = 10 wall
+  s.eyeMeters = s.xMeters + 2.0 * glm::dvec3(-s.reflected.x, -s.reflected.y, s.reflected.z);
+  traceTrueHit(level, s);
+  for (const Engine e : {Engine::Godot3, Engine::Godot4}) {
+    SCOPED_TRACE(std::string(engineName(e)));
+    const SurveySampleError seen =
+        blendedSampleError(level, engineModel(e, exported, BlendOptions{}), s);
+    EXPECT_NEAR(seen.errorDeg, 0.0, 1e-5);
+    EXPECT_EQ(seen.uncoveredWeight, 0.0);
+    const SurveySampleError clipped =
+        blendedSampleError(level, engineModel(e, shortOfTheWall, BlendOptions{}), s);
+    EXPECT_TRUE(std::isnan(clipped.errorDeg));
+    EXPECT_NEAR(clipped.uncoveredWeight, 1.0, 1e-12);
+    EXPECT_EQ(clipped.occludedWeight, 0.0);
+  }
+}
+
 TEST(BevyModel, FalloffRampsToTheCubesFacesAndTheEnvironmentFillsWhatIsLeft) {
   const BoxShape cube{{2.0, 2.0, 2.0}, {2.0, 2.0, 2.0}, kUnturned};
   const EngineModel model = bevyModel(oneProbe(cube));  // falloff = 1 m / 2 m = 0.5 per axis
@@ -378,11 +427,13 @@ TEST(EnginePresetPolicy, ClearingTheFloorLowersTheBoxesBottomByTheFadeAndNothing
   EXPECT_NEAR(hdrp.influenceBox.centerMeters.z - hdrp.influenceBox.halfExtentsMeters.z, -0.5,
               1e-12);
   EXPECT_NEAR(hdrp.blendNegative.z, 0.5, 1e-12);
-  // The Godot 4 model now gives the floor under the capture point the probe's full weight.
+  // The Godot 4 model now gives the floor under the capture point the probe's full weight;
+  // the export as `build` writes it only lowers the bottom 2 cm, 0.04 of Godot 4's 0.5 m blend:
+  // (0.02 / 0.5)^2 of the weight.
   const RuntimeExport plain = makeRuntimeExport(r.scene, r.builds);
   const RuntimeExport cleared = makeRuntimeExport(r.scene, r.builds, clear);
   const glm::dvec3 floor{1.0, 0.0, 0.0};
-  EXPECT_EQ(godot4Model(plain).blend(floor, kEye).fallbackWeight, 1.0);
+  EXPECT_NEAR(godot4Model(plain).blend(floor, kEye).fallbackWeight, 1.0 - 0.04 * 0.04, 1e-12);
   EXPECT_EQ(godot4Model(cleared).blend(floor, kEye).fallbackWeight, 0.0);
 }
 
@@ -396,8 +447,8 @@ TEST(EnginePresetPolicy, ClippingCutsTheBoxInPlanToTheInfluenceAndScalingWidensT
   EXPECT_NEAR(box.centerMeters.x - box.halfExtentsMeters.x, -1.0, 1e-9);  // the influence's
   EXPECT_NEAR(box.centerMeters.x + box.halfExtentsMeters.x, 3.0, 1e-9);   // room's and its
   EXPECT_NEAR(box.halfExtentsMeters.y, 2.0, 1e-9);
-  EXPECT_NEAR(box.halfExtentsMeters.z, 1.5, 1e-9);  // the height stays
-  EXPECT_NEAR(e.godot->blendDistance, 1.0, 1e-12);  // twice the 0.5 m fade
+  EXPECT_NEAR(box.halfExtentsMeters.z, 1.51, 1e-9);  // the height stays, the floor 2 cm inside
+  EXPECT_NEAR(e.godot->blendDistance, 1.0, 1e-12);   // twice the 0.5 m fade
   EXPECT_EQ(makeRuntimeExport(r.scene, r.builds, EnginePresetPolicy{0.0})
                 .probes[0]
                 .engines.godot->blendDistance,

@@ -719,11 +719,12 @@ TEST_F(RuntimeExport, EnginesTakeTheKeptBoxElseTheBestBoxAndUnityAnAabb) {
   EXPECT_EQ(c6.unrealBox->source.candidate, "convex_6");
   EXPECT_TRUE(c6.unrealBox->source.keptProxy);
   EXPECT_EQ(c6.unrealBox->source.error.p95Deg, 1e-5);
-  expectClose(c6.unrealBox->scale3D, {300.0, 200.0, 150.0}, 1e-12);
+  // The room box, its bottom 2 cm under the floor it stands on (Unreal's cm, half extents).
+  expectClose(c6.unrealBox->scale3D, {300.0, 200.0, 151.0}, 1e-12);
   EXPECT_EQ(c6.unity->source.candidate, "convex_6");
   // The room's size, shrunk on every side by the blend distance Unity grows it by again.
   const double b = c6.unity->blendDistance;
-  expectClose(c6.unity->size + glm::dvec3(2.0 * b, b, 2.0 * b), {6.0, 3.0, 4.0}, 1e-14);
+  expectClose(c6.unity->size + glm::dvec3(2.0 * b, b, 2.0 * b), {6.0, 3.02, 4.0}, 1e-14);
   EXPECT_TRUE(c6.unityHdrp && c6.eevee);
   EXPECT_EQ(c6.eevee->source.candidate, "convex_6");
 

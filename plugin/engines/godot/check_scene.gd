@@ -60,6 +60,8 @@ func _init():
 				moved = true
 		expect(moved != entry["exact"], n + ": exact is %s but Godot's clamp moved=%s" % [entry["exact"], moved])
 		expect(close3(node.origin_offset, offset), n + ": origin_offset %s, expected %s" % [node.origin_offset, offset])
+		var max_distance = entry.get("max_distance", 0.0)
+		expect(close(node.max_distance, max_distance), n + ": max_distance %s, expected %s" % [node.max_distance, max_distance])
 		expect(node.box_projection == entry["box_projection"], n + ": box_projection")
 		expect(node.interior_enable, n + ": interior")
 		expect(close(node.get_meta("probeproxy_blend_distance"), entry["blend_distance"]), n + ": blend distance")

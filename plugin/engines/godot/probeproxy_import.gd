@@ -7,7 +7,9 @@
 # Each node: name = the probe's name; transform = the entry's origin and rotation (Godot axes,
 # metres); extents = size / 2 (Godot 3's extents are half sizes; Godot 4's `size` is the full
 # size); origin_offset = the capture point in the node's frame (Godot clamps it 1 cm inside the
-# box: `exact` false in proxies.json says where); box_projection on; interior on (probeproxy's
+# box: `exact` false in proxies.json says where); max_distance (the capture point's distance to
+# the box's farthest corner: Godot's default 0 clips each cube face at the box's face, and the
+# walls the box was fitted to with it); box_projection on; interior on (probeproxy's
 # probes model rooms; pass interior = false for outdoor probes). Godot 3 has no blend distance:
 # the entry's blend_distance is kept as the metadata "probeproxy_blend_distance" (Godot 4.3+
 # sets ReflectionProbe.blend_distance). Also kept as metadata: "probeproxy_exact" and
@@ -46,6 +48,9 @@ static func make_probe(name, entry, interior = true):
 	# extents before origin_offset: set_origin_offset clamps against the current extents.
 	probe.extents = vec3(entry["size"]) / 2.0
 	probe.origin_offset = vec3(entry["origin_offset"])
+	# Exports before max_distance was written leave Godot's default (0: each face sees only to
+	# the box's face, and a wall on it is clipped).
+	probe.max_distance = entry.get("max_distance", 0.0)
 	probe.box_projection = entry["box_projection"]
 	probe.interior_enable = interior
 	probe.set_meta("probeproxy_blend_distance", entry["blend_distance"])
