@@ -176,7 +176,7 @@ struct EnginePresetPolicy {
   // inside the box leave a floor lying near its bottom face to the sky; a mirror floor's
   // reflections go up, so they never meet the lowered face. Only boxes whose own z is the
   // world's vertical (an aabb, an obb turned about Z). Without it the bottom still goes 2 cm
-  // under the floor (make_runtime_export.cpp, kFloorClearanceMeters): never a floor on a face.
+  // under the floor (kFloorClearanceMeters, above): never a floor on a face.
   bool clearTheFloor = false;
   // Cut each engine box, in plan, to the probe's influence volume (outer range): where the box
   // is also where the probe applies (Unity, Unreal, Godot, Bevy), a room-sized box reaches floor
