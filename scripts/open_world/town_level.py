@@ -5,15 +5,16 @@ as the floor grows (1 ha, 4 ha, 25 ha...):
     town_level.py OUT_FOLDER --size 100 [--seed 1]
 
 The level (binary PLY, Z up, metres) is a square of SIZE x SIZE m:
-  - terrain: a height field on a 2 m grid, a few metres of gentle hills (slopes under 10 deg);
+  - terrain: a height field on a 2 m grid, a few metres of gentle hills (slopes under 10 deg),
+    eased over 4 m into the levelled plots;
   - streets every 40 m both ways, 8 m wide, following the terrain;
   - a plaza, the block nearest the centre left open and paved flat, a fountain in its middle;
   - in every other block, buildings on terrain levelled under their plots: walls 0.3 m thick
     and 3.5 m high, a roof, a doorway (1.2 x 2.2 m) onto the street, and an inner wall with a
     doorway of its own that splits the building into two rooms.
 The same SIZE and SEED give the same bytes. Beside the level, OUT_FOLDER/town.scene.json holds
-one probe at the plaza (the walkable floor is flood-filled from its capture point) and, per
-building, nothing: `layout` places the rest.
+one probe at the plaza: the walkable floor is flood-filled from its capture point, and `layout`
+places the rest.
 """
 import argparse
 import math
@@ -142,9 +143,19 @@ def town(size_m, seed):
                     plots.append((side, x, y0, x + w, y1, z))
                     x += w + rng.uniform(1.5, 4.0)
 
+    # A pad reaches 4 m around it, less than a street: only the pads of the blocks around a point
+    # can, taken in the order they were made (the easing is applied in that order).
+    near = {}
+    for index, (x0, y0, x1, y1, _) in enumerate(pads):
+        block = (int((x0 + x1) / 2 // pitch), int((y0 + y1) / 2 // pitch))
+        near.setdefault(block, []).append(index)
+
     def ground(x, y):
         z = height(x, y)
-        for x0, y0, x1, y1, zp in pads:
+        bi, bj = int(x // pitch), int(y // pitch)
+        around = sorted(i for di in (-1, 0, 1) for dj in (-1, 0, 1)
+                        for i in near.get((bi + di, bj + dj), []))
+        for x0, y0, x1, y1, zp in (pads[i] for i in around):
             dx = max(x0 - x, 0.0, x - x1)
             dy = max(y0 - y, 0.0, y - y1)
             dist = math.hypot(dx, dy)
@@ -169,10 +180,11 @@ def town(size_m, seed):
     edge = [(0, 0), (size_m, 0), (size_m, size_m), (0, size_m), (0, 0)]
     for (ax, ay), (bx, by) in zip(edge, edge[1:]):
         lo = min(height(ax, ay), height(bx, by)) - HILL_M
+        hi = lo + 2 * HILL_M + 3.0
         if ax == bx:
-            mesh.box((ax - WALL_M / 2, min(ay, by), lo), (ax + WALL_M / 2, max(ay, by), lo + 2 * HILL_M + 3.0))
+            mesh.box((ax - WALL_M / 2, min(ay, by), lo), (ax + WALL_M / 2, max(ay, by), hi))
         else:
-            mesh.box((min(ax, bx), ay - WALL_M / 2, lo), (max(ax, bx), ay + WALL_M / 2, lo + 2 * HILL_M + 3.0))
+            mesh.box((min(ax, bx), ay - WALL_M / 2, lo), (max(ax, bx), ay + WALL_M / 2, hi))
     plaza = None
     for kind, x0, y0, x1, y1, z in plots:
         if kind == "plaza":
