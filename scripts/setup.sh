@@ -23,6 +23,7 @@ packages=(
   libembree-dev libtbb-dev                           # ray casting, threads
   libassimp-dev                                      # glTF/GLB, OBJ, PLY, OFF level meshes
   libzip-dev                                         # Quake 3 .pk3 archives (zip)
+  libroaring-dev                                     # compressed sets of floor samples (layout)
   libopenimageio-dev openimageio-tools               # EXR/HDR/PNG cubemaps and reports
   libglm-dev nlohmann-json3-dev libcli11-dev
   pybind11-dev python3-dev                           # the Blender add-on's module

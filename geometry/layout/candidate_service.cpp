@@ -28,14 +28,13 @@ Probe candidateFitProbe(glm::dvec3 captureMeters, double fitMeters) {
 }
 
 std::vector<float> errorsOnSeen(const ProxyShape& proxy, glm::dvec3 captureMeters,
-                                std::span<const FloorSample> samples,
-                                std::span<const std::uint32_t> seen) {
+                                std::span<const FloorSample> samples, const IndexSet& seen) {
   std::vector<float> errors;
-  errors.reserve(seen.size());
-  for (std::uint32_t i : seen) {
+  errors.reserve(countOf(seen));
+  forEachIndex(seen, [&](std::uint32_t i) {
     const double error = angularErrorDeg(proxy, captureMeters, samples[i].sample);
     errors.push_back(static_cast<float>(std::isnan(error) ? kMissErrorDeg : error));
-  }
+  });
   return errors;
 }
 
@@ -48,8 +47,8 @@ CaptureView seeFromCapture(const LevelRayCaster& level, glm::dvec3 captureMeters
 }
 
 CandidateService serveFloor(const LevelRayCaster& level, const CaptureView& v, double fitMeters,
-                            std::span<const FloorSample> samples,
-                            std::span<const std::uint32_t> seen, const LayoutOptions& o) {
+                            std::span<const FloorSample> samples, const IndexSet& seen,
+                            const LayoutOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   const glm::dvec3 captureMeters = v.view.captureMeters;
   CandidateService s;
@@ -59,8 +58,11 @@ CandidateService serveFloor(const LevelRayCaster& level, const CaptureView& v, d
                                                 v.view, v.hull, std::nullopt, o.candidateProxy);
   s.proxy = build.candidates[build.kept].shape;
   const std::vector<float> errors = errorsOnSeen(s.proxy, captureMeters, samples, seen);
-  for (std::size_t k = 0; k < seen.size(); ++k)
-    if (errors[k] <= o.toleranceDeg) s.served.push_back(seen[k]);
+  std::size_t k = 0;
+  forEachIndex(seen, [&](std::uint32_t i) {
+    if (errors[k++] <= o.toleranceDeg) s.served.add(i);
+  });
+  compact(s.served);
   s.buildMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return s;

@@ -8,6 +8,7 @@
 
 #include "core/proxy/proxy_shape.h"
 #include "core/scene/probe.h"
+#include "geometry/layout/index_set.h"
 #include "geometry/layout/layout_options.h"
 #include "geometry/probe_proxies/fit_candidates.h"
 #include "geometry/probe_proxies/probe_view.h"
@@ -32,8 +33,8 @@ struct CandidateService {
   glm::dvec3 captureMeters{0.0};
   double fitMeters = 0.0;  // the radius of the floor its proxy was fitted to
   ProxyShape proxy;
-  std::vector<std::uint32_t> served;  // seen samples with error <= tolerance, ascending
-  double buildMs = 0.0;               // proxy and evaluation
+  IndexSet served;       // seen samples with error <= tolerance
+  double buildMs = 0.0;  // proxy and evaluation
 };
 
 // What a capture point sees, made once for all its fit regions: the depth cube at the
@@ -47,13 +48,12 @@ CaptureView seeFromCapture(const LevelRayCaster& level, glm::dvec3 captureMeters
 
 // `seen`: the samples the capture point sees (CaptureSight::seen).
 CandidateService serveFloor(const LevelRayCaster& level, const CaptureView& view, double fitMeters,
-                            std::span<const FloorSample> samples,
-                            std::span<const std::uint32_t> seen, const LayoutOptions& options);
+                            std::span<const FloorSample> samples, const IndexSet& seen,
+                            const LayoutOptions& options);
 
-// A proxy's error on each of `seen` (a miss is kMissErrorDeg), in that order.
+// A proxy's error on each of `seen` (a miss is kMissErrorDeg), ascending by sample.
 std::vector<float> errorsOnSeen(const ProxyShape& proxy, glm::dvec3 captureMeters,
-                                std::span<const FloorSample> samples,
-                                std::span<const std::uint32_t> seen);
+                                std::span<const FloorSample> samples, const IndexSet& seen);
 
 // The sphere a candidate's proxy is fitted to: the floor connected to the capture point in it.
 Probe candidateFitProbe(glm::dvec3 captureMeters, double fitMeters);

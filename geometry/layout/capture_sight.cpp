@@ -63,8 +63,9 @@ CaptureSight captureSight(const LevelRayCaster& level, glm::dvec3 capture,
       ++sight.raysCast;
       answer = trueHitHiddenFrom(level, capture, s) ? Sight::Hidden : Sight::Seen;
     }
-    if (answer == Sight::Seen) sight.seen.push_back(static_cast<std::uint32_t>(i));
+    if (answer == Sight::Seen) sight.seen.add(static_cast<std::uint32_t>(i));
   }
+  compact(sight.seen);
   return sight;
 }
 

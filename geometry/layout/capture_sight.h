@@ -10,22 +10,22 @@
 // direction is seen, one farther than every texel is hidden, and only the samples on a
 // silhouette (or on a face's edge) get a ray. Deterministic: the cube and the rays are.
 
+#include "geometry/layout/index_set.h"
 #include "geometry/raycast/level_ray_caster.h"
 #include "geometry/survey/floor_samples.h"
 
 #include <glm/vec3.hpp>
 
-#include <cstdint>
+#include <cstddef>
 #include <span>
-#include <vector>
 
 namespace probeproxy {
 
 inline constexpr int kSightFaceSize = 64;  // texels 1.4 degrees across: few samples need a ray
 
 struct CaptureSight {
-  std::vector<std::uint32_t> seen;  // indices into the floor samples, ascending
-  std::size_t raysCast = 0;         // samples the depth cube left undecided
+  IndexSet seen;             // indices into the floor samples
+  std::size_t raysCast = 0;  // samples the depth cube left undecided
 };
 
 // `maxDistanceMeters`: samples whose floor point is farther are not considered (0: no limit).

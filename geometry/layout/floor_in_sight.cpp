@@ -18,7 +18,8 @@ FloorInSight::FloorInSight(const LevelRayCaster& level, const WalkableFloor& flo
       cellCount_(floor.cells.size()),
       targets_(floor.cells.size()),
       viewpoints_(captures.size()),
-      known_(new std::atomic<std::uint8_t>[captures.size() * floor.cells.size()]()) {
+      blocksPerCapture_((floor.cells.size() + kBlockCells - 1) / kBlockCells),
+      blocks_(new std::atomic<Block*>[captures.size() * blocksPerCapture_]()) {
   tbb::parallel_for(std::size_t{0}, cellCount_, [&](std::size_t c) {
     targets_[c] = roomTargetsOver(level, floor.cells[c].pointMeters);
   });
@@ -26,8 +27,22 @@ FloorInSight::FloorInSight(const LevelRayCaster& level, const WalkableFloor& flo
                     [&](std::size_t i) { viewpoints_[i] = roomViewpoints(level, captures[i]); });
 }
 
+FloorInSight::~FloorInSight() {
+  for (std::size_t b = 0; b < viewpoints_.size() * blocksPerCapture_; ++b)
+    delete[] blocks_[b].load();
+}
+
 bool FloorInSight::inSight(std::size_t capture, std::size_t cell) const {
-  std::atomic<std::uint8_t>& known = known_[capture * cellCount_ + cell];
+  std::atomic<Block*>& slot = blocks_[capture * blocksPerCapture_ + cell / kBlockCells];
+  Block* block = slot.load(std::memory_order_acquire);
+  if (block == nullptr) {
+    Block* made = new Block[kBlockCells]();
+    if (slot.compare_exchange_strong(block, made, std::memory_order_acq_rel))
+      block = made;
+    else
+      delete[] made;  // another thread made it first: `block` is now that one
+  }
+  std::atomic<std::uint8_t>& known = block[cell % kBlockCells];
   std::uint8_t answer = known.load(std::memory_order_relaxed);
   if (answer == 0) {
     answer = roomInSight(*level_, viewpoints_[capture], targets_[cell]) ? kInSight : kHidden;

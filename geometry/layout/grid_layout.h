@@ -24,9 +24,8 @@ std::vector<GridCellProbe> gridLayout(const LevelRayCaster& level, const Walkabl
 
 // The grid of `spacingMeters`, or with `maxProbes` > 0 the finest with at most that many
 // probes; `spacingTaken` says which.
-std::vector<GridCellProbe> gridLayoutWithin(const LevelRayCaster& level,
-                                            const WalkableFloor& floor, double spacingMeters,
-                                            double captureHeightMeters, std::size_t maxProbes,
-                                            double& spacingTaken);
+std::vector<GridCellProbe> gridLayoutWithin(const LevelRayCaster& level, const WalkableFloor& floor,
+                                            double spacingMeters, double captureHeightMeters,
+                                            std::size_t maxProbes, double& spacingTaken);
 
 }  // namespace probeproxy

@@ -57,8 +57,9 @@ Candidates serveAll(const LevelRayCaster& level, const std::vector<LayoutCandida
     const glm::dvec3 capture = captures[i].captureMeters;
     c.sights[i] = captureSight(level, capture, samples, o.reachMeters);
     double farthest = 0.0;
-    for (std::uint32_t s : c.sights[i].seen)
+    forEachIndex(c.sights[i].seen, [&](std::uint32_t s) {
       farthest = std::max(farthest, glm::distance(samples[s].sample.xMeters, capture));
+    });
     const CaptureView view = seeFromCapture(level, capture, o);
     for (double fit : fitRadiiFor(farthest, o.reachMeters)) {
       perCapture[i].push_back(serveFloor(level, view, fit, samples, c.sights[i].seen, o));
@@ -81,7 +82,7 @@ double servedShare(std::span<const CandidateService> services, std::span<const s
   if (!keptCells.empty())
     for (std::size_t i = 0; i < samples.size(); ++i) served[i] = keptCells[samples[i].cell];
   for (std::size_t c : which)
-    for (std::uint32_t s : services[c].served) served[s] = 1;
+    forEachIndex(services[c].served, [&](std::uint32_t s) { served[s] = 1; });
   double area = 0.0, servedArea = 0.0;
   for (std::size_t i = 0; i < samples.size(); ++i) {
     area += samples[i].areaSquareMeters;

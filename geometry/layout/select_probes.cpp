@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <queue>
@@ -11,48 +12,73 @@ namespace probeproxy {
 
 namespace {
 
+// What one candidate holds of the floor, over the window of cells from the first it holds in
+// sight and sees a sample of to the last (cells are numbered row by row: a candidate in a room
+// has a window of a few rows): per cell 0 where it does not, else 1 + the samples of the cell
+// it serves within the tolerance. One byte a cell of its window, however large the level.
+struct CandidateCells {
+  std::size_t first = 0;
+  std::vector<std::uint8_t> code;
+  std::uint8_t at(std::size_t cell) const {
+    return cell >= first && cell - first < code.size() ? code[cell - first] : 0;
+  }
+};
+
 // Per candidate, the share of each floor cell's samples it serves within the tolerance (0 out of
 // its sight) and the cells it sees a sample of, of the floor it holds in sight; per cell, the
 // best share any candidate serves.
 struct CellSets {
-  std::vector<std::vector<char>> seen;
-  std::vector<std::vector<float>> share;
+  std::vector<CandidateCells> candidates;
+  std::vector<int> samplesPerCell;
   std::vector<float> best;
 
+  bool sees(std::size_t c, std::size_t cell) const { return candidates[c].at(cell) != 0; }
+  float share(std::size_t c, std::size_t cell) const {
+    const std::uint8_t code = candidates[c].at(cell);
+    return code == 0 ? 0.0f
+                     : static_cast<float>(code - 1) / static_cast<float>(samplesPerCell[cell]);
+  }
   // How well candidate c serves a cell against the best any candidate does there: a strip of a
   // range is judged by this (floor_rectangles.h), and floor nobody serves is anybody's who sees
   // it.
   double score(std::size_t c, std::size_t cell) const {
-    if (!seen[c][cell]) return 0.0;
-    return best[cell] > 0.0f ? share[c][cell] / best[cell] : 1.0;
+    if (!sees(c, cell)) return 0.0;
+    return best[cell] > 0.0f ? share(c, cell) / best[cell] : 1.0;
   }
 };
 
 CellSets cellSets(std::span<const CandidateService> services, std::span<const CaptureSight> sights,
                   const FloorInSight& inSight, std::span<const FloorSample> samples,
                   std::size_t cellCount) {
-  std::vector<int> perCell(cellCount, 0);
-  for (const FloorSample& s : samples) ++perCell[s.cell];
   CellSets sets;
-  sets.seen.resize(services.size());
-  sets.share.resize(services.size());
+  sets.samplesPerCell.assign(cellCount, 0);
+  for (const FloorSample& s : samples) ++sets.samplesPerCell[s.cell];
+  sets.candidates.resize(services.size());
   tbb::parallel_for(std::size_t{0}, services.size(), [&](std::size_t c) {
     const std::size_t capture = services[c].capture;
-    std::vector<int> count(cellCount, 0);
-    for (std::uint32_t i : services[c].served) ++count[samples[i].cell];
-    sets.seen[c].assign(cellCount, 0);
-    for (std::uint32_t i : sights[capture].seen) sets.seen[c][samples[i].cell] = 1;
-    sets.share[c].assign(cellCount, 0.0f);
-    for (std::size_t cell = 0; cell < cellCount; ++cell) {
-      if (sets.seen[c][cell]) sets.seen[c][cell] = inSight.inSight(capture, cell);
-      if (!sets.seen[c][cell] || perCell[cell] == 0) continue;
-      sets.share[c][cell] = static_cast<float>(count[cell]) / static_cast<float>(perCell[cell]);
-    }
+    std::vector<std::size_t> held;  // cells it sees a sample of and holds in sight, ascending
+    forEachIndex(sights[capture].seen, [&](std::uint32_t i) {
+      const std::size_t cell = samples[i].cell;
+      if ((held.empty() || held.back() != cell) && inSight.inSight(capture, cell))
+        held.push_back(cell);
+    });
+    if (held.empty()) return;
+    CandidateCells& window = sets.candidates[c];
+    window.first = held.front();
+    window.code.assign(held.back() - held.front() + 1, 0);
+    for (std::size_t cell : held) window.code[cell - window.first] = 1;
+    forEachIndex(services[c].served, [&](std::uint32_t i) {
+      const std::size_t cell = samples[i].cell;
+      if (window.at(cell) != 0) ++window.code[cell - window.first];
+    });
   });
   sets.best.assign(cellCount, 0.0f);
-  for (const std::vector<float>& share : sets.share)
-    for (std::size_t cell = 0; cell < cellCount; ++cell)
-      sets.best[cell] = std::max(sets.best[cell], share[cell]);
+  for (std::size_t c = 0; c < services.size(); ++c) {
+    const CandidateCells& window = sets.candidates[c];
+    for (std::size_t k = 0; k < window.code.size(); ++k)
+      sets.best[window.first + k] =
+          std::max(sets.best[window.first + k], sets.share(c, window.first + k));
+  }
   return sets;
 }
 
@@ -201,12 +227,11 @@ void dropAbsorbed(const FloorColumns& columns, const CellSets& sets,
         clear = j == p || j == q || keepsGap(merged, selection.ranges[j], gapCells);
       if (!clear) continue;
       double gained = 0.0, served = 0.0;
-      const std::vector<float>& servedByQ = sets.share[selection.chosen[q]];
       columns.forEachIn(merged, [&](std::size_t cell) {
         if (selection.ranges[q].holds(columns.floor().cells[cell])) return;
         const double area = columns.floor().cells[cell].areaSquareMeters;
         gained += area;
-        served += servedByQ[cell] * area;
+        served += sets.share(selection.chosen[q], cell) * area;
       });
       if (served < acceptedShare * gained ||
           !gainsOnlyFloorInSight(columns, services, inSight, selection, q, merged))
@@ -245,18 +270,19 @@ std::optional<ProbeSelection> oneProbeServesAsMuch(
     const double a = floor.cells[cell].areaSquareMeters;
     area += a;
     float coverShare = 0.0f;
-    for (std::size_t c : cover.chosen) coverShare = std::max(coverShare, sets.share[c][cell]);
+    for (std::size_t c : cover.chosen) coverShare = std::max(coverShare, sets.share(c, cell));
     coverServed += coverShare * a;
   }
-  std::size_t best = sets.share.size();
+  const std::size_t candidates = sets.candidates.size();
+  std::size_t best = candidates;
   double bestServed = 0.0;
-  for (std::size_t c = 0; c < sets.share.size(); ++c) {
+  for (std::size_t c = 0; c < candidates; ++c) {
     double served = 0.0;
     for (std::size_t cell = 0; cell < floor.cells.size(); ++cell)
-      served += sets.share[c][cell] * floor.cells[cell].areaSquareMeters;
+      served += sets.share(c, cell) * floor.cells[cell].areaSquareMeters;
     if (served > bestServed) best = c, bestServed = served;
   }
-  if (best == sets.share.size() || bestServed < coverServed - slack * area ||
+  if (best == candidates || bestServed < coverServed - slack * area ||
       bestServed < acceptedShare * area)
     return std::nullopt;
   for (std::size_t cell = 0; cell < floor.cells.size(); ++cell)
@@ -314,7 +340,7 @@ void growIntoOwnBands(const FloorColumns& columns, const CellSets& sets, int gap
                       std::span<const char> keptCovered, ProbeSelection& selection) {
   std::vector<FloorRect>& ranges = selection.ranges;
   for (std::size_t i = 0; i < ranges.size(); ++i) {
-    const std::vector<char>& seen = sets.seen[selection.chosen[i]];
+    const std::size_t c = selection.chosen[i];
     const auto othersBand = [&](std::size_t cell) {
       if (!keptCovered.empty() && keptCovered[cell]) return true;
       for (std::size_t j = 0; j < ranges.size(); ++j)
@@ -325,7 +351,9 @@ void growIntoOwnBands(const FloorColumns& columns, const CellSets& sets, int gap
     const FloorRect band = widened(ranges[i], gapCells);
     ranges[i] = grownFloorRect(
         columns, ranges[i],
-        [&](std::size_t cell) { return seen[cell] && band.holds(columns.floor().cells[cell]); },
+        [&](std::size_t cell) {
+          return sets.sees(c, cell) && band.holds(columns.floor().cells[cell]);
+        },
         othersBand, 1.0);
   }
 }
@@ -374,16 +402,16 @@ ProbeSelection selectProbes(std::span<const CandidateService> services,
   for (const SelectionOptions::CoverPass& pass : o.passes) {
     cover.greedy([&](std::size_t c, std::size_t cell) { return sets.score(c, cell); },
                  [&](std::size_t c, std::size_t cell) {
-                   const double unserved = sets.best[cell] == 0.0f && sets.seen[c][cell];
-                   return (sets.share[c][cell] + 0.25 * unserved) * area(cell);
+                   const double unserved = sets.best[cell] == 0.0f && sets.sees(c, cell);
+                   return (sets.share(c, cell) + 0.25 * unserved) * area(cell);
                  },
                  pass.acceptedShare, std::max(minGain, pass.minGainSquareMeters));
   }
   // What is left outside every range and band: the candidates that see it, the ones that serve
   // it first.
-  cover.greedy([&](std::size_t c, std::size_t cell) { return sets.seen[c][cell] != 0; },
+  cover.greedy([&](std::size_t c, std::size_t cell) { return sets.sees(c, cell) ? 1.0 : 0.0; },
                [&](std::size_t c, std::size_t cell) {
-                 return sets.seen[c][cell] ? (0.25 + sets.share[c][cell]) * area(cell) : 0.0;
+                 return sets.sees(c, cell) ? (0.25 + sets.share(c, cell)) * area(cell) : 0.0;
                },
                o.acceptedShare, minGain);
   dropAbsorbed(columns, sets, services, inSight, o.acceptedShare, o.gapCells, cover.selection);

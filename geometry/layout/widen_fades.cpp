@@ -6,12 +6,14 @@
 #include "geometry/validate/camera_space.h"
 #include "geometry/validate/influence_out_of_sight.h"
 
+#include <tbb/concurrent_unordered_map.h>
 #include <tbb/parallel_for.h>
 #include <glm/common.hpp>
 #include <glm/vector_relational.hpp>
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <optional>
 #include <set>
 #include <tuple>
@@ -29,6 +31,8 @@ constexpr double kScanGridMeters = 0.05;
 constexpr double kShareOfLimit = 0.9;
 // Points a side of a floor cell's coarse grid, where a scan looks first.
 constexpr int kCoarsePoints = 4;
+// Walked cells the scan of the whole floor takes at a time.
+constexpr std::size_t kScanBlockCells = 4096;
 
 // The widenings tried, in gaps (the layout's band), the least first; an inner range keeps at
 // least kLeastInnerHalfOverGap of a gap either side of its centre (widerFades).
@@ -83,54 +87,47 @@ bool insideOneInnerRange(std::span<const InfluenceVolume> near, glm::dvec2 lo, g
 
 // Where a camera can be on each walked cell's scan grid at a capture height, remembered: a
 // spot is scanned again for every widening tried, and the cameras do not move. A slot holds one
-// cell's rows at one height in the order the scan asks for them, for each height a camera over
-// the cell can be at; a scan's tasks each ask for a slot of their own, so they need no lock.
+// cell's rows at one height in the order the scan asks for them, made when a scan first
+// measures that cell at that height (few do: most cells' weights never turn enough), so the
+// cache grows with the floor near the bands, not with the floor times the heights. A scan's
+// tasks each ask for a slot of their own, so they need no lock but the map's.
 class CameraSpaceCache {
  public:
-  using Slot = std::vector<std::vector<char>>;
+  // One cell's rows at one height, end to end (a row is the scan grid's points along x).
+  using Slot = std::vector<char>;
   CameraSpaceCache(const LevelRayCaster& level, const WalkableFloor& walked, double headRoom,
                    std::span<const double> heights)
-      : level_(level), walked_(walked), headRoom_(headRoom), heights_(heights) {
-    firstSlot_.reserve(walked.cells.size() + 1);
-    firstSlot_.push_back(0);
-    for (const FloorCell& c : walked.cells) {
-      const auto [lo, hi] = heightsOver(c);
-      firstSlot_.push_back(firstSlot_.back() + static_cast<std::size_t>(hi - lo));
-    }
-    slots_.resize(firstSlot_.back());
-  }
-  // The slot of a cell at one of the heights a camera over it can be at.
+      : level_(level), walked_(walked), headRoom_(headRoom), heights_(heights) {}
+  // The slot of a cell at one of the heights.
   Slot& slot(std::size_t cell, double z) {
-    const auto lo = heightsOver(walked_.cells[cell]).first;
-    return slots_[firstSlot_[cell] +
-                  static_cast<std::size_t>(std::lower_bound(lo, heights_.end(), z) - lo)];
+    const auto height = static_cast<std::size_t>(
+        std::lower_bound(heights_.begin(), heights_.end(), z) - heights_.begin());
+    return slots_.emplace(cell * heights_.size() + height, Slot{}).first->second;
   }
   ReachableMask mask(Slot& slot) const {
-    return [this, &slot, row = std::size_t{0}](std::span<const glm::dvec3> points,
-                                               std::span<char> reachable) mutable {
-      if (row == slot.size()) {
-        slot.emplace_back(points.size(), 0);
-        markCameraSpace(level_, walked_, headRoom_, points, slot.back());
+    return [this, &slot, at = std::size_t{0}](std::span<const glm::dvec3> points,
+                                              std::span<char> reachable) mutable {
+      if (at == slot.size()) {
+        slot.resize(at + points.size(), 0);
+        markCameraSpace(level_, walked_, headRoom_, points,
+                        std::span<char>(slot).subspan(at, points.size()));
       }
-      std::copy(slot[row].begin(), slot[row].end(), reachable.begin());
-      ++row;
+      std::copy_n(slot.begin() + static_cast<std::ptrdiff_t>(at), points.size(), reachable.begin());
+      at += points.size();
     };
   }
 
  private:
-  // The heights a camera over the cell can be at, as scanBlend takes them.
-  using Heights = std::span<const double>::iterator;
-  std::pair<Heights, Heights> heightsOver(const FloorCell& c) const {
-    const double z = c.pointMeters.z;
-    return std::pair(std::lower_bound(heights_.begin(), heights_.end(), z),
-                     std::upper_bound(heights_.begin(), heights_.end(), z + headRoom_));
-  }
   const LevelRayCaster& level_;
   const WalkableFloor& walked_;
   double headRoom_;
   std::span<const double> heights_;  // sorted, each once
-  std::vector<std::size_t> firstSlot_;
-  std::vector<Slot> slots_;
+  tbb::concurrent_unordered_map<std::size_t, Slot> slots_;
+};
+
+// The walked cells a scan takes, [first, end): all of them, or a block of the whole floor's.
+struct CellSpan {
+  std::size_t first = 0, end = std::numeric_limits<std::size_t>::max();
 };
 
 // The blend where a camera can be over the walked cells that meet the region, at the heights
@@ -140,22 +137,22 @@ class CameraSpaceCache {
 // when there is none.
 BlendScan scanBlend(const WalkableFloor& walked, double headRoom,
                     std::span<const InfluenceVolume> volumes, std::span<const double> heights,
-                    const Region& region, double popThreshold, CameraSpaceCache& cameraSpace) {
+                    const Region& region, double popThreshold, CameraSpaceCache& cameraSpace,
+                    CellSpan cells = {}) {
   struct Task {
     std::size_t cell;
     double z;
-    CameraSpaceCache::Slot* cameras;
   };
   const double halfCell = 0.5 * walked.spacingMeters;
   std::vector<Task> tasks;
-  for (std::size_t c = 0; c < walked.cells.size(); ++c) {
+  for (std::size_t c = cells.first; c < std::min(cells.end, walked.cells.size()); ++c) {
     const glm::dvec3 f = walked.cells[c].pointMeters;
     if (!meets(region, f - glm::dvec3(halfCell, halfCell, 0.0),
                f + glm::dvec3(halfCell, halfCell, headRoom)))
       continue;
     for (double z : heights)
       if (f.z <= z && z <= f.z + headRoom && region.lo.z <= z && z <= region.hi.z)
-        tasks.push_back({c, z, &cameraSpace.slot(c, z)});
+        tasks.push_back({c, z});
   }
   std::vector<Region> bounds(volumes.size());  // once, not for every cell
   for (std::size_t v = 0; v < volumes.size(); ++v)
@@ -209,8 +206,8 @@ BlendScan scanBlend(const WalkableFloor& walked, double headRoom,
     for (std::size_t k = 0; k < near.size(); ++k) turn = std::max(turn, largest[k] - least[k]);
     found.mostOverlapping = most;
     if (turn < popThreshold * 100.0 * s) return;
-    const WeightContinuity c =
-        measureWeightContinuity(near, grid, {}, cameraSpace.mask(*tasks[t].cameras));
+    const WeightContinuity c = measureWeightContinuity(
+        near, grid, {}, cameraSpace.mask(cameraSpace.slot(tasks[t].cell, z)));
     const double perCentimeter = c.largestJump / (100.0 * s);
     if (perCentimeter <= popThreshold) return;
     found.pop = {perCentimeter, c.jumpFromMeters, c.jumpToMeters};
@@ -286,14 +283,18 @@ std::size_t widenFadesWhereWeightsJump(const LevelRayCaster& level, const Walkab
   const double headRoom = limits.cameraHeadRoomMeters;
   const double target = kShareOfLimit * limits.maxWeightJumpPerCentimeter;
   CameraSpaceCache cameraSpace(level, walked, headRoom, heights);
-  const auto scan = [&](const Region& region, std::span<const double> zs, double threshold) {
-    return scanBlend(walked, headRoom, volumes, zs, region, threshold, cameraSpace);
+  const auto scan = [&](const Region& region, std::span<const double> zs, double threshold,
+                        CellSpan cells = {}) {
+    return scanBlend(walked, headRoom, volumes, zs, region, threshold, cameraSpace, cells);
   };
   Region everywhere;
   influenceBounds(volumes, everywhere.lo, everywhere.hi);
+  // The whole floor a block of cells at a time: a scan holds a result per cell and height.
   std::vector<Pop> pops;
-  for (const CellBlend& c : scan(everywhere, heights, target).cells)
-    if (c.pop.perCentimeter > 0.0) pops.push_back(c.pop);
+  for (std::size_t first = 0; first < walked.cells.size(); first += kScanBlockCells)
+    for (const CellBlend& c :
+         scan(everywhere, heights, target, {first, first + kScanBlockCells}).cells)
+      if (c.pop.perCentimeter > 0.0) pops.push_back(c.pop);
   std::sort(pops.begin(), pops.end(),
             [](const Pop& a, const Pop& b) { return a.order() < b.order(); });
 
