@@ -1,5 +1,7 @@
 #include "core/io/memory_budget.h"
 
+#include "core/errors/input_error.h"
+
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -18,6 +20,17 @@ std::uint64_t usableMemoryBytes() {
       usable = std::min<std::uint64_t>(usable, limit.rlim_cur);
   }
   return usable;
+}
+
+void requireMemory(const std::string& what, std::uint64_t neededBytes, std::uint64_t budgetBytes,
+                   const std::string& needs, const std::string& advice) {
+  const bool given = budgetBytes > 0;
+  const std::uint64_t budget = given ? budgetBytes : usableMemoryBytes();
+  if (neededBytes <= budget) return;
+  throw InputError(what, needs + " may take " + gibibytesText(neededBytes) + ", more than the " +
+                             gibibytesText(budget) +
+                             (given ? " of --max-memory" : " this process can use") + "; " +
+                             advice + " or raise --max-memory");
 }
 
 std::string gibibytesText(std::uint64_t bytes) {

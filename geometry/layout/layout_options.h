@@ -49,6 +49,8 @@ struct LayoutOptions {
   // Each candidate's proxy: a small depth cube and few samples (a few thousand candidates per
   // level); the chosen probes are built again with `finalProxy`.
   ProxyBuildOptions candidateProxy = coarseCandidateProxyOptions();
+  // What the candidate stage may take (core/io/memory_budget.h); 0: what the process can use.
+  std::uint64_t maxMemoryBytes = 0;
   ProxyBuildOptions finalProxy;
 
   static ProxyBuildOptions coarseCandidateProxyOptions();

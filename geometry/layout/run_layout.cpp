@@ -17,6 +17,7 @@
 #include "geometry/layout/widen_fades.h"
 #include "geometry/probe_proxies/build_scene_proxies.h"
 #include "geometry/survey/floor_samples.h"
+#include "geometry/survey/run_survey.h"
 
 #include <tbb/parallel_for.h>
 #include <glm/geometric.hpp>
@@ -25,6 +26,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <mutex>
 #include <set>
 
@@ -139,24 +141,28 @@ void dropProbes(const std::set<std::size_t>& gone, std::vector<LayoutProbe>& pro
   optional = std::move(optionalLeft);
 }
 
-// The candidate tables at their worst, every capture point seeing every floor sample: its
-// sight (4 bytes a sample) and its cell of the in-sight cache (1 byte a cell); for each of up to
-// three fit regions, the samples served (4 bytes), the selection's seen flags (1 byte) and
-// share of each cell (4 bytes). Checked before any is made: a 200 m open floor asked for 17 GiB
-// and died of std::bad_alloc after a minute.
-void requireCandidateTablesFit(std::size_t captures, std::size_t samples, std::size_t cells) {
-  const std::uint64_t perCapture = 4 * samples + cells + 3 * (5 * samples + 4 * cells);
-  const std::uint64_t budget = usableMemoryBytes() / 10 * 8;
-  if (std::uint64_t(captures) * perCapture <= budget) return;
-  const std::uint64_t fits = budget / perCapture;
-  throw InputError("layout",
-                   "judging " + std::to_string(captures) + " capture points on " +
-                       std::to_string(samples) + " floor samples may take up to " +
-                       gibibytesText(std::uint64_t(captures) * perCapture) + ", more than the " +
-                       gibibytesText(budget) + " this process can use; " +
-                       (fits >= 1 ? "lower --max-candidates (" + std::to_string(fits) + " fit) or "
-                                  : std::string()) +
-                       "lay the level out in parts");
+// What the candidate stage takes at its worst, every capture point seeing and serving every
+// floor sample: the floor and its samples; per capture point its sight and the served samples
+// of up to three fit regions (bitmaps: a bit a sample when dense), the selection's window of
+// cells for each (a byte a cell) and its in-sight cache (a byte a cell). Checked before any is
+// made: a 200 m open floor once asked for 17 GiB and died of std::bad_alloc after a minute.
+void requireCandidateMemory(const WalkableFloor& floor, std::size_t captures, std::size_t samples,
+                            std::uint64_t budget) {
+  const std::uint64_t cells = floor.cells.size();
+  const std::uint64_t perCapture = 4 * (samples / 8 + 1) + 4 * cells;
+  const std::uint64_t floorBytes =
+      kProcessBytes + cells * kSurveyBytesPerCell + samples * kBytesPerSample;
+  const std::uint64_t needed = floorBytes + captures * perCapture;
+  char needs[200];
+  std::snprintf(needs, sizeof needs,
+                "judging %zu capture points on the walkable floor (%.0f m^2, %zu samples)",
+                captures, floor.areaSquareMeters(), samples);
+  const std::uint64_t limit = budget > 0 ? budget : usableMemoryBytes();
+  const std::uint64_t fit = limit > floorBytes ? (limit - floorBytes) / perCapture : 0;
+  requireMemory("layout", needed, budget, needs,
+                fit >= 1 ? "lower --max-candidates (" + std::to_string(fit) +
+                               " fit), lay the level out in parts (--seed)"
+                         : "lay the level out in parts (--seed)");
 }
 
 void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3> seedsMeters,
@@ -168,14 +174,14 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
   so.upwardCosine = o.floor.upwardCosine;
   so.stepHeightMeters = o.floor.stepHeightMeters;
   so.seed = o.seed;
-  const std::vector<FloorSample> samples = buildFloorSamples(level, floor, so);
-  r.floorSamples = samples.size();
-
   const LayoutCandidates grid =
       layoutCandidates(level, floor, o.spacingMeters, o.captureHeightMeters, o.maxCandidates);
   const std::vector<LayoutCandidate>& candidates = grid.points;
   r.spacingMeters = grid.spacingMeters;
-  requireCandidateTablesFit(candidates.size(), samples.size(), floor.cells.size());
+  requireCandidateMemory(floor, candidates.size(),
+                         floor.cells.size() * std::size_t(so.samplesPerCell), o.maxMemoryBytes);
+  const std::vector<FloorSample> samples = buildFloorSamples(level, floor, so);
+  r.floorSamples = samples.size();
   // Thousands of candidates ask for the floor they serve: one floor graph answers them all.
   LayoutOptions withGraph = o;
   withGraph.candidateProxy.samples.floorGraph =

@@ -30,6 +30,10 @@ struct FloorSample {
   double areaSquareMeters = 0.0;  // the cell's area over its sample count
 };
 
+// What a sample costs a survey or a layout at its peak: itself (sizeof(FloorSample)) and its
+// error, weights and map figures; fitted on the generated towns.
+inline constexpr std::uint64_t kBytesPerSample = 192;
+
 std::vector<FloorSample> buildFloorSamples(const LevelRayCaster& level, const WalkableFloor& floor,
                                            const FloorSampleOptions& options = {});
 

@@ -1,6 +1,7 @@
 #include "geometry/survey/run_survey.h"
 
 #include "core/errors/input_error.h"
+#include "core/io/memory_budget.h"
 #include "geometry/survey/area_percentile.h"
 #include "geometry/survey/floor_samples.h"
 #include "geometry/survey/survey_proxies.h"
@@ -10,6 +11,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 namespace probeproxy {
 
@@ -106,6 +108,20 @@ SurveyResult surveyOn(const SurveyFloor& prepared, std::size_t probes, const Sur
 
 }  // namespace
 
+std::uint64_t surveyMemoryBytes(std::size_t cells, int samplesPerCell) {
+  return kProcessBytes + std::uint64_t(cells) * (kSurveyBytesPerCell +
+                                                 std::uint64_t(samplesPerCell) * kBytesPerSample);
+}
+
+void requireSurveyMemory(const WalkableFloor& floor, int samplesPerCell, std::uint64_t budget) {
+  const std::size_t cells = floor.cells.size();
+  char needs[160];
+  std::snprintf(needs, sizeof needs, "the walkable floor (%.0f m^2, %zu cells, %zu samples)",
+                floor.areaSquareMeters(), cells, cells * std::size_t(samplesPerCell));
+  requireMemory("survey", surveyMemoryBytes(cells, samplesPerCell), budget, needs,
+                "survey a part of the level (--seed where it starts)");
+}
+
 SurveyFloor prepareSurveyFloor(std::span<const glm::dvec3> seedPointsMeters,
                                const LevelRayCaster& level, const SurveyOptions& o) {
   const auto start = std::chrono::steady_clock::now();
@@ -129,6 +145,7 @@ SurveyFloor prepareSurveyFloor(std::span<const glm::dvec3> seedPointsMeters,
   so.stepHeightMeters = o.floor.stepHeightMeters;
   so.seed = o.seed;
   prepared.samplesPerCell = so.samplesPerCell;
+  requireSurveyMemory(prepared.floor, so.samplesPerCell, o.maxMemoryBytes);
   prepared.samples = buildFloorSamples(level, prepared.floor, so);
   prepared.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -32,6 +32,14 @@ SurveyResult runSurvey(const Scene& scene, const LevelRayCaster& level,
 SurveyResult surveyProbes(std::span<const SurveyProbe> probes, const LevelRayCaster& level,
                           const SurveyOptions& options);
 
+// What a survey of `cells` floor cells with `samplesPerCell` samples each takes at its peak,
+// the program included (fitted on the generated towns of 1 and 25 ha: 139 MB before the level,
+// about 210 bytes a cell and 180 a sample), and the check of that against `budgetBytes`
+// (core/io/memory_budget.h): InputError naming the floor when it would not fit.
+inline constexpr std::uint64_t kSurveyBytesPerCell = 256;
+std::uint64_t surveyMemoryBytes(std::size_t cells, int samplesPerCell);
+void requireSurveyMemory(const WalkableFloor& floor, int samplesPerCell, std::uint64_t budgetBytes);
+
 // The walkable floor and its samples, which every survey of one level with the same seeds and
 // floor options shares: seeded from options.seedPointsMeters, else from `seedPointsMeters`
 // (the scene's capture points). Throws InputError as runSurvey.

@@ -41,6 +41,8 @@ struct SurveyOptions {
   // gets the presets a build exports for it (proxiesJson's, or every probe built now) and
   // blends them by its own rules (geometry/engines/). `proxies` must then be Scene.
   Engine engine = Engine::Generic;
+  // What the survey may take (core/io/memory_budget.h); 0: what the process can use.
+  std::uint64_t maxMemoryBytes = 0;
 
   void check() const;
 };

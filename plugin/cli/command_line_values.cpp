@@ -44,6 +44,26 @@ std::optional<ReflectionPlane> parseOptionalPlane(std::string_view text, std::st
   return ReflectionPlane{{p[0], p[1], p[2]}, {p[3], p[4], p[5]}};  // checked by the job
 }
 
+std::uint64_t parseMemorySize(std::string_view text, std::string_view option) {
+  const std::string problem =
+      "expected a memory size such as 4G, 1.5GiB or 512M, got '" + std::string(text) + "'";
+  double number = 0.0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), number);
+  if (ec != std::errc() || !std::isfinite(number) || number <= 0.0)
+    throw InputError(std::string(option), problem);
+  std::string_view unit(end, static_cast<std::size_t>(text.data() + text.size() - end));
+  if (unit.size() == 3 && unit.substr(1) == "iB") unit = unit.substr(0, 1);
+  static constexpr std::string_view kUnits = "KMGT";
+  double bytes = number;
+  if (!unit.empty()) {
+    const std::size_t power = unit.size() == 1 ? kUnits.find(unit[0]) : std::string_view::npos;
+    if (power == std::string_view::npos) throw InputError(std::string(option), problem);
+    bytes = std::ldexp(number, 10 * static_cast<int>(power + 1));
+  }
+  if (bytes < 1.0 || bytes > 0x1p63) throw InputError(std::string(option), problem);
+  return static_cast<std::uint64_t>(bytes);
+}
+
 MixingMethod parseMixingMethod(const std::string& name) {
   const std::optional<MixingMethod> method = mixingMethodFromName(name);
   if (!method)

@@ -9,6 +9,7 @@
 #include <glm/vec3.hpp>
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -25,6 +26,11 @@ glm::dvec3 parsePoint(std::string_view text, std::string_view option);
 
 // PX,PY,PZ,NX,NY,NZ; nothing when the text is empty (the option was not given).
 std::optional<ReflectionPlane> parseOptionalPlane(std::string_view text, std::string_view option);
+
+// A memory size: a number and a unit, K, M, G or T (powers of 1024; KiB, MiB, GiB, TiB too),
+// "4G", "1.5GiB", "512M"; a bare number is bytes. Throws InputError(option, ...) for anything
+// else, or for zero.
+std::uint64_t parseMemorySize(std::string_view text, std::string_view option);
 
 // "mixing_plane" or "raster_convex"; throws InputError("--method", ...) otherwise.
 MixingMethod parseMixingMethod(const std::string& name);

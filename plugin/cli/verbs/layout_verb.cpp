@@ -24,6 +24,7 @@ struct LayoutVerbOptions {
   std::string engine = "generic";
   std::vector<std::string> seeds;
   bool json = false;
+  std::string maxMemory;
   jobs::LayoutJobOptions job;
 };
 
@@ -39,6 +40,9 @@ int runLayoutVerb(LayoutVerbOptions o) {
   o.job.engines = parseEngines(o.engine);
   if (o.job.engines == std::vector<Engine>{Engine::Generic}) o.job.engines.clear();
   parseSeeds(o.seeds, o.job.given);
+  if (!o.maxMemory.empty())
+    o.job.layout.maxMemoryBytes = o.job.survey.maxMemoryBytes =
+        parseMemorySize(o.maxMemory, "--max-memory");
   o.job.levelOrScene = o.input;
   o.job.outFolder = o.out;
   const jobs::LayoutJobResult r =
@@ -128,6 +132,11 @@ Verb addLayoutVerb(CLI::App& app) {
       ->capture_default_str();
   verb->add_option("--threads", o->job.threads, "worker threads (0: all cores)")
       ->capture_default_str();
+  verb->add_option(
+      "--max-memory", o->maxMemory,
+      "at most this much memory, e.g. 4G or 512M: the floor's estimate is checked before the work "
+      "that needs it, and a level that would need more is refused (default: what "
+      "the machine or ulimit gives)");
   return {verb, [o] { return runLayoutVerb(*o); }};
 }
 

@@ -2,6 +2,7 @@
 // table, or the JSON report under --json); with --out the job writes survey.json and the maps.
 
 #include "core/errors/input_error.h"
+#include "plugin/cli/command_line_values.h"
 #include "plugin/cli/measure_options.h"
 #include "plugin/cli/terminal_progress.h"
 #include "plugin/cli/verb.h"
@@ -22,6 +23,7 @@ struct SurveyVerbOptions {
   std::string proxy = "scene";
   std::string engine = "generic";
   std::vector<std::string> seeds;
+  std::string maxMemory;
   jobs::SurveyJobOptions job;
 };
 
@@ -39,6 +41,8 @@ int runSurveyVerb(SurveyVerbOptions o) {
   o.job.survey.blend.scheme = *scheme;
   o.job.survey.proxies = surveyProxies(o.proxy);
   o.job.survey.engine = parseEngine(o.engine);
+  if (!o.maxMemory.empty())
+    o.job.survey.maxMemoryBytes = parseMemorySize(o.maxMemory, "--max-memory");
   o.job.survey.proxiesJson = o.proxies;
   parseSeeds(o.seeds, o.job.given);
   o.job.input.file = o.scene;
@@ -95,6 +99,11 @@ Verb addSurveyVerb(CLI::App& app) {
       ->capture_default_str();
   verb->add_option("--threads", o->job.threads, "worker threads (0: all cores)")
       ->capture_default_str();
+  verb->add_option(
+      "--max-memory", o->maxMemory,
+      "at most this much memory, e.g. 4G or 512M: the floor's estimate is checked before the work "
+      "that needs it, and a level that would need more is refused (default: what "
+      "the machine or ulimit gives)");
   return {verb, [o] { return runSurveyVerb(*o); }};
 }
 
