@@ -21,6 +21,7 @@ void LayoutOptions::check() const {
   requireInRange("spacing", spacingMeters, 0.25, 100.0);
   requireInRange("max_candidates", maxCandidates, std::size_t{1}, std::size_t{1'000'000});
   if (reachMeters != 0.0) requireInRange("reach", reachMeters, 0.5, 1000.0);
+  if (tileMeters != 0.0) requireInRange("tile_size", tileMeters, 1.0, 100'000.0);
   requireInRange("capture_height", captureHeightMeters, 0.05, 10.0);
   // Wider than any room: the bands reach over the level and past the limits of a scene.
   requireInRange("blend_band", blendBandMeters, 0.0, kMaxBlendBandMeters);

@@ -49,6 +49,10 @@ struct LayoutOptions {
   // Each candidate's proxy: a small depth cube and few samples (a few thousand candidates per
   // level); the chosen probes are built again with `finalProxy`.
   ProxyBuildOptions candidateProxy = coarseCandidateProxyOptions();
+  // The candidate stage judges the capture points a square tile of the floor this wide at a
+  // time, each tile's candidates crossing the wire (candidate_wire.h) as from another process:
+  // the same layout, bytes for bytes. 0: all at once.
+  double tileMeters = 0.0;
   // What the candidate stage may take (core/io/memory_budget.h); 0: what the process can use.
   std::uint64_t maxMemoryBytes = 0;
   ProxyBuildOptions finalProxy;

@@ -4,6 +4,7 @@
 #include "core/io/memory_budget.h"
 #include "geometry/layout/bands_in_sight.h"
 #include "geometry/layout/candidate_service.h"
+#include "geometry/layout/candidate_wire.h"
 #include "geometry/layout/capture_sight.h"
 #include "geometry/layout/grid_layout.h"
 #include "geometry/layout/head_room.h"
@@ -27,6 +28,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <mutex>
 #include <set>
 
@@ -41,38 +43,86 @@ double median(std::vector<double> values) {
 }
 
 // Every capture point's sight, then its proxy for each fit region, smallest first; capture
-// points in parallel, results in capture order whatever the thread count.
-struct Candidates {
-  std::vector<CaptureSight> sights;
-  std::vector<CandidateService> services;
-};
-
-Candidates serveAll(const LevelRayCaster& level, const std::vector<LayoutCandidate>& captures,
-                    std::span<const FloorSample> samples, const LayoutOptions& o,
-                    const std::function<void(std::size_t, std::size_t)>& onDone) {
-  Candidates c;
-  c.sights.resize(captures.size());
-  std::vector<std::vector<CandidateService>> perCapture(captures.size());
+// points in parallel, results in capture order whatever the thread count. `done` counts the
+// capture points judged before these (progress over tiles).
+std::vector<CaptureCandidates> serveCaptures(
+    const LevelRayCaster& level, std::span<const LayoutCandidate> captures,
+    std::span<const std::size_t> which, std::span<const FloorSample> samples,
+    const LayoutOptions& o, const std::function<void(std::size_t, std::size_t)>& onDone,
+    std::size_t& done) {
+  std::vector<CaptureCandidates> judged(which.size());
   std::mutex progress;
-  std::size_t done = 0;
-  tbb::parallel_for(std::size_t{0}, captures.size(), [&](std::size_t i) {
-    const glm::dvec3 capture = captures[i].captureMeters;
-    c.sights[i] = captureSight(level, capture, samples, o.reachMeters);
+  tbb::parallel_for(std::size_t{0}, which.size(), [&](std::size_t k) {
+    CaptureCandidates& c = judged[k];
+    c.capture = which[k];
+    const glm::dvec3 capture = captures[c.capture].captureMeters;
+    c.sight = captureSight(level, capture, samples, o.reachMeters);
     double farthest = 0.0;
-    forEachIndex(c.sights[i].seen, [&](std::uint32_t s) {
+    forEachIndex(c.sight.seen, [&](std::uint32_t s) {
       farthest = std::max(farthest, glm::distance(samples[s].sample.xMeters, capture));
     });
     const CaptureView view = seeFromCapture(level, capture, o);
     for (double fit : fitRadiiFor(farthest, o.reachMeters)) {
-      perCapture[i].push_back(serveFloor(level, view, fit, samples, c.sights[i].seen, o));
-      perCapture[i].back().capture = i;
+      c.services.push_back(serveFloor(level, view, fit, samples, c.sight.seen, o));
+      c.services.back().capture = c.capture;
     }
     if (!onDone) return;
     const std::lock_guard<std::mutex> lock(progress);
     onDone(++done, captures.size());
   });
-  for (std::vector<CandidateService>& services : perCapture)
-    for (CandidateService& s : services) c.services.push_back(std::move(s));
+  return judged;
+}
+
+// The capture points of each tile of `tileMeters` (by the capture point's x and y), tiles in
+// row order, each tile's points in capture order; one tile when tileMeters is 0.
+std::vector<std::vector<std::size_t>> capturesByTile(std::span<const LayoutCandidate> captures,
+                                                     double tileMeters) {
+  std::map<std::pair<long long, long long>, std::vector<std::size_t>> tiles;
+  for (std::size_t i = 0; i < captures.size(); ++i) {
+    const glm::dvec3 at = captures[i].captureMeters;
+    const auto key = tileMeters > 0.0
+                         ? std::pair(static_cast<long long>(std::floor(at.y / tileMeters)),
+                                     static_cast<long long>(std::floor(at.x / tileMeters)))
+                         : std::pair(0LL, 0LL);
+    tiles[key].push_back(i);
+  }
+  std::vector<std::vector<std::size_t>> inOrder;
+  for (auto& [key, members] : tiles) inOrder.push_back(std::move(members));
+  return inOrder;
+}
+
+struct Candidates {
+  std::vector<CaptureSight> sights;        // per capture point
+  std::vector<CandidateService> services;  // by capture point, then fit region
+  std::size_t tiles = 0, wireBytes = 0;    // what crossed between tiles (candidate_wire.h)
+};
+
+// Every capture point judged, a tile at a time with `tileMeters`: each tile's candidates go
+// through the wire as they would from another process, and come back the same.
+Candidates serveAll(const LevelRayCaster& level, std::span<const LayoutCandidate> captures,
+                    std::span<const FloorSample> samples, const LayoutOptions& o,
+                    const std::function<void(std::size_t, std::size_t)>& onDone) {
+  std::vector<CaptureCandidates> judged(captures.size());
+  Candidates c;
+  std::size_t done = 0;
+  for (const std::vector<std::size_t>& tile : capturesByTile(captures, o.tileMeters)) {
+    std::vector<CaptureCandidates> part =
+        serveCaptures(level, captures, tile, samples, o, onDone, done);
+    if (o.tileMeters > 0.0) {
+      const std::string wire = packCandidates(part);
+      c.wireBytes += wire.size();
+      part = unpackCandidates(wire);
+    }
+    ++c.tiles;
+    for (CaptureCandidates& one : part) judged[one.capture] = std::move(one);
+  }
+  for (CaptureCandidates& one : judged) {
+    c.sights.push_back(std::move(one.sight));
+    for (CandidateService& s : one.services) {
+      s.captureMeters = captures[one.capture].captureMeters;
+      c.services.push_back(std::move(s));
+    }
+  }
   return c;
 }
 
@@ -190,6 +240,8 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
   const std::vector<CandidateService>& services = built.services;
   r.capturePoints = candidates.size();
   r.candidates = services.size();
+  r.tiles = built.tiles;
+  r.candidateWireBytes = built.wireBytes;
   std::vector<double> ms;
   for (const CandidateService& s : services) ms.push_back(s.buildMs);
   r.candidateMedianMs = median(ms);

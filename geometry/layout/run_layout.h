@@ -38,6 +38,9 @@ struct LayoutResult {
   std::size_t capturePoints = 0;  // candidate capture points (0 for the baselines)
   std::size_t candidates = 0;     // proxies built and measured, a few per capture point
   double candidateMedianMs = std::numeric_limits<double>::quiet_NaN();  // one candidate's cost
+  // Tiles the candidate stage took (LayoutOptions::tileMeters), and the bytes their candidates
+  // crossed in (candidate_wire.h; 0 in one tile).
+  std::size_t tiles = 0, candidateWireBytes = 0;
   // Floor (area share) some chosen probe serves within the tolerance on its own, and that some
   // candidate could: what the selection reached of what it could reach.
   double servedShare = 0.0, servableShare = 0.0;

@@ -120,6 +120,11 @@ Verb addLayoutVerb(CLI::App& app) {
   verb->add_option("--max-candidates", l.maxCandidates,
                    "at most this many capture points; the spacing coarsens to fit")
       ->capture_default_str();
+  verb->add_option("--tile-size", l.tileMeters,
+                   "judge the capture points a square tile of the floor this wide at a time, "
+                   "each tile's candidates packed as for another process (the same layout, "
+                   "bytes for bytes), m (0: all at once)")
+      ->capture_default_str();
   verb->add_option("--reach", l.reachMeters,
                    "a candidate serves floor within this distance, m (0: all it sees)")
       ->capture_default_str();

@@ -204,6 +204,10 @@ std::string layoutReportJson(const LayoutJobOptions& o, const LayoutJobResult& r
   j["capture_points"] = r.layout.capturePoints;
   j["candidates"] = r.layout.candidates;
   j["candidate_median_ms"] = number(r.layout.candidateMedianMs);
+  if (r.layout.candidateWireBytes > 0) {  // --tile-size: what crossed between the tiles
+    j["candidate_tiles"] = r.layout.tiles;
+    j["candidate_wire_bytes"] = r.layout.candidateWireBytes;
+  }
   j["served_share"] = number(r.layout.servedShare);
   j["servable_share"] = number(r.layout.servableShare);
   j["layout_seconds"] = number(r.layout.seconds);
