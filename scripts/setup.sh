@@ -29,6 +29,7 @@ packages=(
   pybind11-dev python3-dev                           # the Blender add-on's module
   libgtest-dev libbenchmark-dev valgrind             # tests, benchmarks, instruction counts
   blender python3-matplotlib                         # test levels, reference renders, charts
+  python3-distributed                                # layout's candidates on Dask (scripts/layout_dask.py)
   clang-14 libclang-rt-14-dev                        # the fuzz targets (libFuzzer, sanitizers)
   godot3-server                                      # the Godot round trip (Godot 3, headless)
   godot3-runner                                      # Godot 3 renders the probes (scripts/render_check.py)

@@ -8,6 +8,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
 
 namespace probeproxy {
 
@@ -53,6 +56,10 @@ struct LayoutOptions {
   // time, each tile's candidates crossing the wire (candidate_wire.h) as from another process:
   // the same layout, bytes for bytes. 0: all at once.
   double tileMeters = 0.0;
+  // Where the tiles are judged when not here: given each tile's capture points (indices into
+  // the candidate ground's, run_layout.h), returns each tile's judgeCandidates bytes, in order
+  // (scripts/layout_dask.py sends them to a Dask cluster). Empty: here, a tile at a time.
+  std::function<std::vector<std::string>(const std::vector<std::vector<std::size_t>>&)> judgeTiles;
   // What the candidate stage may take (core/io/memory_budget.h); 0: what the process can use.
   std::uint64_t maxMemoryBytes = 0;
   ProxyBuildOptions finalProxy;

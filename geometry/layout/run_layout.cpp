@@ -98,24 +98,42 @@ struct Candidates {
 };
 
 // Every capture point judged, a tile at a time with `tileMeters`: each tile's candidates go
-// through the wire as they would from another process, and come back the same.
+// through the wire as they would from another process, and come back the same. With
+// `judgeTiles`, the tiles are judged wherever it sends them (a Dask cluster), all at once.
 Candidates serveAll(const LevelRayCaster& level, std::span<const LayoutCandidate> captures,
                     std::span<const FloorSample> samples, const LayoutOptions& o,
                     const std::function<void(std::size_t, std::size_t)>& onDone) {
+  const std::vector<std::vector<std::size_t>> tiles = capturesByTile(captures, o.tileMeters);
   std::vector<CaptureCandidates> judged(captures.size());
   Candidates c;
-  std::size_t done = 0;
-  for (const std::vector<std::size_t>& tile : capturesByTile(captures, o.tileMeters)) {
-    std::vector<CaptureCandidates> part =
-        serveCaptures(level, captures, tile, samples, o, onDone, done);
-    if (o.tileMeters > 0.0) {
-      const std::string wire = packCandidates(part);
-      c.wireBytes += wire.size();
-      part = unpackCandidates(wire);
-    }
-    ++c.tiles;
+  const auto take = [&](const std::vector<std::size_t>& tile, std::string_view wire) {
+    c.wireBytes += wire.size();
+    std::vector<CaptureCandidates> part = unpackCandidates(wire);
+    bool same = part.size() == tile.size();
+    for (std::size_t k = 0; same && k < part.size(); ++k) same = part[k].capture == tile[k];
+    if (!same)
+      throw std::runtime_error("layout: a tile's candidates came back for other capture points");
     for (CaptureCandidates& one : part) judged[one.capture] = std::move(one);
+  };
+  if (o.judgeTiles) {
+    const std::vector<std::string> wires = o.judgeTiles(tiles);
+    if (wires.size() != tiles.size())
+      throw std::runtime_error("layout: " + std::to_string(wires.size()) + " tiles came back of " +
+                               std::to_string(tiles.size()));
+    for (std::size_t t = 0; t < tiles.size(); ++t) take(tiles[t], wires[t]);
+    if (onDone) onDone(captures.size(), captures.size());
+  } else {
+    std::size_t done = 0;
+    for (const std::vector<std::size_t>& tile : tiles) {
+      std::vector<CaptureCandidates> part =
+          serveCaptures(level, captures, tile, samples, o, onDone, done);
+      if (o.tileMeters > 0.0)
+        take(tile, packCandidates(part));
+      else
+        for (CaptureCandidates& one : part) judged[one.capture] = std::move(one);
+    }
   }
+  c.tiles = tiles.size();
   for (CaptureCandidates& one : judged) {
     c.sights.push_back(std::move(one.sight));
     for (CandidateService& s : one.services) {
@@ -215,27 +233,52 @@ void requireCandidateMemory(const WalkableFloor& floor, std::size_t captures, st
                          : "lay the level out in parts (--seed)");
 }
 
-void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3> seedsMeters,
-                        const WalkableFloor& floor, const LayoutOptions& o,
-                        const std::function<void(std::size_t, std::size_t)>& onDone,
-                        std::span<const SurveyProbe> kept, LayoutResult& r) {
+}  // namespace
+
+CandidateGround candidateGround(const LevelRayCaster& level, const WalkableFloor& floor,
+                                const LayoutOptions& o) {
+  CandidateGround g;
+  g.captures =
+      layoutCandidates(level, floor, o.spacingMeters, o.captureHeightMeters, o.maxCandidates);
+  requireCandidateMemory(floor, g.captures.points.size(),
+                         floor.cells.size() * std::size_t(o.samplesPerCell), o.maxMemoryBytes);
   FloorSampleOptions so;
   so.samplesPerCell = o.samplesPerCell;
   so.upwardCosine = o.floor.upwardCosine;
   so.stepHeightMeters = o.floor.stepHeightMeters;
   so.seed = o.seed;
-  const LayoutCandidates grid =
-      layoutCandidates(level, floor, o.spacingMeters, o.captureHeightMeters, o.maxCandidates);
-  const std::vector<LayoutCandidate>& candidates = grid.points;
-  r.spacingMeters = grid.spacingMeters;
-  requireCandidateMemory(floor, candidates.size(),
-                         floor.cells.size() * std::size_t(so.samplesPerCell), o.maxMemoryBytes);
-  const std::vector<FloorSample> samples = buildFloorSamples(level, floor, so);
-  r.floorSamples = samples.size();
+  g.samples = buildFloorSamples(level, floor, so);
   // Thousands of candidates ask for the floor they serve: one floor graph answers them all.
-  LayoutOptions withGraph = o;
-  withGraph.candidateProxy.samples.floorGraph =
+  g.options = o;
+  g.options.candidateProxy.samples.floorGraph =
       std::make_shared<const FloorGraph>(buildFloorGraph(level, WalkableFloorOptions{}));
+  return g;
+}
+
+std::string judgeCandidates(const LevelRayCaster& level, const CandidateGround& ground,
+                            std::span<const std::size_t> captures) {
+  for (std::size_t c : captures)
+    if (c >= ground.captures.points.size())
+      throw InputError("layout", "capture point " + std::to_string(c) + " of " +
+                                     std::to_string(ground.captures.points.size()) +
+                                     " asked for: another level or other options");
+  std::size_t done = 0;
+  return packCandidates(serveCaptures(level, ground.captures.points, captures, ground.samples,
+                                      ground.options, {}, done));
+}
+
+namespace {
+
+void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3> seedsMeters,
+                        const WalkableFloor& floor, const LayoutOptions& o,
+                        const std::function<void(std::size_t, std::size_t)>& onDone,
+                        std::span<const SurveyProbe> kept, LayoutResult& r) {
+  const CandidateGround ground = candidateGround(level, floor, o);
+  const std::vector<FloorSample>& samples = ground.samples;
+  const std::vector<LayoutCandidate>& candidates = ground.captures.points;
+  r.floorSamples = samples.size();
+  r.spacingMeters = ground.captures.spacingMeters;
+  const LayoutOptions& withGraph = ground.options;
   const Candidates built = serveAll(level, candidates, samples, withGraph, onDone);
   const std::vector<CandidateService>& services = built.services;
   r.capturePoints = candidates.size();

@@ -9,9 +9,11 @@
 // count.
 
 #include "core/scene/influence_volume.h"
+#include "geometry/layout/layout_candidates.h"
 #include "geometry/layout/layout_options.h"
 #include "geometry/raycast/level_ray_caster.h"
 #include "geometry/survey/blended_error.h"
+#include "geometry/survey/floor_samples.h"
 
 #include <glm/vec3.hpp>
 
@@ -50,6 +52,24 @@ struct LayoutResult {
   double keptServedShare = 0.0;
   double seconds = 0.0;
 };
+
+// The candidate stage's ground, as layout makes it from the level's walkable floor (the coarse
+// one, LayoutOptions::floor): the capture points, the floor samples they are judged on, and
+// the options with the level's floor graph. The same on every process for the same level,
+// floor and options, so a capture point's index names it anywhere. Throws InputError when it
+// would not fit LayoutOptions::maxMemoryBytes.
+struct CandidateGround {
+  LayoutCandidates captures;
+  std::vector<FloorSample> samples;
+  LayoutOptions options;
+};
+CandidateGround candidateGround(const LevelRayCaster& level, const WalkableFloor& floor,
+                                const LayoutOptions& options);
+
+// The candidates of `captures` (indices into ground.captures.points) judged here, packed for
+// the process that selects (candidate_wire.h): what a tile or a Dask task returns.
+std::string judgeCandidates(const LevelRayCaster& level, const CandidateGround& ground,
+                            std::span<const std::size_t> captures);
 
 // `onCandidateDone(done, total)` reports candidate builds (serialized), the slow part.
 // `kept`: probes that stay as they are (an artist's, with their proxies): the layout adds only

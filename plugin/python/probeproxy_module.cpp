@@ -14,6 +14,7 @@
 #include "geometry/survey/survey_map.h"
 #include "plugin/jobs/build/build_job.h"
 #include "plugin/jobs/build/build_report.h"
+#include "plugin/jobs/layout/candidate_judge.h"
 #include "plugin/jobs/layout/layout_job.h"
 #include "plugin/jobs/scene_input.h"
 #include "plugin/jobs/validate/validate_job.h"
@@ -304,6 +305,36 @@ py::dict suggestProbes(const py::dict& sceneData, const std::string& anchor,
                   py::arg("figures") = jsonLoads(r.json), py::arg("files") = files);
 }
 
+// `probeproxy layout LEVEL_OR_SCENE --out DIR` with the candidate stage's tiles judged by
+// `judgeTiles(tiles) -> [bytes]` (scripts/layout_dask.py: a Dask cluster), else here.
+py::dict layoutLevel(const std::string& levelOrScene, const std::string& outFolder,
+                     const py::dict& options, const py::object& judgeTiles,
+                     const py::object& progress) {
+  jobs::LayoutJobOptions job;
+  job.levelOrScene = levelOrScene;
+  job.outFolder = outFolder;
+  readLayoutOptions(options, job);
+  if (!judgeTiles.is_none()) {
+    // Copies of the options outlive no call but may be dropped on the job's thread: the last
+    // reference to the Python callable goes with the GIL held.
+    const std::shared_ptr<py::object> judge(new py::object(judgeTiles), [](py::object* callable) {
+      py::gil_scoped_acquire acquire;
+      delete callable;
+    });
+    job.layout.judgeTiles = [judge](const std::vector<std::vector<std::size_t>>& tiles) {
+      py::gil_scoped_acquire acquire;
+      std::vector<std::string> wires;
+      for (const py::handle wire : (*judge)(tiles)) wires.push_back(wire.cast<std::string>());
+      return wires;
+    };
+  }
+  const jobs::LayoutJobResult r = runWithProgress<jobs::LayoutJobResult>(
+      [&](const Progress& onStep) { return jobs::runLayoutJob(job, onStep); }, progress);
+  py::list files;
+  for (const std::filesystem::path& file : r.written) files.append(file.string());
+  return py::dict(py::arg("figures") = jsonLoads(r.json), py::arg("files") = files);
+}
+
 }  // namespace
 
 }  // namespace probeproxy::python
@@ -407,6 +438,42 @@ PYBIND11_MODULE(probeproxy_py, m) {
         "metres, Z up.");
   m.def("survey_scale", &surveyScale,
         "The survey maps' colour scale: [(lower edge in degrees, (r, g, b)), ...].");
+  m.def("layout_level", &layoutLevel, py::arg("level_or_scene"), py::arg("out_dir"),
+        py::arg("options") = py::dict(), py::arg("judge_tiles") = py::none(),
+        py::arg("progress") = py::none(),
+        "`probeproxy layout LEVEL_OR_SCENE --out DIR`: a scene file or a level file laid out, "
+        "the same files written. options: as suggest_probes, and tile_size (m: the candidate "
+        "stage a square tile of the floor at a time). judge_tiles: None (the tiles are judged "
+        "here), or a callable given each tile's capture point indices (a list of lists) that "
+        "returns, for each tile in order, the bytes CandidateJudge.judge gives for it, from "
+        "wherever it ran (scripts/layout_dask.py). Returns {figures (layout.json), files}.");
+  py::class_<jobs::CandidateJudge>(
+      m, "CandidateJudge",
+      "One process's share of a layout's candidate stage: the level read, its floor walked and "
+      "its capture points laid as layout_level does for the same level and options, once.")
+      .def(py::init([](const std::string& levelOrScene, const py::dict& options) {
+             jobs::LayoutJobOptions job;
+             job.levelOrScene = levelOrScene;
+             readLayoutOptions(options, job);
+             py::gil_scoped_release release;
+             return std::make_unique<jobs::CandidateJudge>(job);
+           }),
+           py::arg("level_or_scene"), py::arg("options") = py::dict())
+      .def_property_readonly("capture_points", &jobs::CandidateJudge::capturePoints,
+                             "how many capture points the layout judges")
+      .def(
+          "judge",
+          [](const jobs::CandidateJudge& judge, const std::vector<std::size_t>& captures) {
+            std::string wire;
+            {
+              py::gil_scoped_release release;
+              wire = judge.judge(captures);
+            }
+            return py::bytes(wire);
+          },
+          py::arg("captures"),
+          "The candidates of these capture points (indices), packed: their sight and the floor "
+          "samples each fit region's proxy serves (geometry/layout/candidate_wire.h).");
   m.def("suggest_probes", &suggestProbes, py::arg("scene"), py::arg("anchor"), py::arg("out_dir"),
         py::arg("level") = py::none(), py::arg("options") = py::dict(),
         py::arg("progress") = py::none(),

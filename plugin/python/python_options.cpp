@@ -92,6 +92,8 @@ void readLayoutOptions(const py::dict& options, jobs::LayoutJobOptions& job) {
       o.captureHeightMeters = value.cast<double>();
     else if (name == "blend_band")
       o.blendBandMeters = value.cast<double>();
+    else if (name == "tile_size")
+      o.tileMeters = value.cast<double>();
     else if (name == "threads")
       job.threads = value.cast<int>();
     else

@@ -1,4 +1,5 @@
 #include "plugin/jobs/layout/layout_job.h"
+#include "plugin/jobs/layout/layout_setup.h"
 
 #include "plugin/jobs/measure_settings.h"
 
@@ -36,27 +37,6 @@ namespace {
 constexpr int kEngineTrialSamplesPerCell = 2;
 
 namespace fs = std::filesystem;
-
-bool isSceneFile(const fs::path& file) {
-  const std::string name = file.filename().string();
-  return name.size() > 11 && name.compare(name.size() - 11, 11, ".scene.json") == 0;
-}
-
-// A bare level file is read as the scene that lists only it, so both inputs take one path.
-Scene readLevelOrScene(const fs::path& file) {
-  if (isSceneFile(file) || file.extension() == ".json") return readSceneFile(file);
-  if (!isLevelFile(file)) {
-    throw InputError(file, "unsupported level format '" + file.extension().string() +
-                               "' (expected a .scene.json, or a level: " + kLevelExtensionsText +
-                               ")");
-  }
-  const fs::path absolute = fs::absolute(file).lexically_normal();
-  const nlohmann::json text = {{"probeproxy_scene", 1},
-                               {"up", "Z"},
-                               {"level", {absolute.string()}},
-                               {"probes", nlohmann::json::array()}};
-  return parseSceneFile(text.dump(), absolute.string() + ".scene.json");
-}
 
 const char* baselineName(LayoutBaseline baseline) {
   switch (baseline) {
@@ -256,50 +236,16 @@ void LayoutJobOptions::check() const {
 LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress) {
   o.check();
   const ThreadLimit threads(o.threads);
-  const bool inMemory = o.levelOrScene.empty();
-  const Scene input = inMemory ? readSceneInput(o.input) : readLevelOrScene(o.levelOrScene);
-  if (o.layout.keepAuthored && input.probes.empty())
-    throw InputError(inMemory ? input.file : o.levelOrScene,
-                     "--keep-authored: the scene has no probes to keep");
-  const LevelMesh level = loadSceneLevel(input, inMemory ? o.input : SceneInput{});
-  const LevelRayCaster rayCaster(level);
-  // The user's floor and player, else the scene's (a layout laid out again), else the level's
-  // game; the tolerance likewise.
-  const MeasureSettings measure = resolvedMeasureSettings(o.given, input, level);
-  LayoutOptions layout = o.layout;
-  SurveyOptions survey = o.survey;
-  applyMeasureSettings(measure, layout);
-  applyMeasureSettings(measure, survey);
-  checkWithSceneSettings(input, [&] {
-    layout.check();
-    survey.check();
-  });
-  // Players enter where the user, the scene or the level says (its spawn points); a level
-  // without them (an OBJ room) at its probes; a bare mesh on its largest floor region.
+  LayoutSetup setup = prepareLayout(o);
+  const Scene& input = setup.input;
+  const LevelRayCaster& rayCaster = *setup.rayCaster;
+  LayoutOptions& layout = setup.layout;
+  SurveyOptions& survey = setup.survey;
   LayoutJobResult r;
   r.toleranceDeg = layout.toleranceDeg;
-  std::vector<glm::dvec3>& seeds = r.seedPointsMeters;
-  const auto seedFrom = [&](const std::vector<glm::dvec3>& points, const char* source) {
-    if (!seeds.empty() || points.empty()) return;
-    seeds = points;
-    r.seededFrom = source;
-  };
-  seedFrom(o.given.seedPointsMeters, "option");
-  seedFrom(input.measuredWith.seedPointsMeters, "scene");
-  seedFrom(level.spawnPointsMeters, "spawn points");
-  std::vector<glm::dvec3> captures;
-  for (const Probe& p : input.probes) captures.push_back(p.captureMeters);
-  seedFrom(captures, "probes");
-  if (seeds.empty()) {
-    std::vector<glm::dvec3> regions;
-    for (const FloorSeed& seed : floorRegionSeeds(level, rayCaster, survey.floor))
-      regions.push_back(seed.pointMeters);
-    seedFrom(regions, "the level's floor regions");
-  }
-  if (seeds.empty())
-    throw InputError(inMemory ? input.file : o.levelOrScene,
-                     "no walkable floor: the level has no spawn points, the scene no probes, and "
-                     "no upward face holds a floor a player fits on (give one with --seed X,Y,Z)");
+  r.seedPointsMeters = setup.seedsMeters;
+  r.seededFrom = setup.seededFrom;
+  const std::vector<glm::dvec3>& seeds = r.seedPointsMeters;
 
   // The artist's probes, with the proxies `build` gives them (authored ones as authored).
   std::vector<ProbeProxyBuild> keptBuilds;
