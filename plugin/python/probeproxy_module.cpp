@@ -474,14 +474,15 @@ PYBIND11_MODULE(probeproxy_py, m) {
           py::arg("captures"),
           "The candidates of these capture points (indices), packed: their sight and the floor "
           "samples each fit region's proxy serves (geometry/layout/candidate_wire.h).");
-  m.def("suggest_probes", &suggestProbes, py::arg("scene"), py::arg("anchor"), py::arg("out_dir"),
-        py::arg("level") = py::none(), py::arg("options") = py::dict(),
-        py::arg("progress") = py::none(),
-        "Lays out probes for the whole level (`probeproxy layout`): the fewest that serve its "
-        "walkable floor within the tolerance, their influence boxes and proxies. The floor is "
-        "the part players reach from the level's spawn points, else from the scene's probes. "
-        "Writes into out_dir what `probeproxy layout SCENE --out DIR` writes (layout.scene.json, "
-        "proxies, layout.json, the error maps). level: as build_proxies. options: tolerance_deg, "
-        "max_probes, spacing, max_candidates, reach, capture_height, blend_band, threads. "
-        "Returns {scene (world frame), probes (as build_proxies), figures, files}.");
+  m.def(
+      "suggest_probes", &suggestProbes, py::arg("scene"), py::arg("anchor"), py::arg("out_dir"),
+      py::arg("level") = py::none(), py::arg("options") = py::dict(),
+      py::arg("progress") = py::none(),
+      "Lays out probes for the whole level (`probeproxy layout`): the fewest that serve its "
+      "walkable floor within the tolerance, their influence boxes and proxies. The floor is "
+      "the part players reach from the level's spawn points, else from the scene's probes. "
+      "Writes into out_dir what `probeproxy layout SCENE --out DIR` writes (layout.scene.json, "
+      "proxies, layout.json, the error maps). level: as build_proxies. options: tolerance_deg, "
+      "max_probes, spacing, max_candidates, reach, capture_height, blend_band, tile_size, threads. "
+      "Returns {scene (world frame), probes (as build_proxies), figures, files}.");
 }
