@@ -1,5 +1,7 @@
 #include "geometry/layout/candidate_wire.h"
 
+#include "core/errors/input_error.h"
+
 #include <bit>
 #include <cstdint>
 #include <cstring>
@@ -10,6 +12,7 @@ namespace probeproxy {
 namespace {
 
 constexpr std::string_view kMagic = "PPCW";
+constexpr const char* kWhat = "candidate wire";
 constexpr std::uint32_t kVersion = 1;
 
 static_assert(std::endian::native == std::endian::little, "the wire is written as in memory");
@@ -33,9 +36,8 @@ struct Reader {
 
   std::string_view take(std::size_t n) {
     if (n > bytes.size() - at)
-      throw std::runtime_error("candidate wire: " + std::to_string(bytes.size()) +
-                               " bytes end at " + std::to_string(at) + ", " + std::to_string(n) +
-                               " more expected");
+      throw InputError(kWhat, std::to_string(bytes.size()) + " bytes end at " + std::to_string(at) +
+                                  ", " + std::to_string(n) + " more expected");
     const std::string_view part = bytes.substr(at, n);
     at += n;
     return part;
@@ -49,10 +51,14 @@ struct Reader {
   IndexSet getSet() {
     const auto n = get<std::uint64_t>();
     const std::string_view part = take(n);
-    IndexSet set = IndexSet::readSafe(part.data(), part.size());
+    IndexSet set;
+    try {
+      set = IndexSet::readSafe(part.data(), part.size());
+    } catch (const std::runtime_error&) {  // CRoaring's word for any bitmap it cannot read
+      throw InputError(kWhat, "a bitmap of " + std::to_string(n) + " bytes that is not one");
+    }
     if (set.getSizeInBytes() != n)
-      throw std::runtime_error("candidate wire: a bitmap of " + std::to_string(n) +
-                               " bytes reads as another");
+      throw InputError(kWhat, "a bitmap of " + std::to_string(n) + " bytes reads as another");
     return set;
   }
 };
@@ -80,10 +86,10 @@ std::string packCandidates(std::span<const CaptureCandidates> captures) {
 std::vector<CaptureCandidates> unpackCandidates(std::string_view bytes) {
   Reader in{bytes};
   if (in.take(kMagic.size()) != kMagic)
-    throw std::runtime_error("candidate wire: not packed candidates (no PPCW header)");
+    throw InputError(kWhat, "not packed candidates (no PPCW header)");
   if (const auto version = in.get<std::uint32_t>(); version != kVersion)
-    throw std::runtime_error("candidate wire: version " + std::to_string(version) +
-                             ", this program reads " + std::to_string(kVersion));
+    throw InputError(kWhat, "version " + std::to_string(version) + ", this program reads " +
+                                std::to_string(kVersion));
   const auto count = in.get<std::uint64_t>();
   std::vector<CaptureCandidates> captures;
   for (std::uint64_t k = 0; k < count; ++k) {
@@ -103,8 +109,8 @@ std::vector<CaptureCandidates> unpackCandidates(std::string_view bytes) {
     captures.push_back(std::move(c));
   }
   if (in.at != bytes.size())
-    throw std::runtime_error("candidate wire: " + std::to_string(bytes.size() - in.at) +
-                             " bytes after the last capture point");
+    throw InputError(kWhat,
+                     std::to_string(bytes.size() - in.at) + " bytes after the last capture point");
   return captures;
 }
 

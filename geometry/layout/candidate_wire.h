@@ -27,7 +27,8 @@ struct CaptureCandidates {
 
 std::string packCandidates(std::span<const CaptureCandidates> captures);
 
-// Throws std::runtime_error naming what is wrong for bytes that packCandidates did not write.
+// Throws InputError ("candidate wire: ...") naming what is wrong with bytes packCandidates did
+// not write.
 std::vector<CaptureCandidates> unpackCandidates(std::string_view bytes);
 
 }  // namespace probeproxy

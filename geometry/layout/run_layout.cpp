@@ -112,14 +112,16 @@ Candidates serveAll(const LevelRayCaster& level, std::span<const LayoutCandidate
     bool same = part.size() == tile.size();
     for (std::size_t k = 0; same && k < part.size(); ++k) same = part[k].capture == tile[k];
     if (!same)
-      throw std::runtime_error("layout: a tile's candidates came back for other capture points");
+      throw InputError("layout",
+                       "a tile's candidates came back for other capture points "
+                       "(was each worker given this level and these options?)");
     for (CaptureCandidates& one : part) judged[one.capture] = std::move(one);
   };
   if (o.judgeTiles) {
     const std::vector<std::string> wires = o.judgeTiles(tiles);
     if (wires.size() != tiles.size())
-      throw std::runtime_error("layout: " + std::to_string(wires.size()) + " tiles came back of " +
-                               std::to_string(tiles.size()));
+      throw InputError("layout", std::to_string(wires.size()) + " tiles came back of " +
+                                     std::to_string(tiles.size()));
     for (std::size_t t = 0; t < tiles.size(); ++t) take(tiles[t], wires[t]);
     if (onDone) onDone(captures.size(), captures.size());
   } else {
