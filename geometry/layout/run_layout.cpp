@@ -216,12 +216,12 @@ void dropProbes(const std::set<std::size_t>& gone, std::vector<LayoutProbe>& pro
 // of up to three fit regions (bitmaps: a bit a sample when dense), the selection's window of
 // cells for each (a byte a cell) and its in-sight cache (a byte a cell). Checked before any is
 // made: a 200 m open floor once asked for 17 GiB and died of std::bad_alloc after a minute.
-void requireCandidateMemory(const WalkableFloor& floor, std::size_t captures, std::size_t samples,
+void requireCandidateMemory(const WalkableFloor& floor, std::size_t captures, int samplesPerCell,
                             std::uint64_t budget) {
   const std::uint64_t cells = floor.cells.size();
+  const std::size_t samples = floor.cells.size() * std::size_t(samplesPerCell);
   const std::uint64_t perCapture = 4 * (samples / 8 + 1) + 4 * cells;
-  const std::uint64_t floorBytes =
-      kProcessBytes + cells * kSurveyBytesPerCell + samples * kBytesPerSample;
+  const std::uint64_t floorBytes = surveyMemoryBytes(floor.cells.size(), samplesPerCell);
   const std::uint64_t needed = floorBytes + captures * perCapture;
   char needs[200];
   std::snprintf(needs, sizeof needs,
@@ -242,8 +242,7 @@ CandidateGround candidateGround(const LevelRayCaster& level, const WalkableFloor
   CandidateGround g;
   g.captures =
       layoutCandidates(level, floor, o.spacingMeters, o.captureHeightMeters, o.maxCandidates);
-  requireCandidateMemory(floor, g.captures.points.size(),
-                         floor.cells.size() * std::size_t(o.samplesPerCell), o.maxMemoryBytes);
+  requireCandidateMemory(floor, g.captures.points.size(), o.samplesPerCell, o.maxMemoryBytes);
   FloorSampleOptions so;
   so.samplesPerCell = o.samplesPerCell;
   so.upwardCosine = o.floor.upwardCosine;

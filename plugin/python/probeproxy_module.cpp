@@ -305,15 +305,21 @@ py::dict suggestProbes(const py::dict& sceneData, const std::string& anchor,
                   py::arg("figures") = jsonLoads(r.json), py::arg("files") = files);
 }
 
+// A layout job of a scene or level file, with the module's layout options.
+jobs::LayoutJobOptions fileLayoutJob(const std::string& levelOrScene, const py::dict& options) {
+  jobs::LayoutJobOptions job;
+  job.levelOrScene = levelOrScene;
+  readLayoutOptions(options, job);
+  return job;
+}
+
 // `probeproxy layout LEVEL_OR_SCENE --out DIR` with the candidate stage's tiles judged by
 // `judgeTiles(tiles) -> [bytes]` (scripts/layout_dask.py: a Dask cluster), else here.
 py::dict layoutLevel(const std::string& levelOrScene, const std::string& outFolder,
                      const py::dict& options, const py::object& judgeTiles,
                      const py::object& progress) {
-  jobs::LayoutJobOptions job;
-  job.levelOrScene = levelOrScene;
+  jobs::LayoutJobOptions job = fileLayoutJob(levelOrScene, options);
   job.outFolder = outFolder;
-  readLayoutOptions(options, job);
   if (!judgeTiles.is_none()) {
     // Copies of the options outlive no call but may be dropped on the job's thread: the last
     // reference to the Python callable goes with the GIL held.
@@ -452,9 +458,7 @@ PYBIND11_MODULE(probeproxy_py, m) {
       "One process's share of a layout's candidate stage: the level read, its floor walked and "
       "its capture points laid as layout_level does for the same level and options, once.")
       .def(py::init([](const std::string& levelOrScene, const py::dict& options) {
-             jobs::LayoutJobOptions job;
-             job.levelOrScene = levelOrScene;
-             readLayoutOptions(options, job);
+             const jobs::LayoutJobOptions job = fileLayoutJob(levelOrScene, options);
              py::gil_scoped_release release;
              return std::make_unique<jobs::CandidateJudge>(job);
            }),

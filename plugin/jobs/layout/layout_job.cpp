@@ -7,7 +7,6 @@
 #include "core/io/atomic_write.h"
 #include "core/io/output_folder.h"
 #include "geometry/export/runtime_export.h"
-#include "geometry/floor/floor_seed.h"
 #include "geometry/layout/candidate_service.h"
 #include "geometry/layout/layout_proxy.h"
 #include "geometry/level/write_level_mesh.h"
