@@ -130,21 +130,19 @@ struct CellSpan {
   std::size_t first = 0, end = std::numeric_limits<std::size_t>::max();
 };
 
-// The blend where a camera can be over the walked cells that meet the region, at the heights
-// within it: each cell's square on a grid of whole multiples of kScanGridMeters (shared by
-// neighbouring cells, one point past its low sides so every neighbouring pair is compared).
-// Only pops over `popThreshold` are measured: steepestPerCentimeter is the steepest of those, 0
-// when there is none.
-BlendScan scanBlend(const WalkableFloor& walked, double headRoom,
-                    std::span<const InfluenceVolume> volumes, std::span<const double> heights,
-                    const Region& region, double popThreshold, CameraSpaceCache& cameraSpace,
-                    CellSpan cells = {}) {
-  struct Task {
-    std::size_t cell;
-    double z;
-  };
+// One walked cell at one camera height.
+struct BlendTask {
+  std::size_t cell = 0;
+  double z = 0.0;
+};
+
+// The walked cells that meet the region, each at the heights within it a camera over that cell
+// can be at.
+std::vector<BlendTask> blendTasks(const WalkableFloor& walked, double headRoom,
+                                  std::span<const double> heights, const Region& region,
+                                  CellSpan cells = {}) {
   const double halfCell = 0.5 * walked.spacingMeters;
-  std::vector<Task> tasks;
+  std::vector<BlendTask> tasks;
   for (std::size_t c = cells.first; c < std::min(cells.end, walked.cells.size()); ++c) {
     const glm::dvec3 f = walked.cells[c].pointMeters;
     if (!meets(region, f - glm::dvec3(halfCell, halfCell, 0.0),
@@ -154,63 +152,98 @@ BlendScan scanBlend(const WalkableFloor& walked, double headRoom,
       if (f.z <= z && z <= f.z + headRoom && region.lo.z <= z && z <= region.hi.z)
         tasks.push_back({c, z});
   }
-  std::vector<Region> bounds(volumes.size());  // once, not for every cell
+  return tasks;
+}
+
+// A task's square on the scan grid: whole multiples of kScanGridMeters (shared by neighbouring
+// cells, one point past its low sides so every neighbouring pair is compared).
+WeightGrid taskGrid(const WalkableFloor& walked, const BlendTask& task) {
+  const double halfCell = 0.5 * walked.spacingMeters, s = kScanGridMeters;
+  const glm::dvec3 f = walked.cells[task.cell].pointMeters;
+  const glm::dvec2 cellLo = glm::dvec2(f) - halfCell;
+  WeightGrid grid;
+  grid.zMeters = task.z;
+  grid.spacingMeters = s;
+  grid.minMeters = (glm::ceil((cellLo - s) / s - 0.5) + 0.5) * s;
+  grid.maxMeters = glm::dvec2(f) + halfCell;
+  return grid;
+}
+
+// Whether a volume within these bounds takes part in the blend over the grid: the volumes that
+// do not leave a task's blend as it is.
+bool reachesGrid(const Region& bounds, const WeightGrid& grid) {
+  return bounds.lo.x < grid.maxMeters.x && grid.minMeters.x < bounds.hi.x &&
+         bounds.lo.y < grid.maxMeters.y && grid.minMeters.y < bounds.hi.y &&
+         bounds.lo.z < grid.zMeters && grid.zMeters < bounds.hi.z;
+}
+
+std::vector<Region> boundsOf(std::span<const InfluenceVolume> volumes) {
+  std::vector<Region> bounds(volumes.size());
   for (std::size_t v = 0; v < volumes.size(); ++v)
     influenceBounds(volumes[v], bounds[v].lo, bounds[v].hi);
+  return bounds;
+}
+
+// The blend where a camera can be over one task's square. Only a pop over `popThreshold` is
+// measured (pop.perCentimeter stays 0 otherwise).
+CellBlend scanTask(const WalkableFloor& walked, std::span<const InfluenceVolume> volumes,
+                   std::span<const Region> bounds, const BlendTask& task, double popThreshold,
+                   CameraSpaceCache& cameraSpace) {
+  const WeightGrid grid = taskGrid(walked, task);
+  const double z = task.z, s = kScanGridMeters;
+  CellBlend found;
+  found.floorMeters = walked.cells[task.cell].pointMeters;
+  found.zMeters = z;
+  std::vector<InfluenceVolume> near;
+  for (std::size_t v = 0; v < volumes.size(); ++v)
+    if (reachesGrid(bounds[v], grid)) near.push_back(volumes[v]);
+  if (near.size() < 2 || insideOneInnerRange(near, grid.minMeters, grid.maxMeters, z)) return found;
+  // First on a coarse grid over the cell: what overlaps, and whether any weight turns by
+  // as much as a pop does in one step (weights turn one way across a band: a pop within the
+  // cell shows between its corners).
+  int most = 0;
+  std::vector<double> least(near.size(), 1.0), largest(near.size(), 0.0);
+  for (int i = 0; i < kCoarsePoints; ++i) {
+    for (int j = 0; j < kCoarsePoints; ++j) {
+      const glm::dvec2 span = grid.maxMeters - grid.minMeters;
+      const glm::dvec3 p(grid.minMeters.x + i * span.x / (kCoarsePoints - 1),
+                         grid.minMeters.y + j * span.y / (kCoarsePoints - 1), z);
+      std::vector<double> w(near.size(), 0.0);
+      for (const ProbeWeight& pw : blendWeights(near, p)) w[pw.probe] = pw.weight;
+      int over = 0;
+      bool inner = false;
+      for (std::size_t k = 0; k < near.size(); ++k) {
+        least[k] = std::min(least[k], w[k]);
+        largest[k] = std::max(largest[k], w[k]);
+        over += insideInfluence(near[k], p);
+        inner = inner || insideInnerRange(near[k], p);
+      }
+      if (!inner) most = std::max(most, over);
+    }
+  }
+  double turn = 0.0;
+  for (std::size_t k = 0; k < near.size(); ++k) turn = std::max(turn, largest[k] - least[k]);
+  found.mostOverlapping = most;
+  if (turn < popThreshold * 100.0 * s) return found;
+  const WeightContinuity c =
+      measureWeightContinuity(near, grid, {}, cameraSpace.mask(cameraSpace.slot(task.cell, z)));
+  const double perCentimeter = c.largestJump / (100.0 * s);
+  if (perCentimeter > popThreshold) found.pop = {perCentimeter, c.jumpFromMeters, c.jumpToMeters};
+  return found;
+}
+
+// The blend where a camera can be over the walked cells that meet the region, at the heights
+// within it; steepestPerCentimeter is the steepest pop over `popThreshold`, 0 when there is none.
+BlendScan scanBlend(const WalkableFloor& walked, double headRoom,
+                    std::span<const InfluenceVolume> volumes, std::span<const double> heights,
+                    const Region& region, double popThreshold, CameraSpaceCache& cameraSpace,
+                    CellSpan cells = {}) {
+  const std::vector<BlendTask> tasks = blendTasks(walked, headRoom, heights, region, cells);
+  const std::vector<Region> bounds = boundsOf(volumes);  // once, not for every cell
   BlendScan scan;
   scan.cells.resize(tasks.size());
   tbb::parallel_for(std::size_t{0}, tasks.size(), [&](std::size_t t) {
-    const glm::dvec3 f = walked.cells[tasks[t].cell].pointMeters;
-    CellBlend& found = scan.cells[t];
-    const double z = tasks[t].z, s = kScanGridMeters;
-    found.floorMeters = f;
-    found.zMeters = z;
-    WeightGrid grid;
-    grid.zMeters = z;
-    grid.spacingMeters = s;
-    const glm::dvec2 cellLo = glm::dvec2(f) - halfCell, cellHi = glm::dvec2(f) + halfCell;
-    grid.minMeters = (glm::ceil((cellLo - s) / s - 0.5) + 0.5) * s;
-    grid.maxMeters = cellHi;
-    std::vector<InfluenceVolume> near;
-    for (std::size_t v = 0; v < volumes.size(); ++v) {
-      const glm::dvec3 lo = bounds[v].lo, hi = bounds[v].hi;
-      if (lo.x < cellHi.x && grid.minMeters.x < hi.x && lo.y < cellHi.y &&
-          grid.minMeters.y < hi.y && lo.z < z && z < hi.z)
-        near.push_back(volumes[v]);
-    }
-    if (near.size() < 2 || insideOneInnerRange(near, grid.minMeters, cellHi, z)) return;
-    // First on a coarse grid over the cell: what overlaps, and whether any weight turns by
-    // as much as a pop does in one step (weights turn one way across a band: a pop within the
-    // cell shows between its corners).
-    int most = 0;
-    std::vector<double> least(near.size(), 1.0), largest(near.size(), 0.0);
-    for (int i = 0; i < kCoarsePoints; ++i) {
-      for (int j = 0; j < kCoarsePoints; ++j) {
-        const glm::dvec2 span = cellHi - grid.minMeters;
-        const glm::dvec3 p(grid.minMeters.x + i * span.x / (kCoarsePoints - 1),
-                           grid.minMeters.y + j * span.y / (kCoarsePoints - 1), z);
-        std::vector<double> w(near.size(), 0.0);
-        for (const ProbeWeight& pw : blendWeights(near, p)) w[pw.probe] = pw.weight;
-        int over = 0;
-        bool inner = false;
-        for (std::size_t k = 0; k < near.size(); ++k) {
-          least[k] = std::min(least[k], w[k]);
-          largest[k] = std::max(largest[k], w[k]);
-          over += insideInfluence(near[k], p);
-          inner = inner || insideInnerRange(near[k], p);
-        }
-        if (!inner) most = std::max(most, over);
-      }
-    }
-    double turn = 0.0;
-    for (std::size_t k = 0; k < near.size(); ++k) turn = std::max(turn, largest[k] - least[k]);
-    found.mostOverlapping = most;
-    if (turn < popThreshold * 100.0 * s) return;
-    const WeightContinuity c = measureWeightContinuity(
-        near, grid, {}, cameraSpace.mask(cameraSpace.slot(tasks[t].cell, z)));
-    const double perCentimeter = c.largestJump / (100.0 * s);
-    if (perCentimeter <= popThreshold) return;
-    found.pop = {perCentimeter, c.jumpFromMeters, c.jumpToMeters};
+    scan.cells[t] = scanTask(walked, volumes, bounds, tasks[t], popThreshold, cameraSpace);
   });
   return scan;
 }
@@ -221,21 +254,87 @@ Region boundsOf(const InfluenceVolume& v) {
   return r;
 }
 
-// Whether, away from the spot, no cell's blend turns steeper than `limit` or than it did, and
-// no more volumes meet over a camera than `maxOverlap` or than did: `before` and `after` scan
-// the same region.
-bool noWorseAwayFrom(const Region& spot, const BlendScan& before, const BlendScan& after,
-                     double limit, int maxOverlap, double halfCell) {
-  for (std::size_t t = 0; t < after.cells.size(); ++t) {
-    const CellBlend& b = before.cells[t];
-    const CellBlend& a = after.cells[t];
-    if (a.mostOverlapping > std::max(maxOverlap, b.mostOverlapping)) return false;
-    const glm::dvec3 at(a.floorMeters.x, a.floorMeters.y, a.zMeters), half(halfCell, halfCell, 0.0);
-    if (meets(spot, at - half, at + half)) continue;
-    if (a.pop.perCentimeter > std::max(limit, b.pop.perCentimeter)) return false;
+// Whether a widening of one volume leaves, away from the spot, no cell's blend turning steeper
+// than the limit or than it did, and no more volumes meeting over a camera than the blend takes
+// or than did, at every height over the region its widest growth reaches. Most widenings fail
+// near the spot, where the band that pops goes on, so cells are taken nearest the spot first
+// and the check stops at the first that got worse; the blend as it is, measured once a cell,
+// serves every widening of the volume tried at this spot.
+class AwayFromSpot {
+ public:
+  struct Limits {
+    double perCentimeter = 0.0;
+    int overlap = 0;
+  };
+  AwayFromSpot(const WalkableFloor& walked, double headRoom, std::span<const double> heights,
+               const Region& over, const Region& spot, Limits limits,
+               std::span<const InfluenceVolume> volumes, CameraSpaceCache& cameraSpace)
+      : walked_(walked),
+        spot_(spot),
+        limits_(limits),
+        volumes_(volumes),
+        bounds_(boundsOf(volumes)),
+        cameraSpace_(cameraSpace),
+        tasks_(blendTasks(walked, headRoom, heights, over)) {
+    const glm::dvec2 centre = 0.5 * (glm::dvec2(spot.lo) + glm::dvec2(spot.hi));
+    const auto distance = [&](const BlendTask& t) {
+      const glm::dvec2 d = glm::dvec2(walked.cells[t.cell].pointMeters) - centre;
+      return glm::dot(d, d);
+    };
+    std::sort(tasks_.begin(), tasks_.end(), [&](const BlendTask& x, const BlendTask& y) {
+      return std::tuple(distance(x), x.cell, x.z) < std::tuple(distance(y), y.cell, y.z);
+    });
+    before_.resize(tasks_.size());
   }
-  return true;
-}
+
+  // Volume v as `wider` instead of as it is.
+  bool noWorse(std::size_t v, const BoxInfluence& wider) {
+    std::vector<InfluenceVolume> after(volumes_.begin(), volumes_.end());
+    after[v] = wider;
+    std::vector<Region> afterBounds = bounds_;
+    influenceBounds(after[v], afterBounds[v].lo, afterBounds[v].hi);
+    // A cell the wider volume does not reach blends as before (it holds the volume as it is).
+    std::vector<std::size_t> changed;
+    for (std::size_t t = 0; t < tasks_.size(); ++t)
+      if (reachesGrid(afterBounds[v], taskGrid(walked_, tasks_[t]))) changed.push_back(t);
+    const double halfCell = 0.5 * walked_.spacingMeters;
+    for (std::size_t first = 0; first < changed.size(); first += kCellsAtATime) {
+      const std::size_t end = std::min(changed.size(), first + kCellsAtATime);
+      std::vector<CellBlend> afterCells(end - first);
+      tbb::parallel_for(first, end, [&](std::size_t i) {
+        const std::size_t t = changed[i];
+        if (!before_[t])
+          before_[t] =
+              scanTask(walked_, volumes_, bounds_, tasks_[t], limits_.perCentimeter, cameraSpace_);
+        afterCells[i - first] =
+            scanTask(walked_, after, afterBounds, tasks_[t], limits_.perCentimeter, cameraSpace_);
+      });
+      for (std::size_t i = first; i < end; ++i) {
+        const CellBlend& b = *before_[changed[i]];
+        const CellBlend& a = afterCells[i - first];
+        if (a.mostOverlapping > std::max(limits_.overlap, b.mostOverlapping)) return false;
+        const glm::dvec3 at(a.floorMeters.x, a.floorMeters.y, a.zMeters);
+        const glm::dvec3 half(halfCell, halfCell, 0.0);
+        if (meets(spot_, at - half, at + half)) continue;
+        if (a.pop.perCentimeter > std::max(limits_.perCentimeter, b.pop.perCentimeter))
+          return false;
+      }
+    }
+    return true;
+  }
+
+ private:
+  // Enough to keep the threads busy, few enough to stop soon after the first cell that fails.
+  static constexpr std::size_t kCellsAtATime = 64;
+  const WalkableFloor& walked_;
+  Region spot_;
+  Limits limits_;
+  std::span<const InfluenceVolume> volumes_;  // as they are
+  std::vector<Region> bounds_;
+  CameraSpaceCache& cameraSpace_;
+  std::vector<BlendTask> tasks_;
+  std::vector<std::optional<CellBlend>> before_;
+};
 
 // The cells round a pop, at its height.
 Region around(const Pop& pop, double cellMeters) {
@@ -328,8 +427,7 @@ std::size_t widenFadesWhereWeightsJump(const LevelRayCaster& level, const Walkab
         BoxInfluence widest = box;
         for (int axis : {0, 1})
           widest.halfExtentsMeters[axis] += kOuterGrowthsOverGap.back() * gapMeters;
-        const Region over = boundsOf(widest);
-        std::optional<BlendScan> before;
+        std::optional<AwayFromSpot> away;
         std::optional<double> leakBefore;
         for (int axis : axes) {
           for (const BoxInfluence& wider : widerFades(box, axis, gapMeters)) {
@@ -337,15 +435,10 @@ std::size_t widenFadesWhereWeightsJump(const LevelRayCaster& level, const Walkab
             const double spotAfter = scan(spot, spotHeight, target).steepestPerCentimeter();
             volumes[v] = box;
             if (!(spotAfter < now)) continue;
-            // At every height, away from the spot: no cell steeper than it was or than the
-            // target, no more volumes meeting.
-            if (!before) before = scan(over, heights, target);
-            volumes[v] = wider;
-            const BlendScan after = scan(over, heights, target);
-            volumes[v] = box;
-            if (!noWorseAwayFrom(spot, *before, after, target, limits.maxOverlap,
-                                 0.5 * walked.spacingMeters))
-              continue;
+            if (!away)
+              away.emplace(walked, headRoom, heights, boundsOf(widest), spot,
+                           AwayFromSpot::Limits{target, limits.maxOverlap}, volumes, cameraSpace);
+            if (!away->noWorse(v, wider)) continue;
             if (wider.halfExtentsMeters != box.halfExtentsMeters) {  // reaches further
               const glm::dvec3 capture = probes[v - kept.size()].captureMeters;
               if (!leakBefore)
