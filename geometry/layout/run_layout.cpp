@@ -274,6 +274,12 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
                         const WalkableFloor& floor, const LayoutOptions& o,
                         const std::function<void(std::size_t, std::size_t)>& onDone,
                         std::span<const SurveyProbe> kept, LayoutResult& r) {
+  auto lapStart = std::chrono::steady_clock::now();
+  const auto lap = [&](const char* stage) {
+    const auto now = std::chrono::steady_clock::now();
+    r.stageSeconds.emplace_back(stage, std::chrono::duration<double>(now - lapStart).count());
+    lapStart = now;
+  };
   const CandidateGround ground = candidateGround(level, floor, o);
   const std::vector<FloorSample>& samples = ground.samples;
   const std::vector<LayoutCandidate>& candidates = ground.captures.points;
@@ -289,6 +295,7 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
   std::vector<double> ms;
   for (const CandidateService& s : services) ms.push_back(s.buildMs);
   r.candidateMedianMs = median(ms);
+  lap("candidates");
 
   std::vector<std::size_t> captureCells;
   for (const LayoutCandidate& c : candidates) captureCells.push_back(c.cell);
@@ -307,6 +314,7 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
   for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
   r.servableShare = servedShare(services, all, samples, keptCells.served);
   r.servedShare = servedShare(services, selection.chosen, samples, keptCells.served);
+  lap("selection");
   // Each probe's box, ranges in the order the cover took them, then the fills, each kept clear
   // of the inner ranges before it (keepClearOfInnerRanges): windows of neighbouring heights
   // (a ledge over a lower floor) put one range's box in the air over the other's floor.
@@ -355,6 +363,7 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
   raiseRangesOverRaisedFloor(walked, o.blendBandMeters, keptVolumes, r.probes);
   volumes.resize(kept.size());
   for (const LayoutProbe& p : r.probes) volumes.push_back(p.influence);
+  lap("volumes");
   // What of the survey's floor no volume reaches, or only the far ends of bands reach.
   std::set<std::size_t> optional;  // of r.probes
   for (const FloorFill& f :
@@ -367,6 +376,7 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
   // Ranges a capture point held too near their neighbours for a smooth blend part
   // (near_ranges.h).
   partNearRanges(o.blendBandMeters, keptVolumes, r.probes);
+  lap("uncovered_floor");
   // Where more bands cross than the blend takes (overlap_trim.h), to validate's defaults. An
   // optional fill in a crowd the trim could not free, its faces moved or not, goes, and the rest
   // rise and are trimmed again without it.
@@ -384,9 +394,11 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
     trimBandsOverOverlapLimit(level, walked, o.blendBandMeters, ValidateOptions{}, keptVolumes,
                               r.probes, optional);
   }
+  lap("overlap_trim");
   // Where the blend still pops, a fade widens (widen_fades.h).
   widenFadesWhereWeightsJump(level, walked, o.blendBandMeters, ValidateOptions{}, keptVolumes,
                              r.probes);
+  lap("fades");
 }
 
 }  // namespace

@@ -21,6 +21,8 @@
 #include <functional>
 #include <limits>
 #include <span>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace probeproxy {
@@ -51,6 +53,9 @@ struct LayoutResult {
   // added.
   double keptServedShare = 0.0;
   double seconds = 0.0;
+  // Where the seconds went, stage by stage in the order they ran (candidates, selection,
+  // volumes, uncovered_floor, overlap_trim, fades): on a large level one stage can take most.
+  std::vector<std::pair<std::string, double>> stageSeconds;
 };
 
 // The candidate stage's ground, as layout makes it from the level's walkable floor (the coarse

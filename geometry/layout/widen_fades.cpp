@@ -3,9 +3,12 @@
 #include "core/blend/weight_continuity.h"
 #include "geometry/layout/bands_in_sight.h"
 #include "geometry/layout/layout_influence.h"
+#include "geometry/layout/volume_columns.h"
+#include "geometry/validate/camera_planes.h"
 #include "geometry/validate/camera_space.h"
 #include "geometry/validate/influence_out_of_sight.h"
 
+#include <tbb/blocked_range.h>
 #include <tbb/concurrent_unordered_map.h>
 #include <tbb/parallel_for.h>
 #include <glm/common.hpp>
@@ -13,6 +16,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <set>
@@ -184,18 +188,35 @@ std::vector<Region> boundsOf(std::span<const InfluenceVolume> volumes) {
   return bounds;
 }
 
+VolumeColumns columnsOf(std::span<const Region> bounds) {
+  std::vector<glm::dvec3> lo, hi;
+  for (const Region& b : bounds) lo.push_back(b.lo), hi.push_back(b.hi);
+  return VolumeColumns(lo, hi);
+}
+
+// The volumes that may reach a task's square, in increasing order (`widened`: one more,
+// grown past the bounds the columns were made from).
+void volumesNear(const VolumeColumns& columns, const WeightGrid& grid,
+                 std::vector<std::uint32_t>& out,
+                 std::optional<std::uint32_t> widened = std::nullopt) {
+  columns.near(grid.minMeters, grid.maxMeters, out);
+  if (widened && !std::binary_search(out.begin(), out.end(), *widened))
+    out.insert(std::upper_bound(out.begin(), out.end(), *widened), *widened);
+}
+
 // The blend where a camera can be over one task's square. Only a pop over `popThreshold` is
 // measured (pop.perCentimeter stays 0 otherwise).
+// `candidates`: the volumes that may reach it, in increasing order (volumesNear).
 CellBlend scanTask(const WalkableFloor& walked, std::span<const InfluenceVolume> volumes,
-                   std::span<const Region> bounds, const BlendTask& task, double popThreshold,
-                   CameraSpaceCache& cameraSpace) {
+                   std::span<const Region> bounds, std::span<const std::uint32_t> candidates,
+                   const BlendTask& task, double popThreshold, CameraSpaceCache& cameraSpace) {
   const WeightGrid grid = taskGrid(walked, task);
   const double z = task.z, s = kScanGridMeters;
   CellBlend found;
   found.floorMeters = walked.cells[task.cell].pointMeters;
   found.zMeters = z;
   std::vector<InfluenceVolume> near;
-  for (std::size_t v = 0; v < volumes.size(); ++v)
+  for (std::uint32_t v : candidates)
     if (reachesGrid(bounds[v], grid)) near.push_back(volumes[v]);
   if (near.size() < 2 || insideOneInnerRange(near, grid.minMeters, grid.maxMeters, z)) return found;
   // First on a coarse grid over the cell: what overlaps, and whether any weight turns by
@@ -240,10 +261,16 @@ BlendScan scanBlend(const WalkableFloor& walked, double headRoom,
                     CellSpan cells = {}) {
   const std::vector<BlendTask> tasks = blendTasks(walked, headRoom, heights, region, cells);
   const std::vector<Region> bounds = boundsOf(volumes);  // once, not for every cell
+  const VolumeColumns columns = columnsOf(bounds);
   BlendScan scan;
   scan.cells.resize(tasks.size());
-  tbb::parallel_for(std::size_t{0}, tasks.size(), [&](std::size_t t) {
-    scan.cells[t] = scanTask(walked, volumes, bounds, tasks[t], popThreshold, cameraSpace);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tasks.size()), [&](const auto& range) {
+    std::vector<std::uint32_t> candidates;
+    for (std::size_t t = range.begin(); t != range.end(); ++t) {
+      volumesNear(columns, taskGrid(walked, tasks[t]), candidates);
+      scan.cells[t] =
+          scanTask(walked, volumes, bounds, candidates, tasks[t], popThreshold, cameraSpace);
+    }
   });
   return scan;
 }
@@ -274,6 +301,7 @@ class AwayFromSpot {
         limits_(limits),
         volumes_(volumes),
         bounds_(boundsOf(volumes)),
+        columns_(columnsOf(bounds_)),
         cameraSpace_(cameraSpace),
         tasks_(blendTasks(walked, headRoom, heights, over)) {
     const glm::dvec2 centre = 0.5 * (glm::dvec2(spot.lo) + glm::dvec2(spot.hi));
@@ -303,11 +331,16 @@ class AwayFromSpot {
       std::vector<CellBlend> afterCells(end - first);
       tbb::parallel_for(first, end, [&](std::size_t i) {
         const std::size_t t = changed[i];
-        if (!before_[t])
-          before_[t] =
-              scanTask(walked_, volumes_, bounds_, tasks_[t], limits_.perCentimeter, cameraSpace_);
-        afterCells[i - first] =
-            scanTask(walked_, after, afterBounds, tasks_[t], limits_.perCentimeter, cameraSpace_);
+        const WeightGrid grid = taskGrid(walked_, tasks_[t]);
+        std::vector<std::uint32_t> candidates;
+        if (!before_[t]) {
+          volumesNear(columns_, grid, candidates);
+          before_[t] = scanTask(walked_, volumes_, bounds_, candidates, tasks_[t],
+                                limits_.perCentimeter, cameraSpace_);
+        }
+        volumesNear(columns_, grid, candidates, static_cast<std::uint32_t>(v));
+        afterCells[i - first] = scanTask(walked_, after, afterBounds, candidates, tasks_[t],
+                                         limits_.perCentimeter, cameraSpace_);
       });
       for (std::size_t i = first; i < end; ++i) {
         const CellBlend& b = *before_[changed[i]];
@@ -331,6 +364,7 @@ class AwayFromSpot {
   Limits limits_;
   std::span<const InfluenceVolume> volumes_;  // as they are
   std::vector<Region> bounds_;
+  VolumeColumns columns_;  // of the volumes as they are
   CameraSpaceCache& cameraSpace_;
   std::vector<BlendTask> tasks_;
   std::vector<std::optional<CellBlend>> before_;
@@ -370,13 +404,12 @@ std::size_t widenFadesWhereWeightsJump(const LevelRayCaster& level, const Walkab
                                        std::span<const InfluenceVolume> kept,
                                        std::vector<LayoutProbe>& probes) {
   std::vector<InfluenceVolume> volumes(kept.begin(), kept.end());
-  std::vector<double> heights;  // validate's weight_jump planes
+  std::vector<double> captureHeights;
   for (const LayoutProbe& p : probes) {
     volumes.push_back(p.influence);
-    heights.push_back(p.captureMeters.z);
+    captureHeights.push_back(p.captureMeters.z);
   }
-  std::sort(heights.begin(), heights.end());
-  heights.erase(std::unique(heights.begin(), heights.end()), heights.end());
+  const std::vector<double> heights = cameraPlaneHeights(captureHeights);  // validate's planes
   if (volumes.empty() || walked.cells.empty()) return 0;
 
   const double headRoom = limits.cameraHeadRoomMeters;
@@ -407,13 +440,15 @@ std::size_t widenFadesWhereWeightsJump(const LevelRayCaster& level, const Walkab
     const Region spot = around(pop, walked.spacingMeters);
     const std::array<double, 1> spotHeight{pop.from.z};
     for (int round = 0; round < kMostWideningsPerSpot; ++round) {
-      const double now = scan(spot, spotHeight, target).steepestPerCentimeter();
-      if (now <= target) break;
+      // A band's spots tried in vain are passed over before they are scanned again: on hilly
+      // ground nearly all are.
       std::vector<std::pair<std::size_t, int>> reaching;  // the layout's volumes, as they are
       for (std::size_t v = kept.size(); v < volumes.size(); ++v)
         if (insideInfluence(volumes[v], pop.from) || insideInfluence(volumes[v], pop.to))
           reaching.emplace_back(v, changes[v]);
       if (triedInVain.count(reaching)) break;
+      const double now = scan(spot, spotHeight, target).steepestPerCentimeter();
+      if (now <= target) break;
       // The axis the weight turns along first.
       const glm::dvec3 step = glm::abs(pop.to - pop.from);
       const std::array<int, 2> axes = step.x >= step.y ? std::array{0, 1} : std::array{1, 0};

@@ -1,9 +1,11 @@
 // weight_jump: a blend weight that changes abruptly between neighbouring points pops as the
-// camera moves (Lagarde's weights, core/blend). Measured on a horizontal grid at each capture
-// height, where a camera can be (camera_space.h), and scaled to a change per centimetre so the
-// grid spacing does not move the limit.
+// camera moves (Lagarde's weights, core/blend). Measured on a horizontal grid at the capture
+// heights (at most one a band of height, camera_planes.h), where a camera can be
+// (camera_space.h), and scaled to a change per centimetre so the grid spacing does not move the
+// limit.
 
 #include "core/blend/weight_continuity.h"
+#include "geometry/validate/camera_planes.h"
 #include "geometry/validate/camera_space.h"
 #include "geometry/validate/validation_rules.h"
 
@@ -11,7 +13,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <set>
 #include <vector>
 
 namespace probeproxy {
@@ -20,16 +21,16 @@ void checkWeightJumps(const Scene& scene, const LevelRayCaster& level, const Wal
                       const ValidateOptions& options, std::vector<ValidationFinding>& out) {
   if (scene.probes.empty()) return;
   std::vector<InfluenceVolume> volumes;
-  std::set<double> heights;
+  std::vector<double> captureHeights;
   for (const Probe& p : scene.probes) {
     volumes.push_back(p.influence);
-    heights.insert(p.captureMeters.z);
+    captureHeights.push_back(p.captureMeters.z);
   }
   const ReachableMask cameras = [&](std::span<const glm::dvec3> points, std::span<char> reachable) {
     markCameraSpace(level, walked, options.cameraHeadRoomMeters, points, reachable);
   };
   // Each height on its own (a laid-out map has dozens), the worst taken in height order.
-  const std::vector<double> zs(heights.begin(), heights.end());
+  const std::vector<double> zs = cameraPlaneHeights(captureHeights);
   std::vector<WeightContinuity> found(zs.size());
   std::vector<double> spacing(zs.size());
   tbb::parallel_for(std::size_t{0}, zs.size(), [&](std::size_t h) {

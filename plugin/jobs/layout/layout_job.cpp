@@ -190,6 +190,11 @@ std::string layoutReportJson(const LayoutJobOptions& o, const LayoutJobResult& r
   j["served_share"] = number(r.layout.servedShare);
   j["servable_share"] = number(r.layout.servableShare);
   j["layout_seconds"] = number(r.layout.seconds);
+  if (!r.layout.stageSeconds.empty()) {
+    nlohmann::ordered_json stages;
+    for (const auto& [stage, seconds] : r.layout.stageSeconds) stages[stage] = number(seconds);
+    j["stage_seconds"] = stages;
+  }
   if (!r.engines.empty()) {
     const auto policyJson = [](const EnginePresetPolicy& p) {
       nlohmann::ordered_json policy;
