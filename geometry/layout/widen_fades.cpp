@@ -16,8 +16,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
-#include <limits>
 #include <optional>
 #include <set>
 #include <tuple>
@@ -129,9 +129,9 @@ class CameraSpaceCache {
   tbb::concurrent_unordered_map<std::size_t, Slot> slots_;
 };
 
-// The walked cells a scan takes, [first, end): all of them, or a block of the whole floor's.
+// A block of the walked cells, [first, end), that the scan of the whole floor takes at a time.
 struct CellSpan {
-  std::size_t first = 0, end = std::numeric_limits<std::size_t>::max();
+  std::size_t first = 0, end = 0;
 };
 
 // One walked cell at one camera height.
@@ -140,21 +140,51 @@ struct BlendTask {
   double z = 0.0;
 };
 
-// The walked cells that meet the region, each at the heights within it a camera over that cell
-// can be at.
+// Calls f(cell index) for the walked cells of the grid columns and rows the region's plan
+// covers, and a cell more either side (the caller tests each exactly), in index order: a scan
+// of a spot looks at a few cells, not at the whole floor's.
+template <class F>
+void forEachCellNear(const WalkableFloor& walked, const Region& region, F&& f) {
+  if (walked.cells.empty()) return;
+  const auto index = [&](double meters, double origin, int count) {
+    const double at = std::floor((meters - origin) / walked.spacingMeters);
+    return static_cast<int>(std::clamp(at, -1.0, static_cast<double>(count)));
+  };
+  const int c0 = index(region.lo.x, walked.originMeters.x, walked.columns) - 1;
+  const int c1 = index(region.hi.x, walked.originMeters.x, walked.columns) + 1;
+  const int r0 = std::max(0, index(region.lo.y, walked.originMeters.y, walked.rows) - 1);
+  const int r1 =
+      std::min(walked.rows - 1, index(region.hi.y, walked.originMeters.y, walked.rows) + 1);
+  const auto before = [](const FloorCell& cell, std::pair<int, int> at) {
+    return std::pair(cell.row, cell.column) < at;
+  };
+  for (int r = r0; r <= r1; ++r) {
+    auto it = std::lower_bound(walked.cells.begin(), walked.cells.end(), std::pair(r, c0), before);
+    for (; it != walked.cells.end() && it->row == r && it->column <= c1; ++it)
+      f(static_cast<std::size_t>(it - walked.cells.begin()));
+  }
+}
+
+// The walked cells that meet the region (all of the floor's, or those of a block `cells`),
+// each at the heights within it a camera over that cell can be at.
 std::vector<BlendTask> blendTasks(const WalkableFloor& walked, double headRoom,
                                   std::span<const double> heights, const Region& region,
-                                  CellSpan cells = {}) {
+                                  std::optional<CellSpan> cells = std::nullopt) {
   const double halfCell = 0.5 * walked.spacingMeters;
   std::vector<BlendTask> tasks;
-  for (std::size_t c = cells.first; c < std::min(cells.end, walked.cells.size()); ++c) {
+  const auto take = [&](std::size_t c) {
     const glm::dvec3 f = walked.cells[c].pointMeters;
     if (!meets(region, f - glm::dvec3(halfCell, halfCell, 0.0),
                f + glm::dvec3(halfCell, halfCell, headRoom)))
-      continue;
-    for (double z : heights)
-      if (f.z <= z && z <= f.z + headRoom && region.lo.z <= z && z <= region.hi.z)
-        tasks.push_back({c, z});
+      return;
+    for (auto z = std::lower_bound(heights.begin(), heights.end(), f.z);
+         z != heights.end() && *z <= f.z + headRoom; ++z)
+      if (region.lo.z <= *z && *z <= region.hi.z) tasks.push_back({c, *z});
+  };
+  if (cells) {
+    for (std::size_t c = cells->first; c < std::min(cells->end, walked.cells.size()); ++c) take(c);
+  } else {
+    forEachCellNear(walked, region, take);
   }
   return tasks;
 }
@@ -173,8 +203,8 @@ WeightGrid taskGrid(const WalkableFloor& walked, const BlendTask& task) {
   return grid;
 }
 
-// Whether a volume within these bounds takes part in the blend over the grid: the volumes that
-// do not leave a task's blend as it is.
+// Whether a volume within these bounds takes part in the blend over the grid (the others leave
+// that blend as it is).
 bool reachesGrid(const Region& bounds, const WeightGrid& grid) {
   return bounds.lo.x < grid.maxMeters.x && grid.minMeters.x < bounds.hi.x &&
          bounds.lo.y < grid.maxMeters.y && grid.minMeters.y < bounds.hi.y &&
@@ -204,9 +234,9 @@ void volumesNear(const VolumeColumns& columns, const WeightGrid& grid,
     out.insert(std::upper_bound(out.begin(), out.end(), *widened), *widened);
 }
 
-// The blend where a camera can be over one task's square. Only a pop over `popThreshold` is
-// measured (pop.perCentimeter stays 0 otherwise).
-// `candidates`: the volumes that may reach it, in increasing order (volumesNear).
+// The blend where a camera can be over one task's square, among `candidates` (the volumes that
+// may reach it, in increasing order: volumesNear). Only a pop over `popThreshold` is measured
+// (pop.perCentimeter stays 0 otherwise).
 CellBlend scanTask(const WalkableFloor& walked, std::span<const InfluenceVolume> volumes,
                    std::span<const Region> bounds, std::span<const std::uint32_t> candidates,
                    const BlendTask& task, double popThreshold, CameraSpaceCache& cameraSpace) {
@@ -258,7 +288,7 @@ CellBlend scanTask(const WalkableFloor& walked, std::span<const InfluenceVolume>
 BlendScan scanBlend(const WalkableFloor& walked, double headRoom,
                     std::span<const InfluenceVolume> volumes, std::span<const double> heights,
                     const Region& region, double popThreshold, CameraSpaceCache& cameraSpace,
-                    CellSpan cells = {}) {
+                    std::optional<CellSpan> cells = std::nullopt) {
   const std::vector<BlendTask> tasks = blendTasks(walked, headRoom, heights, region, cells);
   const std::vector<Region> bounds = boundsOf(volumes);  // once, not for every cell
   const VolumeColumns columns = columnsOf(bounds);
@@ -416,7 +446,7 @@ std::size_t widenFadesWhereWeightsJump(const LevelRayCaster& level, const Walkab
   const double target = kShareOfLimit * limits.maxWeightJumpPerCentimeter;
   CameraSpaceCache cameraSpace(level, walked, headRoom, heights);
   const auto scan = [&](const Region& region, std::span<const double> zs, double threshold,
-                        CellSpan cells = {}) {
+                        std::optional<CellSpan> cells = std::nullopt) {
     return scanBlend(walked, headRoom, volumes, zs, region, threshold, cameraSpace, cells);
   };
   Region everywhere;
@@ -425,7 +455,7 @@ std::size_t widenFadesWhereWeightsJump(const LevelRayCaster& level, const Walkab
   std::vector<Pop> pops;
   for (std::size_t first = 0; first < walked.cells.size(); first += kScanBlockCells)
     for (const CellBlend& c :
-         scan(everywhere, heights, target, {first, first + kScanBlockCells}).cells)
+         scan(everywhere, heights, target, CellSpan{first, first + kScanBlockCells}).cells)
       if (c.pop.perCentimeter > 0.0) pops.push_back(c.pop);
   std::sort(pops.begin(), pops.end(),
             [](const Pop& a, const Pop& b) { return a.order() < b.order(); });

@@ -9,8 +9,8 @@
 // others' weight where it begins (downer's probe_118 entering where probe_125's band is 0.77
 // of the way out: 2.1 per metre).
 //
-// So the layout measures its blend as validate does, over the walked floor at the capture
-// heights, and where it turns faster than 0.9 of the limit it widens a fade: a volume reaching
+// So the layout measures its blend as validate does, over the walked floor at validate's
+// planes (camera_planes.h), and where it turns faster than 0.9 of the limit it widens a fade: a volume reaching
 // the spot shrinks its inner range along one horizontal axis (its band grows inwards, its outer
 // range stays: nothing reaches further), or else grows its outer range (where two bands' far
 // ends alone meet, the share turns across the width both reach, and only reaching further
