@@ -10,11 +10,11 @@
 // of the way out: 2.1 per metre).
 //
 // So the layout measures its blend as validate does, over the walked floor at validate's
-// planes (camera_planes.h), and where it turns faster than 0.9 of the limit it widens a fade: a volume reaching
-// the spot shrinks its inner range along one horizontal axis (its band grows inwards, its outer
-// range stays: nothing reaches further), or else grows its outer range (where two bands' far
-// ends alone meet, the share turns across the width both reach, and only reaching further
-// widens it). The first (volumes in order, the pop's axis first, the least change first) that
+// planes (camera_planes.h), and where it turns faster than 0.9 of the limit it widens a fade: a
+// volume reaching the spot shrinks its inner range along one horizontal axis (its band grows
+// inwards, its outer range stays: nothing reaches further), or else grows its outer range
+// (where two bands' far ends alone meet, the share turns across the width both reach, and only
+// reaching further widens it). The first (volumes in order, the pop's axis first, the least change first) that
 // brings the spot under 0.9 of the limit is kept, if away from the spot no cell over the box
 // turns steeper than that or than it did, no more volumes meet over a camera than the blend
 // takes or than did, and a grown range keeps its influence out of its probe's sight under
@@ -22,7 +22,10 @@
 //
 // A band that pops along its length shows in every cell beside it: once no widening of the
 // volumes reaching one spot helped, the band's other spots are not tried again until one of
-// those volumes changes. Where a camera can be is measured once per cell and height.
+// those volumes changes. Where a camera can be is measured once per cell and height. On an open
+// level the work keeps in proportion to the floor (layout.md, "A level too big for one
+// machine"): a scan finds its cells by row and column and its volumes from columns over the
+// level, and a widening's check stops at the first cell it made worse, nearest the spot first.
 
 #include "core/scene/influence_volume.h"
 #include "geometry/floor/walkable_floor.h"
