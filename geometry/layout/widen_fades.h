@@ -14,11 +14,11 @@
 // volume reaching the spot shrinks its inner range along one horizontal axis (its band grows
 // inwards, its outer range stays: nothing reaches further), or else grows its outer range
 // (where two bands' far ends alone meet, the share turns across the width both reach, and only
-// reaching further widens it). The first (volumes in order, the pop's axis first, the least change first) that
-// brings the spot under 0.9 of the limit is kept, if away from the spot no cell over the box
-// turns steeper than that or than it did, no more volumes meet over a camera than the blend
-// takes or than did, and a grown range keeps its influence out of its probe's sight under
-// bands_in_sight.h's target or where it was.
+// reaching further widens it). The first (volumes in order, the pop's axis first, the least
+// change first) that brings the spot under 0.9 of the limit is kept, if away from the spot no
+// cell over the box turns steeper than that or than it did, no more volumes meet over a camera
+// than the blend takes or than did, and a grown range keeps its influence out of its probe's
+// sight under bands_in_sight.h's target or where it was.
 //
 // A band that pops along its length shows in every cell beside it: once no widening of the
 // volumes reaching one spot helped, the band's other spots are not tried again until one of
