@@ -4,6 +4,9 @@
 
 #include <tbb/parallel_for.h>
 
+#include <map>
+#include <utility>
+
 namespace probeproxy {
 
 namespace {
@@ -18,8 +21,18 @@ FloorInSight::FloorInSight(const LevelRayCaster& level, const WalkableFloor& flo
       cellCount_(floor.cells.size()),
       targets_(floor.cells.size()),
       viewpoints_(captures.size()),
-      blocksPerCapture_((floor.cells.size() + kBlockCells - 1) / kBlockCells),
-      blocks_(new std::atomic<Block*>[captures.size() * blocksPerCapture_]()) {
+      blockOf_(floor.cells.size()),
+      slotOf_(floor.cells.size()) {
+  std::map<std::pair<int, int>, std::uint32_t> blockAt;  // (row, column) of a block: its index
+  for (std::size_t c = 0; c < cellCount_; ++c) {
+    const FloorCell& cell = floor.cells[c];
+    const auto at = std::pair(cell.row / kBlockColumns, cell.column / kBlockColumns);
+    const auto [it, made] = blockAt.emplace(at, static_cast<std::uint32_t>(blockCells_.size()));
+    if (made) blockCells_.push_back(0);
+    blockOf_[c] = it->second;
+    slotOf_[c] = blockCells_[it->second]++;
+  }
+  blocks_.reset(new std::atomic<Block*>[captures.size() * blockCells_.size()]());
   tbb::parallel_for(std::size_t{0}, cellCount_, [&](std::size_t c) {
     targets_[c] = roomTargetsOver(level, floor.cells[c].pointMeters);
   });
@@ -28,21 +41,22 @@ FloorInSight::FloorInSight(const LevelRayCaster& level, const WalkableFloor& flo
 }
 
 FloorInSight::~FloorInSight() {
-  for (std::size_t b = 0; b < viewpoints_.size() * blocksPerCapture_; ++b)
+  for (std::size_t b = 0; b < viewpoints_.size() * blockCells_.size(); ++b)
     delete[] blocks_[b].load();
 }
 
 bool FloorInSight::inSight(std::size_t capture, std::size_t cell) const {
-  std::atomic<Block*>& slot = blocks_[capture * blocksPerCapture_ + cell / kBlockCells];
+  const std::uint32_t b = blockOf_[cell];
+  std::atomic<Block*>& slot = blocks_[capture * blockCells_.size() + b];
   Block* block = slot.load(std::memory_order_acquire);
   if (block == nullptr) {
-    Block* made = new Block[kBlockCells]();
+    Block* made = new Block[blockCells_[b]]();
     if (slot.compare_exchange_strong(block, made, std::memory_order_acq_rel))
       block = made;
     else
       delete[] made;  // another thread made it first: `block` is now that one
   }
-  std::atomic<std::uint8_t>& known = block[cell % kBlockCells];
+  std::atomic<std::uint8_t>& known = block[slotOf_[cell]];
   std::uint8_t answer = known.load(std::memory_order_relaxed);
   if (answer == 0) {
     answer = roomInSight(*level_, viewpoints_[capture], targets_[cell]) ? kInSight : kHidden;

@@ -4,10 +4,13 @@
 // floor, so no volume lights a room its probe has never seen. A candidate serves floor by its
 // reflections (capture_sight.h), and a reflection off floor behind a wall can land on a
 // ceiling both sides see: served, yet the leak rule's. Asked lazily (the selection asks only
-// about the cells its rectangles grow over, a small part of the level for each of a thousand
-// capture points) and cached in blocks of cells made on first use, so the cache grows with the
-// floor each capture point is asked about, not with capture points times the level; the answer
-// does not depend on who asks first, so the selection stays the same whatever the thread count.
+// about the cells a capture point sees and its rectangles grow over, a small part of the level
+// for each of a thousand capture points) and cached in blocks made on first use, a block the
+// cells of a square of the plan: the cache grows with the floor each capture point is asked
+// about, not with capture points times the level (blocks of cells in index order, a row each
+// on an open level, made a capture point that sees down a street hold every row it crosses).
+// The answer does not depend on who asks first, so the selection stays the same whatever the
+// thread count.
 
 #include "geometry/floor/walkable_floor.h"
 #include "geometry/raycast/level_ray_caster.h"
@@ -39,11 +42,12 @@ class FloorInSight {
   std::size_t cellCount_;
   std::vector<RoomTargets> targets_;                 // per cell: roomTargetsOver its point
   std::vector<std::vector<glm::dvec3>> viewpoints_;  // per capture: roomViewpoints
-  // [capture * blocks + cell / kBlockCells][cell % kBlockCells]: 0 not asked yet, else kInSight
-  // or kHidden; a block is made by the first thread that asks about one of its cells.
-  static constexpr std::size_t kBlockCells = 1024;
-  using Block = std::atomic<std::uint8_t>;  // the first of kBlockCells
-  std::size_t blocksPerCapture_;
+  // [capture * blocks + blockOf_[cell]][slotOf_[cell]]: 0 not asked yet, else kInSight or
+  // kHidden; a block is made by the first thread that asks about one of its cells.
+  static constexpr int kBlockColumns = 32;       // a block: the cells of 32 x 32 grid columns
+  using Block = std::atomic<std::uint8_t>;       // the first of the block's cells
+  std::vector<std::uint32_t> blockOf_, slotOf_;  // per cell
+  std::vector<std::uint32_t> blockCells_;        // per block
   std::unique_ptr<std::atomic<Block*>[]> blocks_;
 };
 

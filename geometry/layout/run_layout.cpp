@@ -211,25 +211,62 @@ void dropProbes(const std::set<std::size_t>& gone, std::vector<LayoutProbe>& pro
   optional = std::move(optionalLeft);
 }
 
-// What the candidate stage takes at its worst, every capture point seeing and serving every
-// floor sample: the floor and its samples; per capture point its sight and the served samples
-// of up to three fit regions (bitmaps: a bit a sample when dense), the selection's window of
-// cells for each (a byte a cell) and its in-sight cache (a byte a cell). Checked before any is
-// made: a 200 m open floor once asked for 17 GiB and died of std::bad_alloc after a minute.
-void requireCandidateMemory(const WalkableFloor& floor, std::size_t captures, int samplesPerCell,
-                            std::uint64_t budget) {
-  const std::uint64_t cells = floor.cells.size();
-  const std::size_t samples = floor.cells.size() * std::size_t(samplesPerCell);
-  const std::uint64_t perCapture = 4 * (samples / 8 + 1) + 4 * cells;
-  const std::uint64_t floorBytes = surveyMemoryBytes(floor.cells.size(), samplesPerCell);
-  const std::uint64_t needed = floorBytes + captures * perCapture;
+// What judging one capture point holds until the layout is made: its sight and the served
+// samples of up to three fit regions (each a subset of its sight, a bitmap no larger), three
+// candidates' windows a row over the cells it sees (select_probes.cpp, a byte a cell), its
+// in-sight blocks over them (floor_in_sight.h), and its candidates' proxies.
+std::uint64_t captureBytes(const CaptureSight& sight, std::span<const FloorSample> samples,
+                           const WalkableFloor& floor) {
+  constexpr std::uint64_t kProxiesBytes = 16 << 10;
+  constexpr int kBlockColumns = 32;
+  constexpr std::uint64_t kBlockBytes = kBlockColumns * kBlockColumns;
+  std::map<int, std::pair<std::size_t, std::size_t>> rows;  // row: its first and last cell seen
+  std::set<std::pair<int, int>> blocks;
+  forEachIndex(sight.seen, [&](std::uint32_t i) {
+    const std::size_t c = samples[i].cell;
+    const FloorCell& cell = floor.cells[c];
+    const auto [it, first] = rows.emplace(cell.row, std::pair(c, c));
+    if (!first) it->second.second = std::max(it->second.second, c);
+    blocks.emplace(cell.row / kBlockColumns, cell.column / kBlockColumns);
+  });
+  std::uint64_t windowCells = 0;
+  for (const auto& [row, span] : rows) windowCells += span.second - span.first + 1;
+  return 4 * std::uint64_t(sight.seen.getSizeInBytes()) + 3 * windowCells +
+         blocks.size() * kBlockBytes + kProxiesBytes;
+}
+
+// The floor and its samples, checked before the samples are made: a 200 m open floor once
+// asked for 17 GiB and died of std::bad_alloc after a minute.
+std::string floorNeeds(const WalkableFloor& floor, std::size_t captures, int samplesPerCell) {
   char needs[200];
   std::snprintf(needs, sizeof needs,
                 "judging %zu capture points on the walkable floor (%.0f m^2, %zu samples)",
-                captures, floor.areaSquareMeters(), samples);
-  const std::uint64_t limit = budget > 0 ? budget : usableMemoryBytes();
-  const std::uint64_t fit = limit > floorBytes ? (limit - floorBytes) / perCapture : 0;
-  requireMemory("layout", needed, budget, needs,
+                captures, floor.areaSquareMeters(), floor.cells.size() * samplesPerCell);
+  return needs;
+}
+
+// Then the candidate stage, from the sight of capture points spread over the level (every
+// n-th): the largest stands for every capture point. What one sees is what its candidates
+// hold, so an open floor seen whole asks for what the floor's every sample costs each capture
+// point, and a town, where streets and walls cut each sight short, a small part of it.
+void requireCandidateMemory(const LevelRayCaster& level, const WalkableFloor& floor,
+                            std::span<const LayoutCandidate> captures,
+                            std::span<const FloorSample> samples, const LayoutOptions& o) {
+  constexpr std::size_t kSpread = 16;
+  const std::size_t spread = std::min(captures.size(), kSpread);
+  std::vector<std::uint64_t> bytes(spread, 0);
+  tbb::parallel_for(std::size_t{0}, spread, [&](std::size_t k) {
+    const glm::dvec3 at = captures[k * captures.size() / spread].captureMeters;
+    bytes[k] = captureBytes(captureSight(level, at, samples, o.reachMeters), samples, floor);
+  });
+  const std::uint64_t perCapture =
+      bytes.empty() ? 0 : *std::max_element(bytes.begin(), bytes.end());
+  const std::uint64_t floorBytes = surveyMemoryBytes(floor.cells.size(), o.samplesPerCell);
+  const std::uint64_t limit = o.maxMemoryBytes > 0 ? o.maxMemoryBytes : usableMemoryBytes();
+  const std::uint64_t fit =
+      limit > floorBytes && perCapture > 0 ? (limit - floorBytes) / perCapture : 0;
+  requireMemory("layout", floorBytes + captures.size() * perCapture, o.maxMemoryBytes,
+                floorNeeds(floor, captures.size(), o.samplesPerCell),
                 fit >= 1 ? "lower --max-candidates (" + std::to_string(fit) +
                                " fit), lay the level out in parts (--seed)"
                          : "lay the level out in parts (--seed)");
@@ -242,13 +279,16 @@ CandidateGround candidateGround(const LevelRayCaster& level, const WalkableFloor
   CandidateGround g;
   g.captures =
       layoutCandidates(level, floor, o.spacingMeters, o.captureHeightMeters, o.maxCandidates);
-  requireCandidateMemory(floor, g.captures.points.size(), o.samplesPerCell, o.maxMemoryBytes);
+  requireMemory("layout", surveyMemoryBytes(floor.cells.size(), o.samplesPerCell), o.maxMemoryBytes,
+                floorNeeds(floor, g.captures.points.size(), o.samplesPerCell),
+                "lay the level out in parts (--seed)");
   FloorSampleOptions so;
   so.samplesPerCell = o.samplesPerCell;
   so.upwardCosine = o.floor.upwardCosine;
   so.stepHeightMeters = o.floor.stepHeightMeters;
   so.seed = o.seed;
   g.samples = buildFloorSamples(level, floor, so);
+  requireCandidateMemory(level, floor, g.captures.points, g.samples, o);
   // Thousands of candidates ask for the floor they serve: one floor graph answers them all.
   g.options = o;
   g.options.candidateProxy.samples.floorGraph =

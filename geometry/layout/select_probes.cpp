@@ -12,16 +12,60 @@ namespace probeproxy {
 
 namespace {
 
-// What one candidate holds of the floor, over the window of cells from the first it holds in
-// sight and sees a sample of to the last (cells are numbered row by row: a candidate in a room
-// has a window of a few rows): per cell 0 where it does not, else 1 + the samples of the cell
-// it serves within the tolerance. One byte a cell of its window, however large the level.
-struct CandidateCells {
-  std::size_t first = 0;
-  std::vector<std::uint8_t> code;
-  std::uint8_t at(std::size_t cell) const {
-    return cell >= first && cell - first < code.size() ? code[cell - first] : 0;
+// What one candidate holds of the floor, over a window of cells a row: in each row from the
+// first it holds in sight and sees a sample of to the last (cells are numbered row by row and a
+// row's are contiguous): per cell 0 where it does not, else 1 + the samples of the cell it
+// serves within the tolerance. One byte a cell of its windows: a candidate at an open level's
+// crossroads sees down two streets, a few rows whole and a few cells of every other row, where
+// one window from its first cell to its last held every row between them (a byte a cell of the
+// level, for each of thousands of candidates).
+class CandidateCells {
+ public:
+  // `held`: ascending; `rowOf`: every floor cell's row.
+  void hold(std::span<const std::size_t> held, std::span<const int> rowOf) {
+    if (held.empty()) return;
+    firstRow_ = rowOf[held.front()];
+    rows_.assign(static_cast<std::size_t>(rowOf[held.back()] - firstRow_ + 1), RowWindow{});
+    for (std::size_t k = 0; k < held.size();) {
+      std::size_t last = k;
+      while (last + 1 < held.size() && rowOf[held[last + 1]] == rowOf[held[k]]) ++last;
+      RowWindow& w = rows_[static_cast<std::size_t>(rowOf[held[k]] - firstRow_)];
+      w.firstCell = held[k];
+      w.cells = static_cast<std::uint32_t>(held[last] - held[k] + 1);
+      w.offset = code_.size();
+      code_.resize(code_.size() + w.cells, 0);
+      for (std::size_t j = k; j <= last; ++j) code_[w.offset + (held[j] - held[k])] = 1;
+      k = last + 1;
+    }
   }
+  std::uint8_t at(std::size_t cell, int row) const {
+    if (row < firstRow_ || static_cast<std::size_t>(row - firstRow_) >= rows_.size()) return 0;
+    const RowWindow& w = rows_[static_cast<std::size_t>(row - firstRow_)];
+    return cell >= w.firstCell && cell - w.firstCell < w.cells
+               ? code_[w.offset + cell - w.firstCell]
+               : 0;
+  }
+  // Counts one more served sample of a held cell.
+  void serve(std::size_t cell, int row) {
+    if (at(cell, row) == 0) return;
+    const RowWindow& w = rows_[static_cast<std::size_t>(row - firstRow_)];
+    ++code_[w.offset + cell - w.firstCell];
+  }
+  // Calls f(cell, code) for every cell of the windows.
+  template <class F>
+  void forEachCell(F&& f) const {
+    for (const RowWindow& w : rows_)
+      for (std::uint32_t k = 0; k < w.cells; ++k) f(w.firstCell + k, code_[w.offset + k]);
+  }
+
+ private:
+  struct RowWindow {
+    std::size_t firstCell = 0, offset = 0;
+    std::uint32_t cells = 0;  // 0: none of the row held
+  };
+  int firstRow_ = 0;
+  std::vector<RowWindow> rows_;
+  std::vector<std::uint8_t> code_;
 };
 
 // Per candidate, the share of each floor cell's samples it serves within the tolerance (0 out of
@@ -31,10 +75,14 @@ struct CellSets {
   std::vector<CandidateCells> candidates;
   std::vector<int> samplesPerCell;
   std::vector<float> best;
+  std::vector<int> rowOf;  // per floor cell
 
-  bool sees(std::size_t c, std::size_t cell) const { return candidates[c].at(cell) != 0; }
-  float share(std::size_t c, std::size_t cell) const {
-    const std::uint8_t code = candidates[c].at(cell);
+  bool sees(std::size_t c, std::size_t cell) const { return code(c, cell) != 0; }
+  float share(std::size_t c, std::size_t cell) const { return shareOf(code(c, cell), cell); }
+  std::uint8_t code(std::size_t c, std::size_t cell) const {
+    return candidates[c].at(cell, rowOf[cell]);
+  }
+  float shareOf(std::uint8_t code, std::size_t cell) const {
     return code == 0 ? 0.0f
                      : static_cast<float>(code - 1) / static_cast<float>(samplesPerCell[cell]);
   }
@@ -49,10 +97,11 @@ struct CellSets {
 
 CellSets cellSets(std::span<const CandidateService> services, std::span<const CaptureSight> sights,
                   const FloorInSight& inSight, std::span<const FloorSample> samples,
-                  std::size_t cellCount) {
+                  std::span<const FloorCell> cells) {
   CellSets sets;
-  sets.samplesPerCell.assign(cellCount, 0);
+  sets.samplesPerCell.assign(cells.size(), 0);
   for (const FloorSample& s : samples) ++sets.samplesPerCell[s.cell];
+  for (const FloorCell& cell : cells) sets.rowOf.push_back(cell.row);
   sets.candidates.resize(services.size());
   tbb::parallel_for(std::size_t{0}, services.size(), [&](std::size_t c) {
     const std::size_t capture = services[c].capture;
@@ -62,23 +111,18 @@ CellSets cellSets(std::span<const CandidateService> services, std::span<const Ca
       if ((held.empty() || held.back() != cell) && inSight.inSight(capture, cell))
         held.push_back(cell);
     });
-    if (held.empty()) return;
-    CandidateCells& window = sets.candidates[c];
-    window.first = held.front();
-    window.code.assign(held.back() - held.front() + 1, 0);
-    for (std::size_t cell : held) window.code[cell - window.first] = 1;
+    CandidateCells& windows = sets.candidates[c];
+    windows.hold(held, sets.rowOf);
     forEachIndex(services[c].served, [&](std::uint32_t i) {
       const std::size_t cell = samples[i].cell;
-      if (window.at(cell) != 0) ++window.code[cell - window.first];
+      windows.serve(cell, sets.rowOf[cell]);
     });
   });
-  sets.best.assign(cellCount, 0.0f);
-  for (std::size_t c = 0; c < services.size(); ++c) {
-    const CandidateCells& window = sets.candidates[c];
-    for (std::size_t k = 0; k < window.code.size(); ++k)
-      sets.best[window.first + k] =
-          std::max(sets.best[window.first + k], sets.share(c, window.first + k));
-  }
+  sets.best.assign(cells.size(), 0.0f);
+  for (const CandidateCells& windows : sets.candidates)
+    windows.forEachCell([&](std::size_t cell, std::uint8_t code) {
+      sets.best[cell] = std::max(sets.best[cell], sets.shareOf(code, cell));
+    });
   return sets;
 }
 
@@ -388,7 +432,7 @@ ProbeSelection selectProbes(std::span<const CandidateService> services,
                             std::span<const FloorSample> samples, const WalkableFloor& floor,
                             const SelectionOptions& o, const KeptFloor& kept) {
   const FloorColumns columns(floor);
-  const CellSets sets = cellSets(services, sights, inSight, samples, floor.cells.size());
+  const CellSets sets = cellSets(services, sights, inSight, samples, floor.cells);
   Cover cover{columns, services, captureCells, o, std::vector<char>(floor.cells.size(), 0), {}};
   // Floor the kept probes already serve is worth nothing to a new probe, but a new range may
   // take it in on its way to the floor they fail (where it serves it too, as ranges grow only

@@ -305,6 +305,32 @@ BlendScan scanBlend(const WalkableFloor& walked, double headRoom,
   return scan;
 }
 
+// Whether the blend over a task's square stays as it was when `box` becomes `wider`:
+// - the square lies inside both inner ranges: the volume takes the whole weight there either
+//   way, and the scan passes it by (insideOneInnerRange); most of a box is its inner range;
+// - or an inner range shrank (the outer range and so the size, the blend's tie-break, the
+//   same), and along every axis it shrank the square lies inside both inner ranges: Lagarde's
+//   factor is a product over the box's axes, that axis's factor 1 either way.
+bool blendStaysOver(const BoxInfluence& box, const BoxInfluence& wider, const WeightGrid& grid) {
+  const std::array<InfluenceVolume, 2> both{box, wider};
+  const auto insideInner = [&](const InfluenceVolume& v) {
+    return insideOneInnerRange(std::span(&v, 1), grid.minMeters, grid.maxMeters, grid.zMeters);
+  };
+  if (insideInner(both[0]) && insideInner(both[1])) return true;
+  if (wider.halfExtentsMeters != box.halfExtentsMeters || wider.worldFromBox != box.worldFromBox ||
+      box.worldFromBox != glm::dquat(1.0, 0.0, 0.0, 0.0))
+    return false;
+  const glm::dvec3 lo(grid.minMeters, grid.zMeters), hi(grid.maxMeters, grid.zMeters);
+  for (int axis = 0; axis < 3; ++axis) {
+    if (wider.innerHalfExtentsMeters[axis] == box.innerHalfExtentsMeters[axis]) continue;
+    const double inside =
+        std::min(wider.innerHalfExtentsMeters[axis], box.innerHalfExtentsMeters[axis]);
+    const double c = box.centerMeters[axis];
+    if (!(c - inside < lo[axis] && hi[axis] < c + inside)) return false;
+  }
+  return true;
+}
+
 Region boundsOf(const InfluenceVolume& v) {
   Region r;
   influenceBounds(v, r.lo, r.hi);
@@ -351,10 +377,15 @@ class AwayFromSpot {
     after[v] = wider;
     std::vector<Region> afterBounds = bounds_;
     influenceBounds(after[v], afterBounds[v].lo, afterBounds[v].hi);
-    // A cell the wider volume does not reach blends as before (it holds the volume as it is).
+    // A cell the wider volume does not reach blends as before (it holds the volume as it is),
+    // and so does one where the widening leaves every weight as it was.
+    const BoxInfluence& box = std::get<BoxInfluence>(volumes_[v]);
     std::vector<std::size_t> changed;
-    for (std::size_t t = 0; t < tasks_.size(); ++t)
-      if (reachesGrid(afterBounds[v], taskGrid(walked_, tasks_[t]))) changed.push_back(t);
+    for (std::size_t t = 0; t < tasks_.size(); ++t) {
+      const WeightGrid grid = taskGrid(walked_, tasks_[t]);
+      if (reachesGrid(afterBounds[v], grid) && !blendStaysOver(box, wider, grid))
+        changed.push_back(t);
+    }
     const double halfCell = 0.5 * walked_.spacingMeters;
     for (std::size_t first = 0; first < changed.size(); first += kCellsAtATime) {
       const std::size_t end = std::min(changed.size(), first + kCellsAtATime);
@@ -500,10 +531,8 @@ std::size_t widenFadesWhereWeightsJump(const LevelRayCaster& level, const Walkab
             const double spotAfter = scan(spot, spotHeight, target).steepestPerCentimeter();
             volumes[v] = box;
             if (!(spotAfter < now)) continue;
-            if (!away)
-              away.emplace(walked, headRoom, heights, boundsOf(widest), spot,
-                           AwayFromSpot::Limits{target, limits.maxOverlap}, volumes, cameraSpace);
-            if (!away->noWorse(v, wider)) continue;
+            // A grown range is checked for its sight first: most fail there, and the check
+            // away from the spot takes every cell of the box when it passes.
             if (wider.halfExtentsMeters != box.halfExtentsMeters) {  // reaches further
               const glm::dvec3 capture = probes[v - kept.size()].captureMeters;
               if (!leakBefore)
@@ -512,6 +541,10 @@ std::size_t widenFadesWhereWeightsJump(const LevelRayCaster& level, const Walkab
                   std::max(*leakBefore, kLeakShareTarget))
                 continue;
             }
+            if (!away)
+              away.emplace(walked, headRoom, heights, boundsOf(widest), spot,
+                           AwayFromSpot::Limits{target, limits.maxOverlap}, volumes, cameraSpace);
+            if (!away->noWorse(v, wider)) continue;
             if (spotAfter <= target) {
               chosen = {v, wider};
               break;
