@@ -45,24 +45,37 @@ FloorInSight::~FloorInSight() {
     delete[] blocks_[b].load();
 }
 
-bool FloorInSight::inSight(std::size_t capture, std::size_t cell) const {
+std::atomic<std::uint8_t>* FloorInSight::known(std::size_t capture, std::size_t cell,
+                                               bool make) const {
   const std::uint32_t b = blockOf_[cell];
   std::atomic<Block*>& slot = blocks_[capture * blockCells_.size() + b];
   Block* block = slot.load(std::memory_order_acquire);
   if (block == nullptr) {
+    if (!make) return nullptr;
     Block* made = new Block[blockCells_[b]]();
     if (slot.compare_exchange_strong(block, made, std::memory_order_acq_rel))
       block = made;
     else
       delete[] made;  // another thread made it first: `block` is now that one
   }
-  std::atomic<std::uint8_t>& known = block[slotOf_[cell]];
+  return &block[slotOf_[cell]];
+}
+
+bool FloorInSight::inSight(std::size_t capture, std::size_t cell) const {
+  std::atomic<std::uint8_t>& known = *this->known(capture, cell, true);
   std::uint8_t answer = known.load(std::memory_order_relaxed);
   if (answer == 0) {
     answer = roomInSight(*level_, viewpoints_[capture], targets_[cell]) ? kInSight : kHidden;
     known.store(answer, std::memory_order_relaxed);
   }
   return answer == kInSight;
+}
+
+bool FloorInSight::inSightOnce(std::size_t capture, std::size_t cell) const {
+  const std::atomic<std::uint8_t>* known = this->known(capture, cell, false);
+  const std::uint8_t answer = known ? known->load(std::memory_order_relaxed) : 0;
+  if (answer != 0) return answer == kInSight;
+  return roomInSight(*level_, viewpoints_[capture], targets_[cell]);
 }
 
 }  // namespace probeproxy

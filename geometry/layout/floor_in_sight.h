@@ -36,6 +36,9 @@ class FloorInSight {
   FloorInSight& operator=(const FloorInSight&) = delete;
 
   bool inSight(std::size_t capture, std::size_t cell) const;
+  // The same answer, from the cache when it holds it, else asked of the level and not kept:
+  // for a pass over everything a capture point sees, once.
+  bool inSightOnce(std::size_t capture, std::size_t cell) const;
 
  private:
   const LevelRayCaster* level_;
@@ -44,8 +47,10 @@ class FloorInSight {
   std::vector<std::vector<glm::dvec3>> viewpoints_;  // per capture: roomViewpoints
   // [capture * blocks + blockOf_[cell]][slotOf_[cell]]: 0 not asked yet, else kInSight or
   // kHidden; a block is made by the first thread that asks about one of its cells.
-  static constexpr int kBlockColumns = 32;       // a block: the cells of 32 x 32 grid columns
-  using Block = std::atomic<std::uint8_t>;       // the first of the block's cells
+  static constexpr int kBlockColumns = 32;  // a block: the cells of 32 x 32 grid columns
+  using Block = std::atomic<std::uint8_t>;  // the first of the block's cells
+  // A cell's answer in the cache; its block made when `make`, else nullptr without it.
+  std::atomic<std::uint8_t>* known(std::size_t capture, std::size_t cell, bool make) const;
   std::vector<std::uint32_t> blockOf_, slotOf_;  // per cell
   std::vector<std::uint32_t> blockCells_;        // per block
   std::unique_ptr<std::atomic<Block*>[]> blocks_;

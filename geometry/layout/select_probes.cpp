@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <queue>
 
@@ -103,20 +104,30 @@ CellSets cellSets(std::span<const CandidateService> services, std::span<const Ca
   for (const FloorSample& s : samples) ++sets.samplesPerCell[s.cell];
   for (const FloorCell& cell : cells) sets.rowOf.push_back(cell.row);
   sets.candidates.resize(services.size());
-  tbb::parallel_for(std::size_t{0}, services.size(), [&](std::size_t c) {
-    const std::size_t capture = services[c].capture;
+  // A capture point's fit regions share its sight: the cells it holds are found once for
+  // them all, each asked of the level without keeping the answer (a capture point sees the sky
+  // over most of an open level, and kept, the answers took a byte a cell of the level for each
+  // capture point; the selection's own questions, about the cells near each, are kept).
+  std::map<std::size_t, std::vector<std::size_t>> byCapture;
+  for (std::size_t c = 0; c < services.size(); ++c) byCapture[services[c].capture].push_back(c);
+  const std::vector<std::pair<std::size_t, std::vector<std::size_t>>> groups(byCapture.begin(),
+                                                                             byCapture.end());
+  tbb::parallel_for(std::size_t{0}, groups.size(), [&](std::size_t g) {
+    const std::size_t capture = groups[g].first;
     std::vector<std::size_t> held;  // cells it sees a sample of and holds in sight, ascending
     forEachIndex(sights[capture].seen, [&](std::uint32_t i) {
       const std::size_t cell = samples[i].cell;
-      if ((held.empty() || held.back() != cell) && inSight.inSight(capture, cell))
+      if ((held.empty() || held.back() != cell) && inSight.inSightOnce(capture, cell))
         held.push_back(cell);
     });
-    CandidateCells& windows = sets.candidates[c];
-    windows.hold(held, sets.rowOf);
-    forEachIndex(services[c].served, [&](std::uint32_t i) {
-      const std::size_t cell = samples[i].cell;
-      windows.serve(cell, sets.rowOf[cell]);
-    });
+    for (std::size_t c : groups[g].second) {
+      CandidateCells& windows = sets.candidates[c];
+      windows.hold(held, sets.rowOf);
+      forEachIndex(services[c].served, [&](std::uint32_t i) {
+        const std::size_t cell = samples[i].cell;
+        windows.serve(cell, sets.rowOf[cell]);
+      });
+    }
   });
   sets.best.assign(cells.size(), 0.0f);
   for (const CandidateCells& windows : sets.candidates)
