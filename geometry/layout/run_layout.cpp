@@ -213,17 +213,22 @@ void dropProbes(const std::set<std::size_t>& gone, std::vector<LayoutProbe>& pro
 
 // What judging one capture point holds until the layout is made: its sight and the served
 // samples of up to three fit regions (each a subset of its sight, a bitmap no larger), three
-// candidates' windows a row over the cells it sees (select_probes.cpp, a byte a cell), its
-// in-sight blocks over them (floor_in_sight.h), and its candidates' proxies.
-std::uint64_t captureBytes(const CaptureSight& sight, std::span<const FloorSample> samples,
-                           const WalkableFloor& floor) {
+// candidates' windows a row over the cells it sees and holds in sight (select_probes.cpp, a byte
+// a cell), the in-sight cache's blocks over them (floor_in_sight.h), and its candidates'
+// proxies.
+std::uint64_t captureBytes(const CaptureSight& sight, std::size_t capture,
+                           std::span<const FloorSample> samples, const WalkableFloor& floor,
+                           const FloorInSight& inSight) {
   constexpr std::uint64_t kProxiesBytes = 16 << 10;
   constexpr int kBlockColumns = 32;
   constexpr std::uint64_t kBlockBytes = kBlockColumns * kBlockColumns;
-  std::map<int, std::pair<std::size_t, std::size_t>> rows;  // row: its first and last cell seen
+  std::map<int, std::pair<std::size_t, std::size_t>> rows;  // row: its first and last cell held
   std::set<std::pair<int, int>> blocks;
+  std::size_t last = floor.cells.size();
   forEachIndex(sight.seen, [&](std::uint32_t i) {
     const std::size_t c = samples[i].cell;
+    if (c == last || !inSight.inSightOnce(capture, c)) return;
+    last = c;
     const FloorCell& cell = floor.cells[c];
     const auto [it, first] = rows.emplace(cell.row, std::pair(c, c));
     if (!first) it->second.second = std::max(it->second.second, c);
@@ -251,13 +256,16 @@ std::string floorNeeds(const WalkableFloor& floor, std::size_t captures, int sam
 // point, and a town, where streets and walls cut each sight short, a small part of it.
 void requireCandidateMemory(const LevelRayCaster& level, const WalkableFloor& floor,
                             std::span<const LayoutCandidate> captures,
-                            std::span<const FloorSample> samples, const LayoutOptions& o) {
+                            std::span<const FloorSample> samples, const FloorInSight& inSight,
+                            const LayoutOptions& o) {
   constexpr std::size_t kSpread = 16;
   const std::size_t spread = std::min(captures.size(), kSpread);
   std::vector<std::uint64_t> bytes(spread, 0);
   tbb::parallel_for(std::size_t{0}, spread, [&](std::size_t k) {
-    const glm::dvec3 at = captures[k * captures.size() / spread].captureMeters;
-    bytes[k] = captureBytes(captureSight(level, at, samples, o.reachMeters), samples, floor);
+    const std::size_t capture = k * captures.size() / spread;
+    const CaptureSight sight =
+        captureSight(level, captures[capture].captureMeters, samples, o.reachMeters);
+    bytes[k] = captureBytes(sight, capture, samples, floor, inSight);
   });
   const std::uint64_t perCapture =
       bytes.empty() ? 0 : *std::max_element(bytes.begin(), bytes.end());
@@ -288,7 +296,6 @@ CandidateGround candidateGround(const LevelRayCaster& level, const WalkableFloor
   so.stepHeightMeters = o.floor.stepHeightMeters;
   so.seed = o.seed;
   g.samples = buildFloorSamples(level, floor, so);
-  requireCandidateMemory(level, floor, g.captures.points, g.samples, o);
   // Thousands of candidates ask for the floor they serve: one floor graph answers them all.
   g.options = o;
   g.options.candidateProxy.samples.floorGraph =
@@ -323,6 +330,10 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
   const CandidateGround ground = candidateGround(level, floor, o);
   const std::vector<FloorSample>& samples = ground.samples;
   const std::vector<LayoutCandidate>& candidates = ground.captures.points;
+  std::vector<glm::dvec3> capturePoints;
+  for (const LayoutCandidate& c : candidates) capturePoints.push_back(c.captureMeters);
+  const FloorInSight inSight(level, floor, capturePoints);
+  requireCandidateMemory(level, floor, candidates, samples, inSight, o);
   r.floorSamples = samples.size();
   r.spacingMeters = ground.captures.spacingMeters;
   const LayoutOptions& withGraph = ground.options;
@@ -345,9 +356,6 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
   const KeptFloor keptCells =
       kept.empty() ? KeptFloor{}
                    : keptFloor(level, floor, samples, kept, o.toleranceDeg, r.keptServedShare);
-  std::vector<glm::dvec3> capturePoints;
-  for (const LayoutCandidate& c : candidates) capturePoints.push_back(c.captureMeters);
-  const FloorInSight inSight(level, floor, capturePoints);
   const ProbeSelection selection = selectProbes(services, built.sights, inSight, captureCells,
                                                 samples, floor, select, keptCells);
   std::vector<std::size_t> all(services.size());
