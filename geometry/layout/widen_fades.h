@@ -25,7 +25,8 @@
 // those volumes changes. Where a camera can be is measured once per cell and height. On an open
 // level the work keeps in proportion to the floor (layout.md, "A level too big for one
 // machine"): a scan finds its cells by row and column and its volumes from columns over the
-// level, and a widening's check stops at the first cell it made worse, nearest the spot first.
+// level, and a widening's check stops at the first cell it made worse, nearest the spot first,
+// and passes by the cells whose blend the widening leaves as it was.
 
 #include "core/scene/influence_volume.h"
 #include "geometry/floor/walkable_floor.h"

@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace probeproxy {
@@ -62,6 +63,33 @@ TEST(FloorInSight, TheNextRoomIsHiddenAndFloorBehindAPillarIsNot) {
   EXPECT_GT(static_cast<double>(inSightA), 0.95 * static_cast<double>(inA));
   EXPECT_LT(inSightA, inA);
   EXPECT_GE(behindPillar, 2u);
+}
+
+// The cache's blocks are squares of 32 x 32 grid columns; the answer is the same asked once
+// (not kept), asked and kept, or read back, over a floor of several blocks and two captures.
+TEST(FloorInSight, AskedOnceOrKeptTheAnswerIsTheSameInEveryBlock) {
+  const LevelMesh mesh = twoRoomsAndAPillar();
+  const LevelRayCaster level(mesh);
+  const std::vector<glm::dvec3> seeds{{2, 3, 0.5}, {12, 3, 0.5}};
+  const WalkableFloor floor = walkableFloor(level, seeds);  // 0.25 m: 65 x 24 columns
+  int lastColumn = 0;
+  for (const FloorCell& cell : floor.cells) lastColumn = std::max(lastColumn, cell.column);
+  ASSERT_GE(lastColumn, 64);  // three blocks along x
+  const std::vector<glm::dvec3> captures{{2, 3, 1.6}, {12, 3, 1.6}};
+  const FloorInSight once(level, floor, captures), kept(level, floor, captures);
+  std::size_t seen = 0;
+  for (std::size_t capture = 0; capture < captures.size(); ++capture)
+    for (std::size_t c = 0; c < floor.cells.size(); ++c) {
+      const bool answer = once.inSightOnce(capture, c);
+      EXPECT_EQ(kept.inSight(capture, c), answer) << "cell " << c << ", capture " << capture;
+      EXPECT_EQ(kept.inSightOnce(capture, c), answer);  // read back from the cache
+      EXPECT_EQ(once.inSightOnce(capture, c), answer);
+      seen += answer;
+    }
+  // Each capture point holds its own room in sight and not the other; the pillar's lee is
+  // out of the first's.
+  EXPECT_GT(static_cast<double>(seen), 0.95 * static_cast<double>(floor.cells.size()));
+  EXPECT_LT(seen, floor.cells.size());
 }
 
 // The leak rule's findings for a probe at `capture` with the box of inner range (lo, hi).
