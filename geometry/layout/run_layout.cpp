@@ -317,16 +317,22 @@ std::string judgeCandidates(const LevelRayCaster& level, const CandidateGround& 
 
 namespace {
 
-void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3> seedsMeters,
-                        const WalkableFloor& floor, const LayoutOptions& o,
-                        const std::function<void(std::size_t, std::size_t)>& onDone,
-                        std::span<const SurveyProbe> kept, LayoutResult& r) {
-  auto lapStart = std::chrono::steady_clock::now();
-  const auto lap = [&](const char* stage) {
-    const auto now = std::chrono::steady_clock::now();
-    r.stageSeconds.emplace_back(stage, std::chrono::duration<double>(now - lapStart).count());
-    lapStart = now;
-  };
+// What the candidates and the selection leave for the volumes: the chosen ranges, each with
+// its candidate's capture point and fit region, and the fills. Everything else they made (the
+// floor's samples, every capture point's sight and served samples, the in-sight table) is gone
+// when this returns: on an open level it is most of the layout's memory, and the later stages
+// need their own.
+struct ChosenRanges {
+  ProbeSelection selection;
+  std::vector<glm::dvec3> captureMeters;  // per chosen range
+  std::vector<double> fitMeters;          // per chosen range
+};
+
+ChosenRanges chooseRanges(const LevelRayCaster& level, const WalkableFloor& floor,
+                          const LayoutOptions& o,
+                          const std::function<void(std::size_t, std::size_t)>& onDone,
+                          std::span<const SurveyProbe> kept, LayoutResult& r,
+                          const std::function<void(const char*)>& lap) {
   const CandidateGround ground = candidateGround(level, floor, o);
   const std::vector<FloorSample>& samples = ground.samples;
   const std::vector<LayoutCandidate>& candidates = ground.captures.points;
@@ -356,13 +362,33 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
   const KeptFloor keptCells =
       kept.empty() ? KeptFloor{}
                    : keptFloor(level, floor, samples, kept, o.toleranceDeg, r.keptServedShare);
-  const ProbeSelection selection = selectProbes(services, built.sights, inSight, captureCells,
-                                                samples, floor, select, keptCells);
+  ChosenRanges chosen;
+  chosen.selection = selectProbes(services, built.sights, inSight, captureCells, samples, floor,
+                                  select, keptCells);
   std::vector<std::size_t> all(services.size());
   for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
   r.servableShare = servedShare(services, all, samples, keptCells.served);
-  r.servedShare = servedShare(services, selection.chosen, samples, keptCells.served);
+  r.servedShare = servedShare(services, chosen.selection.chosen, samples, keptCells.served);
+  for (std::size_t c : chosen.selection.chosen) {
+    chosen.captureMeters.push_back(services[c].captureMeters);
+    chosen.fitMeters.push_back(services[c].fitMeters);
+  }
   lap("selection");
+  return chosen;
+}
+
+void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3> seedsMeters,
+                        const WalkableFloor& floor, const LayoutOptions& o,
+                        const std::function<void(std::size_t, std::size_t)>& onDone,
+                        std::span<const SurveyProbe> kept, LayoutResult& r) {
+  auto lapStart = std::chrono::steady_clock::now();
+  const auto lap = [&](const char* stage) {
+    const auto now = std::chrono::steady_clock::now();
+    r.stageSeconds.emplace_back(stage, std::chrono::duration<double>(now - lapStart).count());
+    lapStart = now;
+  };
+  const ChosenRanges ranges = chooseRanges(level, floor, o, onDone, kept, r, lap);
+  const ProbeSelection& selection = ranges.selection;
   // Each probe's box, ranges in the order the cover took them, then the fills, each kept clear
   // of the inner ranges before it (keepClearOfInnerRanges): windows of neighbouring heights
   // (a ledge over a lower floor) put one range's box in the air over the other's floor.
@@ -384,10 +410,8 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
     r.probes.push_back({capture, influenceOfBounds(lo, hi, o.blendBandMeters), fitMeters});
     volumes.push_back(r.probes.back().influence);
   };
-  for (std::size_t p = 0; p < selection.chosen.size(); ++p) {
-    const CandidateService& chosen = services[selection.chosen[p]];
-    add(selection.ranges[p], chosen.captureMeters, chosen.fitMeters);
-  }
+  for (std::size_t p = 0; p < selection.chosen.size(); ++p)
+    add(selection.ranges[p], ranges.captureMeters[p], ranges.fitMeters[p]);
   // --max-probes is a cap on every probe the layout makes, fills too: floor the cover's probes
   // leave is then left uncovered, and the survey says how much.
   const auto full = [&] { return o.maxProbes > 0 && r.probes.size() >= o.maxProbes; };
