@@ -35,6 +35,9 @@ class FloorInSight {
   FloorInSight(const FloorInSight&) = delete;
   FloorInSight& operator=(const FloorInSight&) = delete;
 
+  // The cache's blocks: the cells of kBlockColumns x kBlockColumns grid columns, a byte each.
+  static constexpr int kBlockColumns = 32;
+
   bool inSight(std::size_t capture, std::size_t cell) const;
   // The same answer, from the cache when it holds it, else asked of the level and not kept:
   // for a pass over everything a capture point sees, once.
@@ -47,7 +50,6 @@ class FloorInSight {
   std::vector<std::vector<glm::dvec3>> viewpoints_;  // per capture: roomViewpoints
   // [capture * blocks + blockOf_[cell]][slotOf_[cell]]: 0 not asked yet, else kInSight or
   // kHidden; a block is made by the first thread that asks about one of its cells.
-  static constexpr int kBlockColumns = 32;  // a block: the cells of 32 x 32 grid columns
   using Block = std::atomic<std::uint8_t>;  // the first of the block's cells
   // A cell's answer in the cache; its block made when `make`, else nullptr without it.
   std::atomic<std::uint8_t>* known(std::size_t capture, std::size_t cell, bool make) const;

@@ -220,7 +220,7 @@ std::uint64_t captureBytes(const CaptureSight& sight, std::size_t capture,
                            std::span<const FloorSample> samples, const WalkableFloor& floor,
                            const FloorInSight& inSight) {
   constexpr std::uint64_t kProxiesBytes = 16 << 10;
-  constexpr int kBlockColumns = 32;
+  constexpr int kBlockColumns = FloorInSight::kBlockColumns;
   constexpr std::uint64_t kBlockBytes = kBlockColumns * kBlockColumns;
   std::map<int, std::pair<std::size_t, std::size_t>> rows;  // row: its first and last cell held
   std::set<std::pair<int, int>> blocks;
