@@ -108,6 +108,14 @@ class CameraSpaceCache {
         std::lower_bound(heights_.begin(), heights_.end(), z) - heights_.begin());
     return slots_.emplace(cell * heights_.size() + height, Slot{}).first->second;
   }
+  // Where a camera can be, measured and not kept: the whole-floor scan measures every
+  // cell-height once, and kept, its slots (some 130 bytes each) grew into gigabytes on a 25 ha
+  // level; the scans after it, around the pops, keep theirs.
+  ReachableMask unkeptMask() const {
+    return [this](std::span<const glm::dvec3> points, std::span<char> reachable) {
+      markCameraSpace(level_, walked_, headRoom_, points, reachable);
+    };
+  }
   ReachableMask mask(Slot& slot) const {
     return [this, &slot, at = std::size_t{0}](std::span<const glm::dvec3> points,
                                               std::span<char> reachable) mutable {
@@ -239,7 +247,8 @@ void volumesNear(const VolumeColumns& columns, const WeightGrid& grid,
 // (pop.perCentimeter stays 0 otherwise).
 CellBlend scanTask(const WalkableFloor& walked, std::span<const InfluenceVolume> volumes,
                    std::span<const Region> bounds, std::span<const std::uint32_t> candidates,
-                   const BlendTask& task, double popThreshold, CameraSpaceCache& cameraSpace) {
+                   const BlendTask& task, double popThreshold, CameraSpaceCache& cameraSpace,
+                   bool keepCameras = true) {
   const WeightGrid grid = taskGrid(walked, task);
   const double z = task.z, s = kScanGridMeters;
   CellBlend found;
@@ -276,8 +285,9 @@ CellBlend scanTask(const WalkableFloor& walked, std::span<const InfluenceVolume>
   for (std::size_t k = 0; k < near.size(); ++k) turn = std::max(turn, largest[k] - least[k]);
   found.mostOverlapping = most;
   if (turn < popThreshold * 100.0 * s) return found;
-  const WeightContinuity c =
-      measureWeightContinuity(near, grid, {}, cameraSpace.mask(cameraSpace.slot(task.cell, z)));
+  const WeightContinuity c = measureWeightContinuity(
+      near, grid, {},
+      keepCameras ? cameraSpace.mask(cameraSpace.slot(task.cell, z)) : cameraSpace.unkeptMask());
   const double perCentimeter = c.largestJump / (100.0 * s);
   if (perCentimeter > popThreshold) found.pop = {perCentimeter, c.jumpFromMeters, c.jumpToMeters};
   return found;
@@ -285,10 +295,12 @@ CellBlend scanTask(const WalkableFloor& walked, std::span<const InfluenceVolume>
 
 // The blend where a camera can be over the walked cells that meet the region, at the heights
 // within it; steepestPerCentimeter is the steepest pop over `popThreshold`, 0 when there is none.
+// A block of the whole floor's cells (`cells`) keeps none of its cameras (unkeptMask).
 BlendScan scanBlend(const WalkableFloor& walked, double headRoom,
                     std::span<const InfluenceVolume> volumes, std::span<const double> heights,
                     const Region& region, double popThreshold, CameraSpaceCache& cameraSpace,
                     std::optional<CellSpan> cells = std::nullopt) {
+  const bool keepCameras = !cells;
   const std::vector<BlendTask> tasks = blendTasks(walked, headRoom, heights, region, cells);
   const std::vector<Region> bounds = boundsOf(volumes);  // once, not for every cell
   const VolumeColumns columns = columnsOf(bounds);
@@ -298,8 +310,8 @@ BlendScan scanBlend(const WalkableFloor& walked, double headRoom,
     std::vector<std::uint32_t> candidates;
     for (std::size_t t = range.begin(); t != range.end(); ++t) {
       volumesNear(columns, taskGrid(walked, tasks[t]), candidates);
-      scan.cells[t] =
-          scanTask(walked, volumes, bounds, candidates, tasks[t], popThreshold, cameraSpace);
+      scan.cells[t] = scanTask(walked, volumes, bounds, candidates, tasks[t], popThreshold,
+                               cameraSpace, keepCameras);
     }
   });
   return scan;
