@@ -443,6 +443,15 @@ class AwayFromSpot {
   std::vector<std::optional<CellBlend>> before_;
 };
 
+// The walked cells of the grid columns and rows a region's plan covers, in the floor's order:
+// every cell a volume within the region weighs, and some it does not. The leak check walks
+// these, not the whole floor (millions of cells on an open level, for each widening tried).
+std::vector<FloorCell> cellsUnder(const WalkableFloor& walked, const Region& region) {
+  std::vector<FloorCell> cells;
+  forEachCellNear(walked, region, [&](std::size_t c) { cells.push_back(walked.cells[c]); });
+  return cells;
+}
+
 // The cells round a pop, at its height.
 Region around(const Pop& pop, double cellMeters) {
   const glm::dvec3 margin(cellMeters, cellMeters, 0.0);
@@ -537,6 +546,7 @@ std::size_t widenFadesWhereWeightsJump(const LevelRayCaster& level, const Walkab
           widest.halfExtentsMeters[axis] += kOuterGrowthsOverGap.back() * gapMeters;
         std::optional<AwayFromSpot> away;
         std::optional<double> leakBefore;
+        std::vector<FloorCell> underWidest;  // what the leak check weighs, box and widenings
         for (int axis : axes) {
           for (const BoxInfluence& wider : widerFades(box, axis, gapMeters)) {
             volumes[v] = wider;
@@ -547,9 +557,11 @@ std::size_t widenFadesWhereWeightsJump(const LevelRayCaster& level, const Walkab
             // away from the spot takes every cell of the box when it passes.
             if (wider.halfExtentsMeters != box.halfExtentsMeters) {  // reaches further
               const glm::dvec3 capture = probes[v - kept.size()].captureMeters;
-              if (!leakBefore)
-                leakBefore = influenceOutOfSight(level, capture, box, walked.cells).share;
-              if (influenceOutOfSight(level, capture, wider, walked.cells).share >
+              if (!leakBefore) {
+                underWidest = cellsUnder(walked, boundsOf(widest));
+                leakBefore = influenceOutOfSight(level, capture, box, underWidest).share;
+              }
+              if (influenceOutOfSight(level, capture, wider, underWidest).share >
                   std::max(*leakBefore, kLeakShareTarget))
                 continue;
             }
