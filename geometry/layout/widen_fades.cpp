@@ -109,7 +109,7 @@ class CameraSpaceCache {
     return slots_.emplace(cell * heights_.size() + height, Slot{}).first->second;
   }
   // Where a camera can be, measured and not kept: the whole-floor scan measures every
-  // cell-height once, and kept, its slots (some 130 bytes each) grew into gigabytes on a 25 ha
+  // cell-height once, and kept, its slots (some 130 bytes each) number millions on a 25 ha
   // level; the scans after it, around the pops, keep theirs.
   ReachableMask unkeptMask() const {
     return [this](std::span<const glm::dvec3> points, std::span<char> reachable) {
