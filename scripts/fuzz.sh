@@ -22,7 +22,7 @@ tree="${PROBEPROXY_FUZZ_DIR:-$here/build/fuzz}"
 export LSAN_OPTIONS="suppressions=$here/tests/fuzz/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1"
 targets=(scene_file runtime_export bsp pk3 level_gltf level_glb level_obj level_ply level_off
-         cubemap_image cubemap_faces candidate_wire)
+         cubemap_image cubemap_faces candidate_wire proxy_build_wire)
 # The command line, where it was built (scripts/fuzz.sh build --command-line).
 cli_tree=$tree/command_line
 [ -x "$cli_tree/tests/fuzz/fuzz_command_line" ] && targets+=(command_line)
@@ -58,7 +58,9 @@ copy_seeds() {
   for f in "$here"/tests/fuzz/seeds/runtime_export/*.json "$here"/build/tests/corpus/*/proxies.json; do
     cp "$f" "$seeds/runtime_export/$(basename "$(dirname "$f")")_$(basename "$f")"
   done
-  for f in "$here"/tests/fuzz/seeds/candidate_wire/*; do cp "$f" "$seeds/candidate_wire/"; done
+  for target in candidate_wire proxy_build_wire; do
+    for f in "$here/tests/fuzz/seeds/$target"/*; do cp "$f" "$seeds/$target/"; done
+  done
   for f in "$here"/build/scenes/*/*.glb; do cp "$f" "$seeds/level_glb/"; done
   for f in "$here"/tests/e2e/hostile/*.ply; do cp "$f" "$seeds/level_ply/"; done
   for f in "$here"/tests/e2e/hostile/*.off; do cp "$f" "$seeds/level_off/"; done

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""`probeproxy layout` with its candidate stage on a Dask cluster.
+"""`probeproxy layout` with its candidate stage and its final proxy builds on a Dask cluster.
 
 The candidate stage (every capture point's sight of the floor and the floor its proxies serve)
 is most of a layout's time, and its capture points are independent: this script cuts them into
@@ -9,8 +9,11 @@ byte for byte (layout.json's timings aside). Each worker reads the level from th
 given (a path every worker shares: the same machine, NFS, a shared bucket mount) once, walks its
 floor and lays its capture points as the layout does, and keeps them for every tile it is sent;
 what travels back is each tile's packed candidates (sights and served floor samples as Roaring
-bitmaps, no meshes: layout.json's candidate_wire_bytes). A worker lost in the middle costs only
-its tiles, which Dask runs again elsewhere: the layout is the same.
+bitmaps, no meshes: layout.json's candidate_wire_bytes). Once the probes are chosen, their final
+proxies are built on the workers too, a task a probe: out goes its name, capture point,
+influence volume and fit radius, back its whole build (every candidate proxy tried, the one
+kept). A worker lost in the middle costs only its tiles or probes, which Dask runs again
+elsewhere: the layout is the same.
 
   /usr/bin/python3 scripts/layout_dask.py LEVEL_OR_SCENE --out DIR
       (--scheduler tcp://HOST:8786 | --local-workers N) [--tile-size 16]
@@ -22,7 +25,7 @@ its tiles, which Dask runs again elsewhere: the layout is the same.
 queue through dask-jobqueue); --local-workers starts N worker processes on this machine, on
 loopback. Every worker needs Debian's python3-distributed and this module (--module-dir, a
 path on the worker). --kill-a-worker-after K (for the tests) ends one worker's process once K
-tiles are done.
+tiles are done, and another once K proxy builds are done.
 """
 import argparse
 import os
@@ -40,18 +43,28 @@ LAYOUT_OPTIONS = {  # flag: key of probeproxy_py's layout options, type
 }
 
 
-def judge_tile(module_dir, level, options, captures):
-    """On a worker: the packed candidates of one tile's capture points. The judge (the level,
-    its floor, samples and capture points) is made once per worker process and options."""
+def layout_worker(module_dir, level, options):
+    """On a worker: its probeproxy_py.LayoutWorker for this level and options, made once per
+    worker process (the level read, its floor walked, its capture points laid)."""
     from distributed import get_worker
     if module_dir not in sys.path:
         sys.path.insert(0, module_dir)
     import probeproxy_py
-    judges = get_worker().__dict__.setdefault("probeproxy_judges", {})
+    workers = get_worker().__dict__.setdefault("probeproxy_layout_workers", {})
     key = (level, tuple(sorted(options.items())))
-    if key not in judges:
-        judges[key] = probeproxy_py.CandidateJudge(level, dict(options))
-    return judges[key].judge(captures)
+    if key not in workers:
+        workers[key] = probeproxy_py.LayoutWorker(level, dict(options))
+    return workers[key]
+
+
+def judge_tile(module_dir, level, options, captures):
+    """On a worker: the packed candidates of one tile's capture points."""
+    return layout_worker(module_dir, level, options).judge(captures)
+
+
+def build_proxy(module_dir, level, options, task):
+    """On a worker: the packed final proxy of one laid-out probe."""
+    return layout_worker(module_dir, level, options).build_proxy(task)
 
 
 def end_one_worker(client):
@@ -100,11 +113,14 @@ def main():
                                processes=True, host="127.0.0.1", dashboard_address=None)
         client = Client(cluster)
     workers = len(client.scheduler_info().get("workers", {}))
-    ended = []
+    ended = []  # the workers ended, one per stage with --kill-a-worker-after
+    proxy_travel = {"builds": 0, "out": 0, "back": 0}  # bytes of the tasks sent, builds back
 
-    def judge_tiles(tiles):
-        futures = client.map(judge_tile, [module_dir] * len(tiles), [level] * len(tiles),
-                             [worker_options] * len(tiles), tiles, pure=False)
+    def run_everywhere(task, items):
+        """Maps task over items on the cluster, in order; with --kill-a-worker-after K, one
+        worker's process is ended once K of them are done (and Dask runs its share again)."""
+        futures = client.map(task, [module_dir] * len(items), [level] * len(items),
+                             [worker_options] * len(items), items, pure=False)
         if args.kill_a_worker_after > 0:
             for done, _ in enumerate(as_completed(futures), start=1):
                 if done == args.kill_a_worker_after:
@@ -112,8 +128,18 @@ def main():
                     break
         return client.gather(futures)
 
+    def judge_tiles(tiles):
+        return run_everywhere(judge_tile, tiles)
+
+    def build_proxies(tasks):
+        builds = run_everywhere(build_proxy, tasks)
+        proxy_travel.update(builds=len(tasks), out=sum(map(len, tasks)),
+                            back=sum(map(len, builds)))
+        return builds
+
     try:
-        result = probeproxy_py.layout_level(level, args.out, options, judge_tiles=judge_tiles)
+        result = probeproxy_py.layout_level(level, args.out, options, judge_tiles=judge_tiles,
+                                            build_proxies=build_proxies)
     except probeproxy_py.InputError as error:
         print("layout_dask: error: %s" % error, file=sys.stderr)
         return 2
@@ -122,12 +148,16 @@ def main():
         if cluster is not None:
             cluster.close()
     figures = result["figures"]
+    ended_note = ""
+    if ended:
+        ended_note = " (one ended after %d tiles%s)" % (
+            args.kill_a_worker_after,
+            " and one after %d proxy builds" % args.kill_a_worker_after if len(ended) > 1 else "")
     print("%d probes from %d capture points in %d tiles on %d workers%s; %d bytes of candidates "
-          "came back" % (figures["probes"], figures["capture_points"],
-                         figures.get("candidate_tiles", 1),
-                         workers,
-                         " (one ended after %d tiles)" % args.kill_a_worker_after if ended else "",
-                         figures.get("candidate_wire_bytes", 0)))
+          "came back; %d proxy builds: %d bytes of tasks out, %d bytes of builds back"
+          % (figures["probes"], figures["capture_points"], figures.get("candidate_tiles", 1),
+             workers, ended_note, figures.get("candidate_wire_bytes", 0),
+             proxy_travel["builds"], proxy_travel["out"], proxy_travel["back"]))
     for path in result["files"]:
         print("wrote %s" % path, file=sys.stderr)
     return 0

@@ -14,8 +14,8 @@
 #include "geometry/survey/survey_map.h"
 #include "plugin/jobs/build/build_job.h"
 #include "plugin/jobs/build/build_report.h"
-#include "plugin/jobs/layout/candidate_judge.h"
 #include "plugin/jobs/layout/layout_job.h"
+#include "plugin/jobs/layout/layout_worker.h"
 #include "plugin/jobs/scene_input.h"
 #include "plugin/jobs/validate/validate_job.h"
 #include "plugin/jobs/validate/validate_report.h"
@@ -29,9 +29,12 @@
 #include <atomic>
 #include <condition_variable>
 #include <exception>
+#include <functional>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <thread>
+#include <type_traits>
 
 namespace py = pybind11;
 
@@ -313,27 +316,43 @@ jobs::LayoutJobOptions fileLayoutJob(const std::string& levelOrScene, const py::
   return job;
 }
 
+// A Python callable for the job's thread: called with the GIL held, its arguments converted
+// from `In` and its answer, a list of bytes, to strings. Copies of the job's options outlive no
+// call but may be dropped on the job's thread: the last reference goes with the GIL held too.
+template <class In>
+std::function<std::vector<std::string>(const In&)> bytesFromPython(const py::object& callable) {
+  const std::shared_ptr<py::object> held(new py::object(callable), [](py::object* c) {
+    py::gil_scoped_acquire acquire;
+    delete c;
+  });
+  return [held](const In& in) {
+    py::gil_scoped_acquire acquire;
+    py::object arg;
+    if constexpr (std::is_same_v<In, std::vector<std::string>>) {
+      py::list items;
+      for (const std::string& item : in) items.append(py::bytes(item));
+      arg = items;
+    } else {
+      arg = py::cast(in);
+    }
+    std::vector<std::string> out;
+    for (const py::handle bytes : (*held)(arg)) out.push_back(bytes.cast<std::string>());
+    return out;
+  };
+}
+
 // `probeproxy layout LEVEL_OR_SCENE --out DIR` with the candidate stage's tiles judged by
-// `judgeTiles(tiles) -> [bytes]` (scripts/layout_dask.py: a Dask cluster), else here.
+// `judgeTiles(tiles) -> [bytes]` and the final proxies built by `buildProxies(tasks) -> [bytes]`
+// (scripts/layout_dask.py: a Dask cluster), else here.
 py::dict layoutLevel(const std::string& levelOrScene, const std::string& outFolder,
                      const py::dict& options, const py::object& judgeTiles,
-                     const py::object& progress) {
+                     const py::object& buildProxies, const py::object& progress) {
   jobs::LayoutJobOptions job = fileLayoutJob(levelOrScene, options);
   job.outFolder = outFolder;
-  if (!judgeTiles.is_none()) {
-    // Copies of the options outlive no call but may be dropped on the job's thread: the last
-    // reference to the Python callable goes with the GIL held.
-    const std::shared_ptr<py::object> judge(new py::object(judgeTiles), [](py::object* callable) {
-      py::gil_scoped_acquire acquire;
-      delete callable;
-    });
-    job.layout.judgeTiles = [judge](const std::vector<std::vector<std::size_t>>& tiles) {
-      py::gil_scoped_acquire acquire;
-      std::vector<std::string> wires;
-      for (const py::handle wire : (*judge)(tiles)) wires.push_back(wire.cast<std::string>());
-      return wires;
-    };
-  }
+  if (!judgeTiles.is_none())
+    job.layout.judgeTiles = bytesFromPython<std::vector<std::vector<std::size_t>>>(judgeTiles);
+  if (!buildProxies.is_none())
+    job.buildProxies = bytesFromPython<std::vector<std::string>>(buildProxies);
   const jobs::LayoutJobResult r = runWithProgress<jobs::LayoutJobResult>(
       [&](const Progress& onStep) { return jobs::runLayoutJob(job, onStep); }, progress);
   py::list files;
@@ -446,38 +465,57 @@ PYBIND11_MODULE(probeproxy_py, m) {
         "The survey maps' colour scale: [(lower edge in degrees, (r, g, b)), ...].");
   m.def("layout_level", &layoutLevel, py::arg("level_or_scene"), py::arg("out_dir"),
         py::arg("options") = py::dict(), py::arg("judge_tiles") = py::none(),
-        py::arg("progress") = py::none(),
+        py::arg("build_proxies") = py::none(), py::arg("progress") = py::none(),
         "`probeproxy layout LEVEL_OR_SCENE --out DIR`: a scene file or a level file laid out, "
         "the same files written. options: as suggest_probes, and tile_size (m: the candidate "
         "stage a square tile of the floor at a time). judge_tiles: None (the tiles are judged "
         "here), or a callable given each tile's capture point indices (a list of lists) that "
-        "returns, for each tile in order, the bytes CandidateJudge.judge gives for it, from "
-        "wherever it ran (scripts/layout_dask.py). Returns {figures (layout.json), files}.");
-  py::class_<jobs::CandidateJudge>(
-      m, "CandidateJudge",
-      "One process's share of a layout's candidate stage: the level read, its floor walked and "
-      "its capture points laid as layout_level does for the same level and options, once.")
+        "returns, for each tile in order, the bytes LayoutWorker.judge gives for it, from "
+        "wherever it ran (scripts/layout_dask.py). build_proxies: None (the laid-out probes' "
+        "final proxies are built here), or a callable given each probe's packed task (a list of "
+        "bytes) that returns, in order, the bytes LayoutWorker.build_proxy gives for each. "
+        "Returns {figures (layout.json), files}.");
+  py::class_<jobs::LayoutWorker>(
+      m, "LayoutWorker",
+      "One process's share of a layout: the level read, its floor walked and its capture "
+      "points laid as layout_level does for the same level and options, once; then the "
+      "candidates of any capture points and the final proxy of any probe.")
       .def(py::init([](const std::string& levelOrScene, const py::dict& options) {
              const jobs::LayoutJobOptions job = fileLayoutJob(levelOrScene, options);
              py::gil_scoped_release release;
-             return std::make_unique<jobs::CandidateJudge>(job);
+             return std::make_unique<jobs::LayoutWorker>(job);
            }),
            py::arg("level_or_scene"), py::arg("options") = py::dict())
-      .def_property_readonly("capture_points", &jobs::CandidateJudge::capturePoints,
+      .def_property_readonly("capture_points", &jobs::LayoutWorker::capturePoints,
                              "how many capture points the layout judges")
       .def(
           "judge",
-          [](const jobs::CandidateJudge& judge, const std::vector<std::size_t>& captures) {
+          [](const jobs::LayoutWorker& worker, const std::vector<std::size_t>& captures) {
             std::string wire;
             {
               py::gil_scoped_release release;
-              wire = judge.judge(captures);
+              wire = worker.judge(captures);
             }
             return py::bytes(wire);
           },
           py::arg("captures"),
           "The candidates of these capture points (indices), packed: their sight and the floor "
-          "samples each fit region's proxy serves (geometry/layout/candidate_wire.h).");
+          "samples each fit region's proxy serves (geometry/layout/candidate_wire.h).")
+      .def(
+          "build_proxy",
+          [](const jobs::LayoutWorker& worker, const py::bytes& task) {
+            const std::string taskBytes = task;
+            std::string wire;
+            {
+              py::gil_scoped_release release;
+              wire = worker.buildProxy(taskBytes);
+            }
+            return py::bytes(wire);
+          },
+          py::arg("task"),
+          "The final proxy of one laid-out probe, from its packed task (layout_level hands "
+          "them to build_proxies), packed: every candidate tried and the one kept "
+          "(geometry/layout/proxy_build_wire.h).");
   m.def(
       "suggest_probes", &suggestProbes, py::arg("scene"), py::arg("anchor"), py::arg("out_dir"),
       py::arg("level") = py::none(), py::arg("options") = py::dict(),

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # layout_dask_checks.sh PROBEPROXY MODULE_DIR SCENE WORK [LAYOUT OPTIONS...]
-# scripts/layout_dask.py lays SCENE out with its candidate tiles judged by a Dask LocalCluster of
-# two worker processes on loopback, one of them ended (SIGKILL) once two tiles are done: Dask
-# runs that worker's tiles again, and every file is the bytes `probeproxy layout SCENE
-# --tile-size 6` writes in one process (layout.json: the same figures, timings aside).
+# scripts/layout_dask.py lays SCENE out with its candidate tiles judged and its probes' final
+# proxies built by a Dask LocalCluster of two worker processes on loopback, one of them ended
+# (SIGKILL) once two tiles are done and one once two proxies are built: Dask runs those workers'
+# tasks again, and every file is the bytes `probeproxy layout SCENE --tile-size 6` writes in
+# one process (layout.json: the same figures, timings aside).
 set -eu
 probeproxy=$1 module=$2 scene=$3 work=$4
 shift 4
@@ -14,8 +15,10 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 /usr/bin/python3 "$here/../../scripts/layout_dask.py" "$scene" --out "$work/dask" \
   --local-workers 2 --tile-size 6 --module-dir "$module" --kill-a-worker-after 2 "$@" \
   >"$work/dask.log" 2>&1 || { cat "$work/dask.log" >&2; fail "layout_dask.py failed"; }
-grep -q "in [0-9]* tiles on 2 workers (one ended after 2 tiles)" "$work/dask.log" ||
-  { cat "$work/dask.log" >&2; fail "no worker was ended"; }
+grep -q "in [0-9]* tiles on 2 workers (one ended after 2 tiles and one after 2 proxy builds)" \
+  "$work/dask.log" || { cat "$work/dask.log" >&2; fail "no worker was ended in each stage"; }
+grep -q "; [1-9][0-9]* proxy builds: [1-9][0-9]* bytes of tasks out, [1-9][0-9]* bytes of builds back" \
+  "$work/dask.log" || { cat "$work/dask.log" >&2; fail "the proxies were not built on the workers"; }
 [ "$(ls "$work/one_process")" = "$(ls "$work/dask")" ] || fail "other files"
 for f in $(ls "$work/one_process"); do
   [ "$f" = layout.json ] && continue

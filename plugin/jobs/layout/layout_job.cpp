@@ -9,6 +9,7 @@
 #include "geometry/export/runtime_export.h"
 #include "geometry/layout/candidate_service.h"
 #include "geometry/layout/layout_proxy.h"
+#include "geometry/layout/proxy_build_wire.h"
 #include "geometry/level/write_level_mesh.h"
 #include "geometry/probe_proxies/authored_proxy_shape.h"
 #include "geometry/probe_proxies/build_scene_proxies.h"
@@ -227,6 +228,33 @@ std::string layoutReportJson(const LayoutJobOptions& o, const LayoutJobResult& r
   return j.dump(2) + "\n";
 }
 
+// The final proxies of the probes the layout added (scene and builds from `first` on), here or
+// wherever options.buildProxies sends them: each is built from its task alone, so the bytes
+// are the same wherever it ran.
+void buildAddedProxies(const LevelRayCaster& rayCaster, const LayoutJobOptions& o,
+                       double toleranceDeg, LayoutJobResult& r, std::size_t first) {
+  if (!o.buildProxies) {
+    tbb::parallel_for(first, r.builds.size(), [&](std::size_t i) {
+      r.builds[i] = buildLayoutProxy(rayCaster, r.scene.probes[i], o.layout.finalProxy,
+                                     r.layout.probes[i - first].fitMeters, toleranceDeg);
+    });
+    return;
+  }
+  std::vector<std::string> tasks;
+  for (std::size_t i = first; i < r.builds.size(); ++i)
+    tasks.push_back(packProxyBuildTask({r.scene.probes[i], r.layout.probes[i - first].fitMeters}));
+  const std::vector<std::string> wires = o.buildProxies(tasks);
+  if (wires.size() != tasks.size())
+    throw InputError("proxy build wire", std::to_string(wires.size()) + " builds came back for " +
+                                             std::to_string(tasks.size()) + " probes");
+  for (std::size_t i = first; i < r.builds.size(); ++i) {
+    r.builds[i] = unpackProxyBuild(wires[i - first]);
+    if (r.builds[i].probe != r.scene.probes[i].name)
+      throw InputError("proxy build wire", "the build of " + r.builds[i].probe + " came back for " +
+                                               r.scene.probes[i].name);
+  }
+}
+
 }  // namespace
 
 void LayoutJobOptions::check() const {
@@ -272,10 +300,7 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
     r.builds = std::move(keptBuilds);
     const std::size_t first = r.builds.size();  // the added probes' builds follow the kept ones
     r.builds.resize(r.scene.probes.size());
-    tbb::parallel_for(first, r.builds.size(), [&](std::size_t i) {
-      r.builds[i] = buildLayoutProxy(rayCaster, r.scene.probes[i], o.layout.finalProxy,
-                                     r.layout.probes[i - first].fitMeters, layout.toleranceDeg);
-    });
+    buildAddedProxies(rayCaster, o, layout.toleranceDeg, r, first);
     const fs::path folder = r.scene.file.parent_path();
     for (std::size_t i = first; i < r.builds.size(); ++i) {
       Probe& probe = r.scene.probes[i];

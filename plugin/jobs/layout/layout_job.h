@@ -22,6 +22,7 @@
 #include "plugin/jobs/scene_input.h"
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,11 @@ struct LayoutJobOptions {
   // The engines the level ships to: each gets the presets it renders best and its own figures
   // (geometry/layout/engine_presets.h). With exactly one, the layout's survey is that engine's.
   std::vector<Engine> engines;
+  // Where the laid-out probes' final proxies are built when not here: given each probe's packed
+  // task (geometry/layout/proxy_build_wire.h), returns each one's packed build, in order
+  // (scripts/layout_dask.py sends them to a Dask cluster, LayoutWorker::buildProxy answers).
+  // Empty: here, all cores.
+  std::function<std::vector<std::string>(const std::vector<std::string>&)> buildProxies;
 
   void check() const;  // throws InputError naming the option at fault
 };

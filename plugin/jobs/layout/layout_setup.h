@@ -2,8 +2,8 @@
 // What a layout job reads and resolves before it lays anything out: the scene or level, its
 // ray caster, the layout's and the survey's options with the floor and player settled (the
 // user's, else the scene's measured_with, else the level's game), and the seed points the floor
-// is flood-filled from. The job and every process that judges its candidates (a Dask worker,
-// plugin/jobs/layout/candidate_judge.h) start from the same setup, so they walk the same floor.
+// is flood-filled from. The job and every process that shares its work (a Dask worker,
+// plugin/jobs/layout/layout_worker.h) start from the same setup, so they walk the same floor.
 
 #include "core/scene/scene.h"
 #include "geometry/layout/layout_options.h"
