@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace probeproxy {
@@ -60,6 +61,9 @@ struct LayoutOptions {
   // the candidate ground's, run_layout.h), returns each tile's judgeCandidates bytes, in order
   // (scripts/layout_dask.py sends them to a Dask cluster). Empty: here, a tile at a time.
   std::function<std::vector<std::string>(const std::vector<std::vector<std::size_t>>&)> judgeTiles;
+  // Told as each stage ends (the names of LayoutResult::stageSeconds): on an open level a layout
+  // runs for an hour, and its front end says where it is. May be empty.
+  std::function<void(std::string_view stage, double seconds)> onStageDone;
   // What the candidate stage may take (core/io/memory_budget.h); 0: what the process can use.
   std::uint64_t maxMemoryBytes = 0;
   ProxyBuildOptions finalProxy;

@@ -385,6 +385,7 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
   const auto lap = [&](const char* stage) {
     const auto now = std::chrono::steady_clock::now();
     r.stageSeconds.emplace_back(stage, std::chrono::duration<double>(now - lapStart).count());
+    if (o.onStageDone) o.onStageDone(stage, r.stageSeconds.back().second);
     lapStart = now;
   };
   const ChosenRanges ranges = chooseRanges(level, floor, o, onDone, kept, r, lap);

@@ -16,7 +16,7 @@ set_tests_properties(fuzz_build PROPERTIES LABELS fuzz FIXTURES_SETUP fuzz_tree 
 add_test(NAME fuzz_regressions COMMAND ${CMAKE_COMMAND} -E env ${fuzz_env} ${fuzz_script} regressions)
 set_tests_properties(fuzz_regressions PROPERTIES LABELS fuzz FIXTURES_REQUIRED fuzz_tree)
 foreach(target scene_file runtime_export bsp pk3 level_gltf level_glb level_obj level_ply level_off
-               cubemap_image cubemap_faces candidate_wire)
+               cubemap_image cubemap_faces candidate_wire proxy_build_wire)
   add_test(NAME fuzz_${target} COMMAND ${CMAKE_COMMAND} -E env ${fuzz_env} ${fuzz_script} run ${target} --runs 500)
   set_tests_properties(fuzz_${target} PROPERTIES LABELS fuzz FIXTURES_REQUIRED fuzz_tree TIMEOUT 300)
 endforeach()

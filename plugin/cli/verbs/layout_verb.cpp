@@ -45,6 +45,12 @@ int runLayoutVerb(LayoutVerbOptions o) {
         parseMemorySize(o.maxMemory, "--max-memory");
   o.job.levelOrScene = o.input;
   o.job.outFolder = o.out;
+  // A line a stage, terminal or log: on an open level the stages after the candidates' run for
+  // most of an hour.
+  o.job.layout.onStageDone = [](std::string_view stage, double seconds) {
+    std::fprintf(stderr, "probeproxy layout: %.*s done in %.1f s\n", static_cast<int>(stage.size()),
+                 stage.data(), seconds);
+  };
   const jobs::LayoutJobResult r =
       jobs::runLayoutJob(o.job, terminalProgress("probeproxy layout: candidates", "candidates"));
   if (o.json) {

@@ -24,6 +24,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -292,6 +293,14 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
   // Every point of the floor the survey walks must lie in a volume.
   layout.coverFloor = survey.floor;
   r.layout = runLayout(rayCaster, seeds, layout, progress, kept);
+  // The job's own stages after the layout's, told the same way.
+  auto lapStart = std::chrono::steady_clock::now();
+  const auto stageDone = [&](const char* stage) {
+    const auto now = std::chrono::steady_clock::now();
+    if (layout.onStageDone)
+      layout.onStageDone(stage, std::chrono::duration<double>(now - lapStart).count());
+    lapStart = now;
+  };
   r.scene = layoutScene(input, r.layout, o.outFolder.empty() ? fs::path(".") : o.outFolder,
                         o.layout.keepAuthored);
   std::vector<std::pair<fs::path, LevelMesh>> proxyMeshes;  // written with the scene
@@ -301,6 +310,7 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
     const std::size_t first = r.builds.size();  // the added probes' builds follow the kept ones
     r.builds.resize(r.scene.probes.size());
     buildAddedProxies(rayCaster, o, layout.toleranceDeg, r, first);
+    stageDone("proxies");
     const fs::path folder = r.scene.file.parent_path();
     for (std::size_t i = first; i < r.builds.size(); ++i) {
       Probe& probe = r.scene.probes[i];
@@ -331,6 +341,7 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
   // A later survey, validate or add-on run of the scene measures this floor, this way.
   r.scene.measuredWith = measuredWith(survey, seeds);
   r.survey = surveyProbes(probes, rayCaster, survey);
+  stageDone("survey");
   if (o.layout.keepAuthored) {
     dropAddedProbesThatDoNotHelp(rayCaster, survey, probes, r);
     // The dropped probes' proxy meshes are not written.
