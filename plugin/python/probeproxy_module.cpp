@@ -316,6 +316,17 @@ jobs::LayoutJobOptions fileLayoutJob(const std::string& levelOrScene, const py::
   return job;
 }
 
+// The bytes `work` makes, made with the GIL released (a Dask worker's other threads run).
+template <class Work>
+py::bytes bytesWithoutGil(Work&& work) {
+  std::string made;
+  {
+    py::gil_scoped_release release;
+    made = work();
+  }
+  return py::bytes(made);
+}
+
 // A Python callable for the job's thread: called with the GIL held, its arguments converted
 // from `In` and its answer, a list of bytes, to strings. Copies of the job's options outlive no
 // call but may be dropped on the job's thread: the last reference goes with the GIL held too.
@@ -491,12 +502,7 @@ PYBIND11_MODULE(probeproxy_py, m) {
       .def(
           "judge",
           [](const jobs::LayoutWorker& worker, const std::vector<std::size_t>& captures) {
-            std::string wire;
-            {
-              py::gil_scoped_release release;
-              wire = worker.judge(captures);
-            }
-            return py::bytes(wire);
+            return bytesWithoutGil([&] { return worker.judge(captures); });
           },
           py::arg("captures"),
           "The candidates of these capture points (indices), packed: their sight and the floor "
@@ -505,12 +511,7 @@ PYBIND11_MODULE(probeproxy_py, m) {
           "build_proxy",
           [](const jobs::LayoutWorker& worker, const py::bytes& task) {
             const std::string taskBytes = task;
-            std::string wire;
-            {
-              py::gil_scoped_release release;
-              wire = worker.buildProxy(taskBytes);
-            }
-            return py::bytes(wire);
+            return bytesWithoutGil([&] { return worker.buildProxy(taskBytes); });
           },
           py::arg("task"),
           "The final proxy of one laid-out probe, from its packed task (layout_level hands "
