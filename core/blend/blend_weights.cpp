@@ -56,7 +56,10 @@ std::vector<ProbeWeight> blendWeights(std::span<const InfluenceVolume> volumes, 
   if (options.maxProbes < 1) throw std::invalid_argument("blendWeights: maxProbes must be >= 1");
   const bool lagarde = options.scheme == BlendScheme::Lagarde;
 
+  // Reserved whole: this runs for every point of every blend grid (the survey, the layout's
+  // trims and fades), where regrowing the vectors showed in profiles as malloc and free.
   std::vector<Candidate> candidates;
+  candidates.reserve(volumes.size());
   bool covered = false;
   for (std::size_t i = 0; i < volumes.size(); ++i) {
     const double a = normalizedDistance(volumes[i], p);
@@ -90,6 +93,7 @@ std::vector<ProbeWeight> blendWeights(std::span<const InfluenceVolume> volumes, 
   }
 
   std::vector<ProbeWeight> weights;
+  weights.reserve(candidates.size());
   for (const Candidate& c : candidates) {
     if (c.raw > 0.0) weights.push_back({c.probe, c.raw / sum});
   }

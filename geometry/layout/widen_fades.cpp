@@ -262,13 +262,13 @@ CellBlend scanTask(const WalkableFloor& walked, std::span<const InfluenceVolume>
   // as much as a pop does in one step (weights turn one way across a band: a pop within the
   // cell shows between its corners).
   int most = 0;
-  std::vector<double> least(near.size(), 1.0), largest(near.size(), 0.0);
+  std::vector<double> least(near.size(), 1.0), largest(near.size(), 0.0), w(near.size());
   for (int i = 0; i < kCoarsePoints; ++i) {
     for (int j = 0; j < kCoarsePoints; ++j) {
       const glm::dvec2 span = grid.maxMeters - grid.minMeters;
       const glm::dvec3 p(grid.minMeters.x + i * span.x / (kCoarsePoints - 1),
                          grid.minMeters.y + j * span.y / (kCoarsePoints - 1), z);
-      std::vector<double> w(near.size(), 0.0);
+      std::fill(w.begin(), w.end(), 0.0);
       for (const ProbeWeight& pw : blendWeights(near, p)) w[pw.probe] = pw.weight;
       int over = 0;
       bool inner = false;
