@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 
 namespace probeproxy {
 
@@ -70,6 +71,110 @@ double topOfRangesHolding(std::span<const InfluenceVolume> volumes, glm::dvec3 p
   return top;
 }
 
+// The corners of the box round the cells' points.
+std::pair<glm::dvec3, glm::dvec3> cellBounds(const WalkableFloor& floor,
+                                             std::span<const std::size_t> cells) {
+  glm::dvec3 lo = floor.cells[cells.front()].pointMeters, hi = lo;
+  for (std::size_t c : cells) {
+    lo = glm::min(lo, floor.cells[c].pointMeters);
+    hi = glm::max(hi, floor.cells[c].pointMeters);
+  }
+  return {lo, hi};
+}
+
+struct FillContext {
+  const LevelRayCaster& level;
+  const WalkableFloor& floor;
+  std::span<const char> covered;
+  double gapMeters, captureHeightMeters;
+  bool aboveRanges;  // as fillGroups'
+};
+
+enum class FillOutcome {
+  Made,
+  NoRoom,    // no capture point clear of the level and of the inner ranges beside
+  Declined,  // an optional fill whose band needs pulling, or one too near a range beside
+};
+
+// The fill of one group of cells (its first cell's height is its storey's floor), kept clear
+// of `others` and then added to them.
+FillOutcome fillGroup(const FillContext& c, std::span<const std::size_t> members,
+                      std::vector<InfluenceVolume>& others, std::vector<FloorFill>& fills) {
+  const WalkableFloor& floor = c.floor;
+  const double half = 0.5 * floor.spacingMeters;
+  const double storeyFloor = floor.cells[members.front()].pointMeters.z;
+  const auto [lo, hi] = cellBounds(floor, members);
+  glm::dvec3 innerLo(lo.x - half, lo.y - half,
+                     lo.z - kInfluenceBelowFloorMeters - kInfluenceStepMeters);
+  double captureHeight = c.captureHeightMeters;
+  if (c.aboveRanges) {
+    for (std::size_t m : members) {
+      const glm::dvec3 over = floor.cells[m].pointMeters + glm::dvec3(0, 0, kBlendLiftMeters);
+      innerLo.z = std::max(innerLo.z, topOfRangesHolding(others, over) + kInnerClearanceMeters);
+    }
+    // Half way up what is left of head room over the floor, when that is higher.
+    captureHeight =
+        std::max(captureHeight, 0.5 * (innerLo.z + hi.z + kInfluenceHeadRoomMeters) - lo.z);
+  }
+  const ClearCapture clear = clearCaptureAbove(
+      c.level, floor,
+      nearestFirst(floor, std::vector<std::size_t>(members.begin(), members.end()),
+                   0.5 * (lo + hi)),
+      captureHeight);
+  // A scene may not hold a probe in a surface (checkCapturePoints); no room over that top.
+  glm::dvec3 capture = clear.captureMeters;
+  if (clear.clearanceMeters < kMinCaptureClearanceMeters ||
+      capture.z < innerLo.z + kCaptureMarginMeters)
+    return FillOutcome::NoRoom;
+  glm::dvec3 innerHi(hi.x + half, hi.y + half, hi.z + kInfluenceHeadRoomMeters);
+  innerLo = glm::min(innerLo, capture - glm::dvec3(kCaptureMarginMeters));
+  innerHi = glm::max(innerHi, capture + glm::dvec3(kCaptureMarginMeters));
+  const glm::dvec3 chosen = capture;
+  keepClearOfInnerRanges(innerLo, innerHi, capture, storeyFloor, others, c.gapMeters);
+  if (!clearMovedCapture(c.level, chosen, capture, storeyFloor, innerHi.z))
+    return FillOutcome::NoRoom;
+  // A range above came down to the fill's bottom (over a range's top) or under its capture
+  // point: nothing left to fill (stormkeep: 0 m and -1 mm tall).
+  if (!glm::all(glm::lessThan(innerLo, innerHi)) ||
+      !glm::all(glm::lessThanEqual(innerLo, capture)) ||
+      !glm::all(glm::lessThanEqual(capture, innerHi)))
+    return FillOutcome::NoRoom;
+  const glm::dvec3 clearLo = innerLo, clearHi = innerHi;
+  pullBandsIntoSight(c.level, floor, capture, c.gapMeters, innerLo, innerHi);
+  const BoxInfluence fill = influenceOfBounds(innerLo, innerHi, c.gapMeters);
+  // A fill over covered floor is worth less than a band through a wall (the pull leaves up
+  // to validate's limit behind it: downer, 6.4% measured at other heights), and than a crowd
+  // of bands the trim cannot free (run_layout drops it then).
+  const bool optional =
+      std::all_of(members.begin(), members.end(), [&](std::size_t m) { return c.covered[m] != 0; });
+  if (optional && (innerLo != clearLo || innerHi != clearHi)) return FillOutcome::Declined;
+  if (c.aboveRanges && !keepsTheGapBeside({innerLo, innerHi}, others, c.gapMeters))
+    return FillOutcome::Declined;
+  fills.push_back({capture, fill, optional});
+  others.push_back(fills.back().influence);
+  return FillOutcome::Made;
+}
+
+// A group with floor no volume covers that has no room for one fill gets one for each half,
+// split across its longer side, down to halves two gaps long: one capture point in the middle
+// of a wide uncovered floor can lie where the ranges beside leave it no room while each half's
+// has (final_rage: a 155 m^2 storey and a 25 m^2 strip left uncovered).
+void fillOrSplit(const FillContext& c, std::vector<std::size_t> members,
+                 std::vector<InfluenceVolume>& others, std::vector<FloorFill>& fills) {
+  if (fillGroup(c, members, others, fills) != FillOutcome::NoRoom) return;
+  if (std::all_of(members.begin(), members.end(), [&](std::size_t m) { return c.covered[m]; }))
+    return;
+  const auto [lo, hi] = cellBounds(c.floor, members);
+  const int axis = hi.x - lo.x >= hi.y - lo.y ? 0 : 1;
+  if (hi[axis] - lo[axis] < 2.0 * c.gapMeters) return;
+  const double middle = 0.5 * (lo[axis] + hi[axis]);
+  std::vector<std::size_t> below, above;  // each in the group's order
+  for (std::size_t m : members)
+    (c.floor.cells[m].pointMeters[axis] <= middle ? below : above).push_back(m);
+  fillOrSplit(c, std::move(below), others, fills);
+  fillOrSplit(c, std::move(above), others, fills);
+}
+
 // One fill per group of `toFill` (cells within a gap of one another on one storey), each kept
 // clear of `others` and then added to them. `aboveRanges`: the cells' floor lies in an inner
 // range whose top is under head room over it (a ramp's range stopped under a range above,
@@ -78,7 +183,7 @@ void fillGroups(const LevelRayCaster& level, const WalkableFloor& floor,
                 std::span<const std::size_t> toFill, std::span<const char> covered,
                 double gapMeters, double captureHeightMeters, bool aboveRanges,
                 std::vector<InfluenceVolume>& others, std::vector<FloorFill>& fills) {
-  const double half = 0.5 * floor.spacingMeters;
+  const FillContext context{level, floor, covered, gapMeters, captureHeightMeters, aboveRanges};
   std::vector<char> grouped(toFill.size(), 0);
   for (std::size_t first = 0; first < toFill.size(); ++first) {
     if (grouped[first]) continue;
@@ -100,49 +205,7 @@ void fillGroups(const LevelRayCaster& level, const WalkableFloor& floor,
         lo = glm::min(lo, p), hi = glm::max(hi, p);
       }
     }
-    glm::dvec3 innerLo(lo.x - half, lo.y - half,
-                       lo.z - kInfluenceBelowFloorMeters - kInfluenceStepMeters);
-    double captureHeight = captureHeightMeters;
-    if (aboveRanges) {
-      for (std::size_t m : members) {
-        const glm::dvec3 over = floor.cells[m].pointMeters + glm::dvec3(0, 0, kBlendLiftMeters);
-        innerLo.z = std::max(innerLo.z, topOfRangesHolding(others, over) + kInnerClearanceMeters);
-      }
-      // Half way up what is left of head room over the floor, when that is higher.
-      captureHeight =
-          std::max(captureHeight, 0.5 * (innerLo.z + hi.z + kInfluenceHeadRoomMeters) - lo.z);
-    }
-    const ClearCapture clear = clearCaptureAbove(
-        level, floor, nearestFirst(floor, members, 0.5 * (lo + hi)), captureHeight);
-    // A scene may not hold a probe in a surface (checkCapturePoints); no room over that top.
-    glm::dvec3 capture = clear.captureMeters;
-    if (clear.clearanceMeters < kMinCaptureClearanceMeters ||
-        capture.z < innerLo.z + kCaptureMarginMeters)
-      continue;
-    glm::dvec3 innerHi(hi.x + half, hi.y + half, hi.z + kInfluenceHeadRoomMeters);
-    innerLo = glm::min(innerLo, capture - glm::dvec3(kCaptureMarginMeters));
-    innerHi = glm::max(innerHi, capture + glm::dvec3(kCaptureMarginMeters));
-    const glm::dvec3 chosen = capture;
-    keepClearOfInnerRanges(innerLo, innerHi, capture, storeyFloor, others, gapMeters);
-    if (!clearMovedCapture(level, chosen, capture, storeyFloor, innerHi.z)) continue;
-    // A range above came down to the fill's bottom (over a range's top) or under its capture
-    // point: nothing left to fill (stormkeep: 0 m and -1 mm tall).
-    if (!glm::all(glm::lessThan(innerLo, innerHi)) ||
-        !glm::all(glm::lessThanEqual(innerLo, capture)) ||
-        !glm::all(glm::lessThanEqual(capture, innerHi)))
-      continue;
-    const glm::dvec3 clearLo = innerLo, clearHi = innerHi;
-    pullBandsIntoSight(level, floor, capture, gapMeters, innerLo, innerHi);
-    const BoxInfluence fill = influenceOfBounds(innerLo, innerHi, gapMeters);
-    // A fill over covered floor is worth less than a band through a wall (the pull leaves up
-    // to validate's limit behind it: downer, 6.4% measured at other heights), and than a crowd
-    // of bands the trim cannot free (run_layout drops it then).
-    const bool optional =
-        std::all_of(members.begin(), members.end(), [&](std::size_t c) { return covered[c] != 0; });
-    if (optional && (innerLo != clearLo || innerHi != clearHi)) continue;
-    if (aboveRanges && !keepsTheGapBeside({innerLo, innerHi}, others, gapMeters)) continue;
-    fills.push_back({capture, fill, optional});
-    others.push_back(fills.back().influence);
+    fillOrSplit(context, std::move(members), others, fills);
   }
 }
 
