@@ -3,6 +3,7 @@
 #include "geometry/layout/wire_bytes.h"
 
 #include <cstdint>
+#include <type_traits>
 #include <variant>
 
 namespace probeproxy {
