@@ -3,8 +3,9 @@
   - `probeproxy layout` (no engine): the generic layout, its proxies.json the presets `build`
     would write; each engine's figures from `survey --engine E --proxies` on it (what a studio
     imports today);
-  - `probeproxy layout --engine all`: the same probes, each engine's presets chosen for it
-    (layout.json "engines");
+  - `probeproxy layout --engine all`: the same probes, each engine's presets chosen for it:
+    its policy, and per probe one of the boxes its build fitted, or none (layout.json
+    "engines");
   - `probeproxy layout --baseline grid --max-probes N --engine all`: a grid of box-projected
     probes with the layout's count, each engine's presets chosen the same way.
 Prints one Markdown table per engine: floor over 5 deg, uncovered floor (left to the engine's
@@ -31,7 +32,7 @@ def run_json(*command):
 
 def figures(survey):
     return {"p95": survey["p95_deg"], "over": survey["over_tolerance_share"],
-            "uncovered": survey["uncovered_share"]}
+            "uncovered": survey["uncovered_share"], "probes": survey["probes"]}
 
 
 def level_figures(probeproxy, scene, work, engines):
@@ -53,7 +54,9 @@ def level_figures(probeproxy, scene, work, engines):
             "grid": figures(baseline["engines"][engine]["survey"]),
             "policy": {k: tuned["engines"][engine][k]
                        for k in ("clip_to_influence", "fade_scale", "clear_the_floor",
-                                 "cube_about_capture", "influence_inside")}}
+                                 "cube_about_capture", "influence_inside")},
+            "left_out": len(tuned["engines"][engine]["left_out"]),
+            "other_box": len(tuned["engines"][engine]["other_box"])}
     return out
 
 
@@ -87,13 +90,16 @@ def main():
     for engine in args.engines:
         print("\n**%s** (floor over 5 deg / uncovered / p95 deg)\n" % engine)
         print("| level | generic layout's presets | layout for %s | same-count grid for %s "
-              "| over 5 deg, layout / grid |" % (engine, engine))
-        print("|---|---|---|---|---|")
+              "| probes: layout for %s (left out, other box) / grid | over 5 deg, layout / grid |"
+              % (engine, engine, engine))
+        print("|---|---|---|---|---|---|")
         for level, r in results.items():
             e = r["engines"][engine]
             ratio = e["layout"]["over"] / e["grid"]["over"] if e["grid"]["over"] > 0 else float("nan")
-            print("| %s | %s | %s | %s | %.2f |" % (level, cell(e["today"]), cell(e["layout"]),
-                                                  cell(e["grid"]), ratio))
+            probes = "%d (%d, %d) / %d" % (e["layout"]["probes"], e["left_out"], e["other_box"],
+                                           e["grid"]["probes"])
+            print("| %s | %s | %s | %s | %s | %.2f |" % (level, cell(e["today"]), cell(e["layout"]),
+                                                       cell(e["grid"]), probes, ratio))
 
 
 if __name__ == "__main__":

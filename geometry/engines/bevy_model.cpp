@@ -72,28 +72,34 @@ EngineModel bevyModel(const RuntimeExport& presets) {
     // Falloff is per axis of the probe's own frame, permuted with it like a half-extent.
     cubes.push_back({held.box, worldHalfExtentsFromFile(gltfFrame(), preset->falloff)});
   }
-  model.blend = [cubes = std::move(cubes)](glm::dvec3 x, glm::dvec3) {
-    std::vector<ProbeFade> fades;
-    double sum = 0.0;
-    for (std::size_t i = 0; i < cubes.size(); ++i) {
-      const BoxShape& box = cubes[i].box;
-      const glm::dvec3 unit =
-          glm::conjugate(box.worldFromBox) * (x - box.centerMeters) / (2.0 * box.halfExtentsMeters);
-      const glm::dvec3 falloff = glm::max(cubes[i].falloff, kSmallestFalloff);
-      const glm::dvec3 axes = glm::clamp((1.0 - 2.0 * glm::abs(unit)) / (2.0 * falloff), 0.0, 1.0);
-      const double weight = std::min({axes.x, axes.y, axes.z});
-      if (weight == 0.0) continue;
-      fades.push_back({static_cast<int>(i), weight});
-      sum += weight;
-    }
-    if (sum < kFullWeight) {
-      EngineBlend blend;
-      for (const ProbeFade& f : fades) blend.weights.push_back({f.probe, f.fade});
-      blend.fallbackWeight = 1.0 - sum;
-      return blend;
-    }
-    return normalizedFades(fades);
-  };
+  setBlend(
+      model,
+      [cubes = std::move(cubes)](glm::dvec3 x, glm::dvec3) {
+        std::vector<ProbeFade> fades;
+        for (std::size_t i = 0; i < cubes.size(); ++i) {
+          const BoxShape& box = cubes[i].box;
+          const glm::dvec3 unit = glm::conjugate(box.worldFromBox) * (x - box.centerMeters) /
+                                  (2.0 * box.halfExtentsMeters);
+          const glm::dvec3 falloff = glm::max(cubes[i].falloff, kSmallestFalloff);
+          const glm::dvec3 axes =
+              glm::clamp((1.0 - 2.0 * glm::abs(unit)) / (2.0 * falloff), 0.0, 1.0);
+          const double weight = std::min({axes.x, axes.y, axes.z});
+          if (weight == 0.0) continue;
+          fades.push_back({static_cast<int>(i), weight});
+        }
+        return fades;
+      },
+      [](std::span<const ProbeFade> fades) {
+        double sum = 0.0;
+        for (const ProbeFade& f : fades) sum += f.fade;
+        if (sum < kFullWeight) {
+          EngineBlend blend;
+          for (const ProbeFade& f : fades) blend.weights.push_back({f.probe, f.fade});
+          blend.fallbackWeight = 1.0 - sum;
+          return blend;
+        }
+        return normalizedFades(fades);
+      });
   return model;
 }
 

@@ -12,11 +12,6 @@
 
 namespace probeproxy {
 
-struct ProbeFade {
-  int probe = 0;      // index into EngineModel::probes
-  double fade = 0.0;  // the probe's own weight at the point, in [0, 1]
-};
-
 // Indices 0 .. count - 1 by `key(i)` ascending, ties in index order: the order an engine visits
 // its probes in, fixed once for the level.
 template <typename Key>

@@ -72,10 +72,12 @@ EngineModel eeveeModel(const RuntimeExport& presets) {
   // The bake's bubble sort puts the largest inverse scale (the smallest influence) first.
   std::vector<int> order = orderedBy(
       held.size(), [&](int i) { return -inverseScale(held[static_cast<std::size_t>(i)]); });
-  model.blend = [held = std::move(held), order = std::move(order)](glm::dvec3 x, glm::dvec3) {
-    return fillToOne(fadesInOrder(order, [&](std::size_t i) { return attenuation(held[i], x); }),
-                     kFull);
-  };
+  setBlend(
+      model,
+      [held = std::move(held), order = std::move(order)](glm::dvec3 x, glm::dvec3) {
+        return fadesInOrder(order, [&](std::size_t i) { return attenuation(held[i], x); });
+      },
+      [](std::span<const ProbeFade> ordered) { return fillToOne(ordered, kFull); });
   return model;
 }
 

@@ -22,6 +22,7 @@
 #include <functional>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace probeproxy {
@@ -75,13 +76,35 @@ struct EngineBlend {
   double fallbackWeight = 1.0;        // the sky / ambient's share: 1 - sum(weights), >= 0
 };
 
+struct ProbeFade {
+  int probe = 0;      // index into EngineModel::probes
+  double fade = 0.0;  // the probe's own weight at the point, in [0, 1]
+};
+
 struct EngineModel {
   Engine engine = Engine::Generic;
   std::vector<EngineProbe> probes;
   // The blend at a shaded point x seen from a camera at `eye` (Godot 4 orders probes by their
   // depth from the camera). Deterministic; safe to call from many threads.
   std::function<EngineBlend(glm::dvec3 xMeters, glm::dvec3 eyeMeters)> blend;
+  // The same blend in its two steps, so that some of the probes can be blended without a new
+  // model (an engine's layout weighing which probes to keep): each probe's own fade at x, the
+  // positive ones in the order the engine visits them, and how the engine composes such a
+  // list; blend(x, eye) is compose(fades(x, eye)). Empty for the generic model, whose weights
+  // are normalized over the most influential volumes and so not composed one by one.
+  std::function<std::vector<ProbeFade>(glm::dvec3 xMeters, glm::dvec3 eyeMeters)> fades;
+  std::function<EngineBlend(std::span<const ProbeFade> ordered)> compose;
 };
+
+// Sets the model's fades and composition, and its blend as the two in turn.
+template <typename Fades, typename Compose>
+void setBlend(EngineModel& model, Fades fades, Compose compose) {
+  model.fades = std::move(fades);
+  model.compose = std::move(compose);
+  model.blend = [fades = model.fades, compose = model.compose](glm::dvec3 x, glm::dvec3 eye) {
+    return compose(fades(x, eye));
+  };
+}
 
 // The generic model over given shapes: Lagarde's or Enlighten's weights (core/blend/
 // blend_weights.h) taken kBlendLiftMeters above the floor point, each probe looked up through

@@ -23,21 +23,24 @@ EngineModel godot3Model(const RuntimeExport& presets) {
   EngineModel model;
   model.engine = Engine::Godot3;
   model.probes = std::move(held.probes);
-  model.blend = [boxes = std::move(held.boxes)](glm::dvec3 x, glm::dvec3) {
-    std::vector<ProbeFade> fades;
-    for (std::size_t i = 0; i < boxes.size(); ++i) {
-      const BoxShape& box = boxes[i].box;
-      const std::optional<glm::dvec3> local = godotLocalPosition(box, x);
-      if (!local) continue;
-      const glm::dvec3 inner = glm::abs(*local / box.halfExtentsMeters);
-      double blend = std::max({inner.x, inner.y, inner.z});
-      blend = glm::length(inner) * (1.0 - blend) + blend * blend;  // mix(length, blend, blend)
-      blend *= blend;
-      blend = std::max(0.0, 1.0 - blend);
-      fades.push_back({static_cast<int>(i), blend});
-    }
-    return normalizedFades(fades);
-  };
+  setBlend(
+      model,
+      [boxes = std::move(held.boxes)](glm::dvec3 x, glm::dvec3) {
+        std::vector<ProbeFade> fades;
+        for (std::size_t i = 0; i < boxes.size(); ++i) {
+          const BoxShape& box = boxes[i].box;
+          const std::optional<glm::dvec3> local = godotLocalPosition(box, x);
+          if (!local) continue;
+          const glm::dvec3 inner = glm::abs(*local / box.halfExtentsMeters);
+          double blend = std::max({inner.x, inner.y, inner.z});
+          blend = glm::length(inner) * (1.0 - blend) + blend * blend;  // mix(length, blend, blend)
+          blend *= blend;
+          blend = std::max(0.0, 1.0 - blend);
+          if (blend > 0.0) fades.push_back({static_cast<int>(i), blend});
+        }
+        return fades;
+      },
+      normalizedFades);
   return model;
 }
 

@@ -28,36 +28,41 @@ EngineModel godot4Model(const RuntimeExport& presets) {
   EngineModel model;
   model.engine = Engine::Godot4;
   model.probes = std::move(held.probes);
-  model.blend = [boxes = std::move(held.boxes)](glm::dvec3 x, glm::dvec3 eye) {
-    struct Reached {
-      ProbeFade fade;
-      double depth;
-    };
-    std::vector<Reached> reached;
-    const glm::dvec3 forward = glm::normalize(x - eye);
-    for (std::size_t i = 0; i < boxes.size(); ++i) {
-      const BoxShape& box = boxes[i].box;
-      const std::optional<glm::dvec3> local = godotLocalPosition(box, x);
-      if (!local) continue;
-      double blend = 1.0;
-      if (boxes[i].fadeMeters != 0.0) {
-        double product = 1.0;
-        for (int axis = 0; axis < 3; ++axis) {
-          const double extent = box.halfExtentsMeters[axis];
-          const double distance = std::min(boxes[i].fadeMeters, extent);
-          const double into = (std::abs((*local)[axis]) - extent + distance) / distance;
-          product *= std::clamp(1.0 - into, 0.0, 1.0);
+  setBlend(
+      model,
+      [boxes = std::move(held.boxes)](glm::dvec3 x, glm::dvec3 eye) {
+        struct Reached {
+          ProbeFade fade;
+          double depth;
+        };
+        std::vector<Reached> reached;
+        const glm::dvec3 forward = glm::normalize(x - eye);
+        for (std::size_t i = 0; i < boxes.size(); ++i) {
+          const BoxShape& box = boxes[i].box;
+          const std::optional<glm::dvec3> local = godotLocalPosition(box, x);
+          if (!local) continue;
+          double blend = 1.0;
+          if (boxes[i].fadeMeters != 0.0) {
+            double product = 1.0;
+            for (int axis = 0; axis < 3; ++axis) {
+              const double extent = box.halfExtentsMeters[axis];
+              const double distance = std::min(boxes[i].fadeMeters, extent);
+              const double into = (std::abs((*local)[axis]) - extent + distance) / distance;
+              product *= std::clamp(1.0 - into, 0.0, 1.0);
+            }
+            blend = product * product;
+          }
+          if (blend > 0.0)
+            reached.push_back(
+                {{static_cast<int>(i), blend}, glm::dot(box.centerMeters - eye, forward)});
         }
-        blend = product * product;
-      }
-      reached.push_back({{static_cast<int>(i), blend}, glm::dot(box.centerMeters - eye, forward)});
-    }
-    std::stable_sort(reached.begin(), reached.end(),
-                     [](const Reached& a, const Reached& b) { return a.depth > b.depth; });
-    std::vector<ProbeFade> ordered;
-    for (const Reached& r : reached) ordered.push_back(r.fade);
-    return upToLargestFade(ordered);
-  };
+        std::stable_sort(reached.begin(), reached.end(),
+                         [](const Reached& a, const Reached& b) { return a.depth > b.depth; });
+        std::vector<ProbeFade> ordered;
+        for (const Reached& r : reached) ordered.push_back(r.fade);
+        return ordered;
+      },
+      upToLargestFade);
   return model;
 }
 

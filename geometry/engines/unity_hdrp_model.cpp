@@ -75,10 +75,12 @@ EngineModel unityHdrpModel(const RuntimeExport& presets) {
   }
   std::vector<int> order = orderedBy(
       held.size(), [&](int i) { return influenceVolume(held[static_cast<std::size_t>(i)]); });
-  model.blend = [held = std::move(held), order = std::move(order)](glm::dvec3 x, glm::dvec3) {
-    return fillToOne(
-        fadesInOrder(order, [&](std::size_t i) { return hdrpInfluenceWeight(held[i], x); }));
-  };
+  setBlend(
+      model,
+      [held = std::move(held), order = std::move(order)](glm::dvec3 x, glm::dvec3) {
+        return fadesInOrder(order, [&](std::size_t i) { return hdrpInfluenceWeight(held[i], x); });
+      },
+      [](std::span<const ProbeFade> ordered) { return fillToOne(ordered); });
   return model;
 }
 

@@ -55,15 +55,18 @@ EngineModel unityModel(const RuntimeExport& presets) {
     const glm::dvec3 h = held[static_cast<std::size_t>(i)].box.halfExtentsMeters;
     return h.x * h.y * h.z;
   });
-  model.blend = [held = std::move(held), order = std::move(order)](glm::dvec3 x, glm::dvec3) {
-    return frontToBack(fadesInOrder(order, [&](std::size_t i) {
-      const BoxShape& box = held[i].box;
-      const glm::dvec3 low = box.centerMeters - box.halfExtentsMeters;
-      const glm::dvec3 high = box.centerMeters + box.halfExtentsMeters;
-      const glm::dvec3 outside = glm::max(glm::max(x - high, low - x), glm::dvec3(0.0));
-      return std::clamp(1.0 - glm::length(outside) / held[i].fadeMeters, 0.0, 1.0);
-    }));
-  };
+  setBlend(
+      model,
+      [held = std::move(held), order = std::move(order)](glm::dvec3 x, glm::dvec3) {
+        return fadesInOrder(order, [&](std::size_t i) {
+          const BoxShape& box = held[i].box;
+          const glm::dvec3 low = box.centerMeters - box.halfExtentsMeters;
+          const glm::dvec3 high = box.centerMeters + box.halfExtentsMeters;
+          const glm::dvec3 outside = glm::max(glm::max(x - high, low - x), glm::dvec3(0.0));
+          return std::clamp(1.0 - glm::length(outside) / held[i].fadeMeters, 0.0, 1.0);
+        });
+      },
+      frontToBack);
   return model;
 }
 

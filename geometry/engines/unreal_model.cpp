@@ -93,11 +93,12 @@ EngineModel unrealModel(const RuntimeExport& presets) {
   }
   std::vector<int> order = orderedBy(
       captures.size(), [&](int i) { return captures[static_cast<std::size_t>(i)].radiusMeters; });
-  model.blend = [captures = std::move(captures), order = std::move(order)](glm::dvec3 x,
-                                                                           glm::dvec3) {
-    return frontToBack(
-        fadesInOrder(order, [&](std::size_t i) { return distanceAlpha(captures[i], x); }));
-  };
+  setBlend(
+      model,
+      [captures = std::move(captures), order = std::move(order)](glm::dvec3 x, glm::dvec3) {
+        return fadesInOrder(order, [&](std::size_t i) { return distanceAlpha(captures[i], x); });
+      },
+      frontToBack);
   return model;
 }
 

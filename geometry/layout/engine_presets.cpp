@@ -1,11 +1,14 @@
 #include "geometry/layout/engine_presets.h"
 
 #include "geometry/engines/engine_model.h"
+#include "geometry/layout/engine_preset_options.h"
 
 #include <cmath>
 #include <deque>
 #include <stdexcept>
+#include <string>
 #include <tuple>
+#include <variant>
 
 namespace probeproxy {
 
@@ -20,7 +23,7 @@ bool better(const SurveyFigures& a, const SurveyFigures& b) {
   return std::make_tuple(badFloorShare(a), pa) < std::make_tuple(badFloorShare(b), pb);
 }
 
-// The entries of `engine` in `from`, into `to`.
+// The entries of `engine` in `from`, into `to` (from {}: the engine's entries removed).
 void takeEngine(Engine engine, const RuntimeEngines& from, RuntimeEngines& to) {
   switch (engine) {
     case Engine::Generic:
@@ -79,6 +82,11 @@ std::vector<EnginePresetPolicy> enginePresetPolicies(Engine engine) {
 
 namespace {
 
+// As written to proxies.json and read back: the numbers the engine gets.
+RuntimeExport asWritten(const RuntimeExport& presets) {
+  return parseRuntimeExport(runtimeExportJson(presets), kProxiesJsonName);
+}
+
 // The presets each policy makes, as proxies.json will read them back (the engine numbers
 // rounded as written), made once however many engines try the policy.
 class PresetsByPolicy {
@@ -89,11 +97,12 @@ class PresetsByPolicy {
   const RuntimeExport& operator()(const EnginePresetPolicy& policy) {
     for (const auto& [made, presets] : made_)
       if (made == policy) return presets;
-    made_.emplace_back(
-        policy, parseRuntimeExport(runtimeExportJson(makeRuntimeExport(scene_, builds_, policy)),
-                                   kProxiesJsonName));
+    made_.emplace_back(policy, asWritten(makeRuntimeExport(scene_, builds_, policy)));
     return made_.back().second;
   }
+
+  const Scene& scene() const { return scene_; }
+  const std::vector<ProbeProxyBuild>& builds() const { return builds_; }
 
  private:
   const Scene& scene_;
@@ -101,10 +110,111 @@ class PresetsByPolicy {
   std::deque<std::pair<EnginePresetPolicy, RuntimeExport>> made_;  // stable references
 };
 
+// The export of `engine`'s presets under `policy` with each probe's box as `boxFrom` says.
+RuntimeExport enginePresets(Engine engine, const Scene& scene,
+                            const std::vector<ProbeProxyBuild>& builds,
+                            const EnginePresetPolicy& policy, std::span<const int> boxFrom) {
+  if (boxFrom.empty()) return makeRuntimeExport(scene, builds, policy);
+  std::vector<ProbeProxyBuild> boxed = builds;
+  for (std::size_t i = 0; i < boxed.size(); ++i) {
+    if (boxFrom[i] < 0) continue;
+    // The candidate alone and kept: the export takes the kept proxy's box.
+    const ProxyCandidate box = boxed[i].candidates.at(static_cast<std::size_t>(boxFrom[i]));
+    boxed[i].candidates = {box};
+    boxed[i].kept = 0;
+  }
+  RuntimeExport presets = makeRuntimeExport(scene, boxed, policy);
+  for (std::size_t i = 0; i < presets.probes.size(); ++i)
+    if (boxFrom[i] == kLeftOut) takeEngine(engine, RuntimeEngines{}, presets.probes[i].engines);
+  return presets;
+}
+
+// The name of the build candidate `engine`'s entry was made from; empty where it has none.
+std::string entrySource(Engine engine, const RuntimeEngines& e) {
+  const auto name = [](const auto& entry) {
+    return entry ? entry->source.candidate : std::string();
+  };
+  switch (engine) {
+    case Engine::Generic:
+      return {};
+    case Engine::Unity:
+      return name(e.unity);
+    case Engine::UnityHdrp:
+      return name(e.unityHdrp);
+    case Engine::Unreal:
+      return name(e.unrealBox);
+    case Engine::Godot3:
+      return name(e.godot);
+    case Engine::Godot4:
+      return name(e.godot4);
+    case Engine::Bevy:
+      return name(e.bevy);
+    case Engine::Eevee:
+      return name(e.eevee);
+  }
+  return {};
+}
+
+// Each probe's box for `engine` under `policy`: its default one, another its build fitted, or
+// none, whichever the engine renders the trial floor best with (engine_preset_options.h).
+std::vector<int> chooseEngineBoxes(Engine engine, const Scene& scene,
+                                   const std::vector<ProbeProxyBuild>& builds,
+                                   const EnginePresetPolicy& policy, const LevelRayCaster& level,
+                                   const SurveyFloor& trialFloor, const SurveyOptions& options) {
+  // Every option as a probe of its own: each probe's default box, then each other box.
+  const RuntimeExport defaults = makeRuntimeExport(scene, builds, policy);
+  Scene optionScene = scene;
+  optionScene.probes.clear();
+  std::vector<ProbeProxyBuild> optionBuilds;
+  std::vector<int> probeOfOption, boxOfOption;
+  for (std::size_t i = 0; i < builds.size(); ++i) {
+    const auto& candidates = builds[i].candidates;
+    for (int k = kDefaultBox; k < static_cast<int>(candidates.size()); ++k) {
+      if (k >= 0 &&
+          (!std::holds_alternative<BoxShape>(candidates[static_cast<std::size_t>(k)].shape) ||
+           candidateName(candidates[static_cast<std::size_t>(k)]) ==
+               entrySource(engine, defaults.probes[i].engines)))
+        continue;
+      ProbeProxyBuild option = builds[i];
+      if (k >= 0) {
+        option.candidates = {candidates[static_cast<std::size_t>(k)]};
+        option.kept = 0;
+      }
+      // Named apart: an export holds each name once.
+      option.probe.append("/").append(std::to_string(k));
+      optionScene.probes.push_back(scene.probes[i]);
+      optionScene.probes.back().name = option.probe;
+      optionBuilds.push_back(std::move(option));
+      probeOfOption.push_back(static_cast<int>(i));
+      boxOfOption.push_back(k);
+    }
+  }
+  const EngineModel model =
+      engineModel(engine, makeRuntimeExport(optionScene, optionBuilds, policy), options.blend);
+  // The model holds the options with an entry for the engine; each its probe and box.
+  std::vector<int> probeOf, start(builds.size(), -1);
+  for (std::size_t j = 0; j < model.probes.size(); ++j) {
+    const std::size_t option = static_cast<std::size_t>(model.probes[j].sceneProbe);
+    probeOf.push_back(probeOfOption[option]);
+    if (boxOfOption[option] == kDefaultBox)
+      start[static_cast<std::size_t>(probeOfOption[option])] = static_cast<int>(j);
+  }
+  const std::vector<int> chosen =
+      chooseEngineOptions(model, probeOf, start, trialFloor, level, options.toleranceDeg);
+  std::vector<int> boxFrom(builds.size(), kDefaultBox);
+  for (std::size_t i = 0; i < chosen.size(); ++i) {
+    if (chosen[i] == start[i]) continue;
+    boxFrom[i] = chosen[i] < 0 ? kLeftOut
+                               : boxOfOption[static_cast<std::size_t>(
+                                     model.probes[static_cast<std::size_t>(chosen[i])].sceneProbe)];
+  }
+  return boxFrom;
+}
+
 EnginePresetChoice choose(Engine engine, PresetsByPolicy& presetsOf, const LevelRayCaster& level,
                           const SurveyFloor& floor, const SurveyFloor& trialFloor,
-                          const SurveyOptions& survey,
-                          std::span<const EnginePresetPolicy> policies) {
+                          const SurveyOptions& survey, std::span<const EnginePresetPolicy> policies,
+                          bool chooseBoxes) {
   if (engine == Engine::Generic)
     throw std::invalid_argument("choosePresetsForEngine: the generic model has no presets");
   SurveyOptions options = survey;
@@ -121,33 +231,37 @@ EnginePresetChoice choose(Engine engine, PresetsByPolicy& presetsOf, const Level
       bestTrial = trial.figures;
     }
   }
-  best.survey = surveyModel(engineModel(engine, presetsOf(best.policy), options.blend), floor,
-                            level, options);
+  if (chooseBoxes)
+    best.boxFrom = chooseEngineBoxes(engine, presetsOf.scene(), presetsOf.builds(), best.policy,
+                                     level, trialFloor, options);
+  const RuntimeExport kept =
+      best.boxFrom.empty() ? presetsOf(best.policy)
+                           : asWritten(enginePresets(engine, presetsOf.scene(), presetsOf.builds(),
+                                                     best.policy, best.boxFrom));
+  best.survey = surveyModel(engineModel(engine, kept, options.blend), floor, level, options);
   return best;
 }
 
 }  // namespace
 
-EnginePresetChoice choosePresetsForEngine(Engine engine, const Scene& scene,
-                                          const std::vector<ProbeProxyBuild>& builds,
-                                          const LevelRayCaster& level, const SurveyFloor& floor,
-                                          const SurveyFloor& trialFloor,
-                                          const SurveyOptions& survey,
-                                          std::span<const EnginePresetPolicy> policies) {
+EnginePresetChoice choosePresetsForEngine(
+    Engine engine, const Scene& scene, const std::vector<ProbeProxyBuild>& builds,
+    const LevelRayCaster& level, const SurveyFloor& floor, const SurveyFloor& trialFloor,
+    const SurveyOptions& survey, std::span<const EnginePresetPolicy> policies, bool chooseBoxes) {
   PresetsByPolicy presetsOf(scene, builds);
-  return choose(engine, presetsOf, level, floor, trialFloor, survey, policies);
+  return choose(engine, presetsOf, level, floor, trialFloor, survey, policies, chooseBoxes);
 }
 
 std::vector<EnginePresetChoice> choosePresetsForEngines(
     std::span<const Engine> engines, const Scene& scene, const std::vector<ProbeProxyBuild>& builds,
     const LevelRayCaster& level, const SurveyFloor& floor, const SurveyFloor& trialFloor,
-    const SurveyOptions& survey) {
+    const SurveyOptions& survey, bool chooseBoxes) {
   PresetsByPolicy presetsOf(scene, builds);  // most policies are tried by every engine
   std::vector<EnginePresetChoice> choices;
   for (const Engine engine : engines) {
     if (engine == Engine::Generic) continue;
-    choices.push_back(
-        choose(engine, presetsOf, level, floor, trialFloor, survey, enginePresetPolicies(engine)));
+    choices.push_back(choose(engine, presetsOf, level, floor, trialFloor, survey,
+                             enginePresetPolicies(engine), chooseBoxes));
   }
   return choices;
 }
@@ -156,7 +270,8 @@ RuntimeExport exportForEngines(const Scene& scene, const std::vector<ProbeProxyB
                                std::span<const EnginePresetChoice> choices) {
   RuntimeExport merged = makeRuntimeExport(scene, builds);
   for (const EnginePresetChoice& choice : choices) {
-    const RuntimeExport own = makeRuntimeExport(scene, builds, choice.policy);
+    const RuntimeExport own =
+        enginePresets(choice.engine, scene, builds, choice.policy, choice.boxFrom);
     for (std::size_t i = 0; i < merged.probes.size(); ++i)
       takeEngine(choice.engine, own.probes[i].engines, merged.probes[i].engines);
   }

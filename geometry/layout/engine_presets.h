@@ -27,9 +27,17 @@ struct EnginePresetTrial {
   SurveyFigures figures;  // under the engine's model, on the trial floor
 };
 
+// The box `build` exports for an engine: the kept proxy's, else the best of the build's boxes.
+inline constexpr int kDefaultBox = -1;
+inline constexpr int kLeftOut = -2;
+
 struct EnginePresetChoice {
   Engine engine = Engine::Unity;
-  EnginePresetPolicy policy;              // the one kept
+  EnginePresetPolicy policy;  // the one kept
+  // Per scene probe, what its entry for the engine is made from (engine_preset_options.h):
+  // kDefaultBox, a build candidate's index (that box), or kLeftOut (no entry: the engine
+  // renders the level better without the probe). Empty: every probe kDefaultBox.
+  std::vector<int> boxFrom;
   SurveyResult survey;                    // of its presets under the engine's model
   std::vector<EnginePresetTrial> trials;  // every policy tried, in order
 };
@@ -43,24 +51,25 @@ struct EnginePresetChoice {
 std::vector<EnginePresetPolicy> enginePresetPolicies(Engine engine);
 
 // `engine` is not Generic; `floor` is the layout's prepared survey floor, `trialFloor` the same
-// floor with fewer samples per cell, on which the policies are compared (the kept one is then
-// surveyed on `floor`); `survey` their options; `policies` those to try.
-EnginePresetChoice choosePresetsForEngine(Engine engine, const Scene& scene,
-                                          const std::vector<ProbeProxyBuild>& builds,
-                                          const LevelRayCaster& level, const SurveyFloor& floor,
-                                          const SurveyFloor& trialFloor,
-                                          const SurveyOptions& survey,
-                                          std::span<const EnginePresetPolicy> policies);
+// floor with fewer samples per cell, on which the policies are compared and, with
+// `chooseBoxes`, each probe's box for the kept one (another of its build's boxes, or none)
+// chosen; the kept presets are then surveyed on `floor`. `survey`: their options; `policies`:
+// those to try.
+EnginePresetChoice choosePresetsForEngine(
+    Engine engine, const Scene& scene, const std::vector<ProbeProxyBuild>& builds,
+    const LevelRayCaster& level, const SurveyFloor& floor, const SurveyFloor& trialFloor,
+    const SurveyOptions& survey, std::span<const EnginePresetPolicy> policies, bool chooseBoxes);
 
 // Every engine's choice, in the order given (Generic skipped), each from enginePresetPolicies().
 std::vector<EnginePresetChoice> choosePresetsForEngines(
     std::span<const Engine> engines, const Scene& scene, const std::vector<ProbeProxyBuild>& builds,
     const LevelRayCaster& level, const SurveyFloor& floor, const SurveyFloor& trialFloor,
-    const SurveyOptions& survey);
+    const SurveyOptions& survey, bool chooseBoxes);
 
 // The export with each chosen engine's entries made by its kept policy (Unreal's box and
-// sphere captures both by Unreal's), every other entry by the default policy. Each engine has
-// entries of its own (Godot 3's and Godot 4's too), so no choice changes another's.
+// sphere captures both by Unreal's) from the boxes it chose, every other entry by the default
+// policy; no entry for an engine where it left the probe out. Each engine has entries of its own
+// (Godot 3's and Godot 4's too), so no choice changes another's.
 RuntimeExport exportForEngines(const Scene& scene, const std::vector<ProbeProxyBuild>& builds,
                                std::span<const EnginePresetChoice> choices);
 

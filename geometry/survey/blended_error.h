@@ -19,6 +19,9 @@
 #include "geometry/raycast/level_ray_caster.h"
 #include "geometry/survey/survey_result.h"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <span>
 
 namespace probeproxy {
@@ -30,6 +33,54 @@ struct SurveyProbe {  // what the generic blend needs of one probe
   InfluenceVolume influence;
   ProxyShape proxy;
 };
+
+// What one weighted probe shows at a sample: whether its cubemap holds the true hit (Godot's
+// faces stop at their far planes), whether the hit is hidden from its capture point, and its
+// lookup error (NaN: a miss). `hidden` is read only when captured, `errorDeg` only when seen.
+struct ProbeSight {
+  bool captured = true;
+  bool hidden = false;
+  double errorDeg = std::numeric_limits<double>::quiet_NaN();
+};
+
+// A sample's error from its blend (`weights`: each with .probe and .weight) and what each
+// weighted probe shows there (`sightOf(probe)`). A probe whose cubemap stops short of the true
+// hit shows its clear colour there: that weight is the fallback's, as where no probe reaches.
+template <typename Weights, typename SightOf>
+SurveySampleError sampleErrorOfBlend(const Weights& weights, double fallbackWeight,
+                                     const SightOf& sightOf) {
+  SurveySampleError e;
+  e.uncoveredWeight = fallbackWeight;
+  if (weights.empty()) {
+    e.uncovered = true;
+    e.uncoveredWeight = 1.0;
+    return e;
+  }
+  double weightedSum = 0.0, visibleWeight = 0.0;
+  for (const auto& w : weights) {
+    const ProbeSight sight = sightOf(w.probe);
+    if (!sight.captured) {
+      e.uncoveredWeight += w.weight;
+      continue;
+    }
+    if (sight.hidden) {
+      e.occludedWeight += w.weight;
+      continue;
+    }
+    weightedSum += w.weight * (std::isnan(sight.errorDeg) ? kMissErrorDeg : sight.errorDeg);
+    visibleWeight += w.weight;
+  }
+  if (visibleWeight > 0.0) {
+    e.errorDeg = weightedSum / visibleWeight;
+  } else {
+    e.occludedWeight = std::max(0.0, 1.0 - e.uncoveredWeight);  // the rest, up to rounding
+  }
+  return e;
+}
+
+// What probe `probe` of the model shows at the sample, computed as far as it is read.
+ProbeSight engineProbeSight(const LevelRayCaster& level, const EngineProbe& probe,
+                            const ReflectionSample& sample);
 
 // The generic model (Lagarde or Enlighten over the probes' influence volumes, kBlendLiftMeters
 // above the floor point). `volumes[i]` is `probes[i].influence` (passed apart so blendWeights

@@ -218,6 +218,16 @@ std::string layoutReportJson(const LayoutJobOptions& o, const LayoutJobResult& r
         trial["uncovered_share"] = number(t.figures.uncoveredShare);
         e["tried"].push_back(trial);
       }
+      // Where the engine takes another box than `build` exports, or none: probe by probe.
+      e["left_out"] = nlohmann::ordered_json::array();
+      e["other_box"] = nlohmann::ordered_json::object();
+      for (std::size_t i = 0; i < c.boxFrom.size(); ++i) {
+        const std::string& name = r.scene.probes[i].name;
+        if (c.boxFrom[i] == kLeftOut) e["left_out"].push_back(name);
+        if (c.boxFrom[i] >= 0)
+          e["other_box"][name] =
+              candidateName(r.builds[i].candidates[static_cast<std::size_t>(c.boxFrom[i])]);
+      }
       SurveyResult named = c.survey;
       named.scene = baselineName(o.layout.baseline);
       e["survey"] = nlohmann::ordered_json::parse(surveyReportJson(named));
@@ -358,8 +368,10 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
     trial.samplesPerCell = std::min(survey.samplesPerCell, kEngineTrialSamplesPerCell);
     const SurveyFloor trialFloor = prepareSurveyFloor(seeds, rayCaster, trial);
     r.engines =
-        choosePresetsForEngines(o.engines, r.scene, r.builds, rayCaster, floor, trialFloor, survey);
+        choosePresetsForEngines(o.engines, r.scene, r.builds, rayCaster, floor, trialFloor, survey,
+                                /*chooseBoxes=*/o.layout.baseline == LayoutBaseline::None);
     if (o.engines.size() == 1 && !r.engines.empty()) r.survey = r.engines.front().survey;
+    stageDone("engines");
   }
   r.survey.scene = baselineName(o.layout.baseline);
   r.json = layoutReportJson(o, r);

@@ -1,0 +1,103 @@
+// Which of each probe's boxes an engine gets (geometry/layout/engine_preset_options.h): in a
+// box room whose exact box is known, a box that cuts the room short is left out or traded for
+// the room's own, and the floor surveyed under the engine gets better by what the search saw.
+
+#include "geometry/layout/engine_preset_options.h"
+#include "geometry/builtin/box_room.h"
+#include "geometry/engines/engine_model.h"
+#include "geometry/survey/run_survey.h"
+
+#include <gtest/gtest.h>
+
+namespace probeproxy {
+namespace {
+
+constexpr glm::dquat kUnturned{1, 0, 0, 0};
+const BoxShape kRoom{{5.0, 2.0, 1.5}, {5.0, 2.0, 1.5}, kUnturned};      // [0, 10] x [0, 4] x [0, 3]
+const BoxShape kEastHalf{{8.0, 2.0, 1.5}, {2.0, 2.0, 1.5}, kUnturned};  // cuts the room at x 6
+
+RuntimeProbe unityProbe(const std::string& name, const BoxShape& box, glm::dvec3 capture) {
+  BoxInfluence influence;
+  influence.centerMeters = box.centerMeters;
+  influence.halfExtentsMeters = box.halfExtentsMeters;
+  influence.innerHalfExtentsMeters = box.halfExtentsMeters - 0.01;  // a 1 cm fade
+  RuntimeProbe p;
+  p.name = name;
+  p.captureMeters = capture;
+  p.method = Method::Aabb;
+  p.box = box;
+  p.influence = influence;
+  p.engines.unity = unityReflectionProbe(box, capture, influence);
+  return p;
+}
+
+RuntimeExport exportOf(std::vector<RuntimeProbe> probes) {
+  RuntimeExport e;
+  e.probes = std::move(probes);
+  return e;
+}
+
+struct Room {
+  LevelRayCaster level{boxRoom({0, 0, 0}, {10, 4, 3})};
+  SurveyOptions options;
+  SurveyFloor floor;
+  Room() {
+    options.engine = Engine::Unity;
+    options.samplesPerCell = 2;
+    const std::vector<glm::dvec3> seeds = {{5.0, 2.0, 1.5}};
+    floor = prepareSurveyFloor(seeds, level, options);
+  }
+  double badShare(const RuntimeExport& presets) const {
+    const SurveyFigures f = surveyModel(unityModel(presets), floor, level, options).figures;
+    return f.overToleranceShare + f.uncoveredShare;
+  }
+};
+
+const glm::dvec3 kWest{2.5, 2.0, 1.5}, kEast{8.0, 2.0, 1.5};
+
+TEST(EnginePresetOptions, AProbeWhoseSmallerBoxCutsTheRoomShortIsLeftOut) {
+  const Room room;
+  // Unity puts the smaller box on top: the east half reflects a wall at x 6 that is not there.
+  const RuntimeExport both =
+      exportOf({unityProbe("west", kRoom, kWest), unityProbe("east", kEastHalf, kEast)});
+  const std::vector<int> probeOf = {0, 1};
+  const std::vector<int> chosen =
+      chooseEngineOptions(unityModel(both), probeOf, {0, 1}, room.floor, room.level, 5.0);
+  EXPECT_EQ(chosen, (std::vector<int>{0, -1}));
+  const double before = room.badShare(both);
+  const double after = room.badShare(exportOf({unityProbe("west", kRoom, kWest)}));
+  // Rays from the east half that meet the cut before the ceiling: a few percent of the floor.
+  EXPECT_GT(before, 0.03);
+  EXPECT_LT(after, 0.1 * before);  // the room's exact box from anywhere in it
+}
+
+TEST(EnginePresetOptions, AProbeTakesTheBoxOfTheRoomOverOneThatCutsItShort) {
+  const Room room;
+  // One probe, two of its boxes: the cut one it starts with, and the room's.
+  const RuntimeExport options =
+      exportOf({unityProbe("east/cut", kEastHalf, kEast), unityProbe("east/room", kRoom, kEast)});
+  const std::vector<int> probeOf = {0, 0};
+  EXPECT_EQ(chooseEngineOptions(unityModel(options), probeOf, {0}, room.floor, room.level, 5.0),
+            (std::vector<int>{1}));
+  // Left out, the whole floor would show the sky: the search does not leave it.
+  EXPECT_EQ(chooseEngineOptions(unityModel(exportOf({unityProbe("east/room", kRoom, kEast)})),
+                                std::vector<int>{0}, {0}, room.floor, room.level, 5.0),
+            (std::vector<int>{0}));
+}
+
+TEST(EnginePresetOptions, TheGenericModelKeepsWhatItStartsWith) {
+  const Room room;
+  const std::vector<glm::dvec3> captures = {kWest, kEast};
+  const std::vector<InfluenceVolume> influences = {unityProbe("west", kRoom, kWest).influence,
+                                                   unityProbe("east", kEastHalf, kEast).influence};
+  const std::vector<ProxyShape> shapes = {kRoom, kEastHalf};
+  const EngineModel generic = genericModel(captures, influences, shapes, BlendOptions{});
+  EXPECT_EQ(
+      chooseEngineOptions(generic, std::vector<int>{0, 1}, {0, 1}, room.floor, room.level, 5.0),
+      (std::vector<int>{0, 1}));
+  EXPECT_THROW(chooseEngineOptions(generic, std::vector<int>{0}, {0}, room.floor, room.level, 5.0),
+               std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace probeproxy
