@@ -110,19 +110,22 @@ class PresetsByPolicy {
   std::deque<std::pair<EnginePresetPolicy, RuntimeExport>> made_;  // stable references
 };
 
+// The build with its candidate `k` alone, kept: the export then takes that candidate's box.
+ProbeProxyBuild withBoxKept(const ProbeProxyBuild& build, std::size_t k) {
+  ProbeProxyBuild boxed = build;
+  boxed.candidates = {build.candidates.at(k)};
+  boxed.kept = 0;
+  return boxed;
+}
+
 // The export of `engine`'s presets under `policy` with each probe's box as `boxFrom` says.
 RuntimeExport enginePresets(Engine engine, const Scene& scene,
                             const std::vector<ProbeProxyBuild>& builds,
                             const EnginePresetPolicy& policy, std::span<const int> boxFrom) {
   if (boxFrom.empty()) return makeRuntimeExport(scene, builds, policy);
   std::vector<ProbeProxyBuild> boxed = builds;
-  for (std::size_t i = 0; i < boxed.size(); ++i) {
-    if (boxFrom[i] < 0) continue;
-    // The candidate alone and kept: the export takes the kept proxy's box.
-    const ProxyCandidate box = boxed[i].candidates.at(static_cast<std::size_t>(boxFrom[i]));
-    boxed[i].candidates = {box};
-    boxed[i].kept = 0;
-  }
+  for (std::size_t i = 0; i < boxed.size(); ++i)
+    if (boxFrom[i] >= 0) boxed[i] = withBoxKept(builds[i], static_cast<std::size_t>(boxFrom[i]));
   RuntimeExport presets = makeRuntimeExport(scene, boxed, policy);
   for (std::size_t i = 0; i < presets.probes.size(); ++i)
     if (boxFrom[i] == kLeftOut) takeEngine(engine, RuntimeEngines{}, presets.probes[i].engines);
@@ -175,11 +178,8 @@ std::vector<int> chooseEngineBoxes(Engine engine, const Scene& scene,
            candidateName(candidates[static_cast<std::size_t>(k)]) ==
                entrySource(engine, defaults.probes[i].engines)))
         continue;
-      ProbeProxyBuild option = builds[i];
-      if (k >= 0) {
-        option.candidates = {candidates[static_cast<std::size_t>(k)]};
-        option.kept = 0;
-      }
+      ProbeProxyBuild option =
+          k >= 0 ? withBoxKept(builds[i], static_cast<std::size_t>(k)) : builds[i];
       // Named apart: an export holds each name once.
       option.probe.append("/").append(std::to_string(k));
       optionScene.probes.push_back(scene.probes[i]);

@@ -10,6 +10,7 @@
 #include "geometry/evaluation/evaluate_shape.h"
 #include "geometry/evaluation/reflection_samples.h"
 #include "geometry/survey/blended_error.h"
+#include "tests/unit/engine_test_probes.h"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -31,30 +32,6 @@ BoxInfluence fadingInside(const BoxShape& box) {
   b.worldFromBox = box.worldFromBox;
   b.innerHalfExtentsMeters = box.halfExtentsMeters - 1.0;
   return b;
-}
-
-// A probe with every box engine's preset made from `box`, as `build` exports it.
-RuntimeProbe probeWithPresets(const std::string& name, const BoxShape& box, glm::dvec3 capture,
-                              const InfluenceVolume& influence) {
-  RuntimeProbe p;
-  p.name = name;
-  p.captureMeters = capture;
-  p.method = Method::Aabb;
-  p.box = box;
-  p.influence = influence;
-  p.engines.unity = unityReflectionProbe(box, capture, influence);
-  p.engines.unityHdrp = unityHdrpReflectionProbe(box, capture, influence);
-  p.engines.unrealBox = unrealBoxReflectionCapture(box, capture, influence);
-  p.engines.godot = p.engines.godot4 = godotReflectionProbe(box, capture, influence);
-  p.engines.bevy = bevyLightProbe(box, capture, influence);
-  p.engines.eevee = eeveeReflectionCubemap(box, capture, influence);
-  return p;
-}
-
-RuntimeExport exportOf(std::vector<RuntimeProbe> probes) {
-  RuntimeExport e;
-  e.probes = std::move(probes);
-  return e;
 }
 
 // One probe whose box, influence and capture point are the box's centre.

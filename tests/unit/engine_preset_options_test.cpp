@@ -6,6 +6,7 @@
 #include "geometry/builtin/box_room.h"
 #include "geometry/engines/engine_model.h"
 #include "geometry/survey/run_survey.h"
+#include "tests/unit/engine_test_probes.h"
 
 #include <gtest/gtest.h>
 
@@ -16,25 +17,14 @@ constexpr glm::dquat kUnturned{1, 0, 0, 0};
 const BoxShape kRoom{{5.0, 2.0, 1.5}, {5.0, 2.0, 1.5}, kUnturned};      // [0, 10] x [0, 4] x [0, 3]
 const BoxShape kEastHalf{{8.0, 2.0, 1.5}, {2.0, 2.0, 1.5}, kUnturned};  // cuts the room at x 6
 
+// A probe whose influence is its box with a 1 cm fade, so that Unity's fade outside the box
+// leaves no floor to the sky.
 RuntimeProbe unityProbe(const std::string& name, const BoxShape& box, glm::dvec3 capture) {
   BoxInfluence influence;
   influence.centerMeters = box.centerMeters;
   influence.halfExtentsMeters = box.halfExtentsMeters;
-  influence.innerHalfExtentsMeters = box.halfExtentsMeters - 0.01;  // a 1 cm fade
-  RuntimeProbe p;
-  p.name = name;
-  p.captureMeters = capture;
-  p.method = Method::Aabb;
-  p.box = box;
-  p.influence = influence;
-  p.engines.unity = unityReflectionProbe(box, capture, influence);
-  return p;
-}
-
-RuntimeExport exportOf(std::vector<RuntimeProbe> probes) {
-  RuntimeExport e;
-  e.probes = std::move(probes);
-  return e;
+  influence.innerHalfExtentsMeters = box.halfExtentsMeters - 0.01;
+  return probeWithPresets(name, box, capture, influence);
 }
 
 struct Room {
