@@ -90,8 +90,9 @@ struct EngineModel {
   // The same blend in its two steps, so that some of the probes can be blended without a new
   // model (an engine's layout weighing which probes to keep): each probe's own fade at x, the
   // positive ones in the order the engine visits them, and how the engine composes such a
-  // list; blend(x, eye) is compose(fades(x, eye)). Empty for the generic model, whose weights
-  // are normalized over the most influential volumes and so not composed one by one.
+  // list (its probe numbers are only carried through to the weights: any labels do);
+  // blend(x, eye) is compose(fades(x, eye)). Empty for the generic model, whose weights are
+  // normalized over the most influential volumes and so not composed one by one.
   std::function<std::vector<ProbeFade>(glm::dvec3 xMeters, glm::dvec3 eyeMeters)> fades;
   std::function<EngineBlend(std::span<const ProbeFade> ordered)> compose;
 };
