@@ -160,12 +160,13 @@ std::string entrySource(Engine engine, const RuntimeEngines& e) {
 
 // Each probe's box for `engine` under `policy`: its default one, another its build fitted, or
 // none, whichever the engine renders the trial floor best with (engine_preset_options.h).
+// `defaults` are the policy's presets as the export makes them (each names its source box).
 std::vector<int> chooseEngineBoxes(Engine engine, const Scene& scene,
                                    const std::vector<ProbeProxyBuild>& builds,
-                                   const EnginePresetPolicy& policy, const LevelRayCaster& level,
-                                   const SurveyFloor& trialFloor, const SurveyOptions& options) {
+                                   const EnginePresetPolicy& policy, const RuntimeExport& defaults,
+                                   const LevelRayCaster& level, const SurveyFloor& trialFloor,
+                                   const SurveyOptions& options) {
   // Every option as a probe of its own: each probe's default box, then each other box.
-  const RuntimeExport defaults = makeRuntimeExport(scene, builds, policy);
   Scene optionScene = scene;
   optionScene.probes.clear();
   std::vector<ProbeProxyBuild> optionBuilds;
@@ -233,7 +234,7 @@ EnginePresetChoice choose(Engine engine, PresetsByPolicy& presetsOf, const Level
   }
   if (chooseBoxes)
     best.boxFrom = chooseEngineBoxes(engine, presetsOf.scene(), presetsOf.builds(), best.policy,
-                                     level, trialFloor, options);
+                                     presetsOf(best.policy), level, trialFloor, options);
   const RuntimeExport kept =
       best.boxFrom.empty() ? presetsOf(best.policy)
                            : asWritten(enginePresets(engine, presetsOf.scene(), presetsOf.builds(),
