@@ -56,7 +56,8 @@ def level_figures(probeproxy, scene, work, engines):
                        for k in ("clip_to_influence", "fade_scale", "clear_the_floor",
                                  "cube_about_capture", "influence_inside")},
             "left_out": len(tuned["engines"][engine]["left_out"]),
-            "other_box": len(tuned["engines"][engine]["other_box"])}
+            "other_box": len(tuned["engines"][engine]["other_box"]),
+            "raised": len(tuned["engines"][engine].get("priority", {}))}
     return out
 
 
@@ -96,8 +97,9 @@ def main():
         for level, r in results.items():
             e = r["engines"][engine]
             ratio = e["layout"]["over"] / e["grid"]["over"] if e["grid"]["over"] > 0 else float("nan")
-            probes = "%d (%d, %d) / %d" % (e["layout"]["probes"], e["left_out"], e["other_box"],
-                                           e["grid"]["probes"])
+            probes = "%d (%d, %d%s) / %d" % (
+                e["layout"]["probes"], e["left_out"], e["other_box"],
+                ", %d raised" % e["raised"] if e["raised"] else "", e["grid"]["probes"])
             print("| %s | %s | %s | %s | %s | %.2f |" % (level, cell(e["today"]), cell(e["layout"]),
                                                        cell(e["grid"]), probes, ratio))
 

@@ -16,6 +16,7 @@ EngineBlend frontToBack(std::span<const ProbeFade> ordered) {
   EngineBlend blend;
   double left = 1.0;
   for (const ProbeFade& p : ordered) {
+    if (!(left > 0.0)) break;  // a full probe in front: nothing shows through
     add(blend, p.probe, p.fade * left);
     left *= 1.0 - p.fade;
   }

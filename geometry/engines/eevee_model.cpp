@@ -77,7 +77,7 @@ EngineModel eeveeModel(const RuntimeExport& presets) {
       [held = std::move(held), order = std::move(order)](glm::dvec3 x, glm::dvec3) {
         return fadesInOrder(order, [&](std::size_t i) { return attenuation(held[i], x); });
       },
-      [](std::span<const ProbeFade> ordered) { return fillToOne(ordered, kFull); });
+      [](std::span<const ProbeFade> ordered) { return fillToOne(ordered, kFull); }, kFull);
   return model;
 }
 

@@ -20,6 +20,7 @@
 #include <glm/vec3.hpp>
 
 #include <functional>
+#include <limits>
 #include <optional>
 #include <span>
 #include <utility>
@@ -95,13 +96,23 @@ struct EngineModel {
   // normalized over the most influential volumes and so not composed one by one.
   std::function<std::vector<ProbeFade>(glm::dvec3 xMeters, glm::dvec3 eyeMeters)> fades;
   std::function<EngineBlend(std::span<const ProbeFade> ordered)> compose;
+  // A fade at or over which `compose` gives the probes after it nothing (front to back and up
+  // to the largest fade: 1; fill to one: where it stops); infinity where every probe counts
+  // however full the ones before it are (an average). A search over which probes to keep need
+  // not weigh what lies behind such a probe.
+  double fullFade = std::numeric_limits<double>::infinity();
+  // `compose` is normalizedFades (Godot 3): each probe's weight its fade over the sum of the
+  // fades. A search may then keep a sample's sums and weigh one probe more or less in one step.
+  bool averagesFades = false;
 };
 
-// Sets the model's fades and composition, and its blend as the two in turn.
+// Sets the model's fades and composition (full at `fullFade`), and its blend as the two in turn.
 template <typename Fades, typename Compose>
-void setBlend(EngineModel& model, Fades fades, Compose compose) {
+void setBlend(EngineModel& model, Fades fades, Compose compose,
+              double fullFade = std::numeric_limits<double>::infinity()) {
   model.fades = std::move(fades);
   model.compose = std::move(compose);
+  model.fullFade = fullFade;
   model.blend = [fades = model.fades, compose = model.compose](glm::dvec3 x, glm::dvec3 eye) {
     return compose(fades(x, eye));
   };

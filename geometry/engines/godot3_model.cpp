@@ -41,6 +41,7 @@ EngineModel godot3Model(const RuntimeExport& presets) {
         return fades;
       },
       normalizedFades);
+  model.averagesFades = true;
   return model;
 }
 

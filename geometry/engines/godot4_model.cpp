@@ -62,7 +62,7 @@ EngineModel godot4Model(const RuntimeExport& presets) {
         for (const Reached& r : reached) ordered.push_back(r.fade);
         return ordered;
       },
-      upToLargestFade);
+      upToLargestFade, 1.0);
   return model;
 }
 

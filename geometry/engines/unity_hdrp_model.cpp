@@ -80,7 +80,7 @@ EngineModel unityHdrpModel(const RuntimeExport& presets) {
       [held = std::move(held), order = std::move(order)](glm::dvec3 x, glm::dvec3) {
         return fadesInOrder(order, [&](std::size_t i) { return hdrpInfluenceWeight(held[i], x); });
       },
-      [](std::span<const ProbeFade> ordered) { return fillToOne(ordered); });
+      [](std::span<const ProbeFade> ordered) { return fillToOne(ordered); }, 1.0);
   return model;
 }
 

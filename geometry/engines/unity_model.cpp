@@ -12,8 +12,11 @@
 //     blendDistance): 1 inside the box, fading to 0 blendDistance outside it;
 //   - the probes are drawn over the skybox (a full-screen quad first), each blended over what is
 //     there by its alpha. Unity's C++ side, which sorts them, is not public; we take the order
-//     the Manual describes for overlapping probes (a more important probe "overrides" a less
-//     important one) and, at equal importance, the smaller box drawn later, on top.
+//     the documentation gives for overlapping probes (ScriptReference ReflectionProbe.importance:
+//     "if object is inside both Important and Not Important probe, only Important probe will be
+//     used, when object is leaving Important probe bounding box, it will gradually blend over
+//     Not Important probe": the more important drawn later, on top) and, at equal importance,
+//     the smaller box drawn later, on top.
 // The export writes the measured box shrunk by blendDistance (engine_probes.h), so Unity
 // projects on the measured box; an export without blend_distance leaves Unity's default, 1 m.
 
@@ -25,6 +28,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <utility>
 
 namespace probeproxy {
 
@@ -32,6 +36,7 @@ EngineModel unityModel(const RuntimeExport& presets) {
   EngineModel model;
   model.engine = Engine::Unity;
   std::vector<PresetBox> held;
+  std::vector<int> importance;
   for (std::size_t i = 0; i < presets.probes.size(); ++i) {
     const auto& preset = presets.probes[i].engines.unity;
     if (!preset) continue;
@@ -49,11 +54,13 @@ EngineModel unityModel(const RuntimeExport& presets) {
     }
     model.probes.push_back(std::move(p));
     held.push_back(box);
+    importance.push_back(preset->importance);
   }
-  // Front to back: the smaller box first (drawn last, on top); ties in scene order.
+  // Front to back: the more important first, then the smaller box (drawn last, on top); ties
+  // in scene order.
   std::vector<int> order = orderedBy(held.size(), [&](int i) {
     const glm::dvec3 h = held[static_cast<std::size_t>(i)].box.halfExtentsMeters;
-    return h.x * h.y * h.z;
+    return std::pair(-importance[static_cast<std::size_t>(i)], h.x * h.y * h.z);
   });
   setBlend(
       model,
@@ -66,7 +73,7 @@ EngineModel unityModel(const RuntimeExport& presets) {
           return std::clamp(1.0 - glm::length(outside) / held[i].fadeMeters, 0.0, 1.0);
         });
       },
-      frontToBack);
+      frontToBack, 1.0);
   return model;
 }
 

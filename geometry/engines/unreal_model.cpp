@@ -98,7 +98,7 @@ EngineModel unrealModel(const RuntimeExport& presets) {
       [captures = std::move(captures), order = std::move(order)](glm::dvec3 x, glm::dvec3) {
         return fadesInOrder(order, [&](std::size_t i) { return distanceAlpha(captures[i], x); });
       },
-      frontToBack);
+      frontToBack, 1.0);
   return model;
 }
 

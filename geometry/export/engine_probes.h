@@ -63,6 +63,9 @@ struct EngineSource {
 // and fades to 0 at its other faces, while a floor on the bottom keeps full weight.
 // blendDistance = transitionDistanceMeters(influence), at least kUnityMinBlendMeters (Unity
 // divides by it) and at most half the box's shortest half-extent.
+// importance (ScriptReference ReflectionProbe.importance, default 1): "if object is inside both
+// Important and Not Important probe, only Important probe will be used"; the export writes the
+// default, `layout --engine unity` raises the probes that should win where boxes overlap.
 struct UnityReflectionProbe {
   EngineSource source;
   glm::dvec3 position{0.0};    // Transform.position: the capture point, metres
@@ -70,6 +73,7 @@ struct UnityReflectionProbe {
   glm::dvec3 size{0.0};        // ReflectionProbe.size: full size of the shrunk box, metres
   double blendDistance = 1.0;  // ReflectionProbe.blendDistance, metres
   bool boxProjection = true;
+  int importance = 1;  // ReflectionProbe.importance: the higher drawn over the lower
 };
 
 inline constexpr double kUnityMinBlendMeters = 0.01;

@@ -8,8 +8,10 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <initializer_list>
+#include <limits>
 #include <memory>
 #include <system_error>
 
@@ -67,6 +69,17 @@ std::string string(const At& at) {
 std::size_t count(const At& at) {
   if (!at.value.is_number_unsigned()) failJsonExpected(at.path, "a non-negative integer", at.value);
   return at.value.get<std::size_t>();
+}
+
+// Unity's importance, an int.
+int importance(const At& at) {
+  const bool fits = at.value.is_number_unsigned()
+                        ? at.value.get<std::uint64_t>() <= std::numeric_limits<int>::max()
+                        : at.value.is_number_integer() &&
+                              at.value.get<std::int64_t>() >= std::numeric_limits<int>::min() &&
+                              at.value.get<std::int64_t>() <= std::numeric_limits<int>::max();
+  if (!fits) failJsonExpected(at.path, "an integer (a 32-bit int)", at.value);
+  return at.value.get<int>();
 }
 
 const Json& array(const At& at) {
@@ -255,6 +268,8 @@ RuntimeEngines engines(const At& at) {
     // Exports before blend_distance was written leave Unity its default.
     if (u.has("blend_distance")) p.blendDistance = positiveNumber(u.member("blend_distance"));
     p.boxProjection = boolean(u.member("box_projection"));
+    // Exports before importance was written leave Unity's default.
+    if (u.has("importance")) p.importance = importance(u.member("importance"));
     return p;
   });
   // Entries later exports added: absent reads as none.

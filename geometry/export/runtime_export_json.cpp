@@ -183,7 +183,8 @@ JsonLayoutValue enginesJson(const RuntimeEngines& e) {
                                                 {"center", engineVec3(p.center)},
                                                 {"size", engineVec3(p.size)},
                                                 {"blend_distance", jsonCoordinate(p.blendDistance)},
-                                                {"box_projection", boolJson(p.boxProjection)}};
+                                                {"box_projection", boolJson(p.boxProjection)},
+                                                {"importance", jsonInteger(p.importance)}};
                                       })},
        {"unity_hdrp_reflection_probe",
         optionalEngine<UnityHdrpReflectionProbe>(

@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
+#include <utility>
 
 namespace probeproxy {
 
@@ -21,6 +23,10 @@ struct Reach {  // one option at one sample: its own fade there, and what it sho
 struct SampleReach {
   std::vector<Reach> options;  // in the engine's order
   std::vector<int> active;     // places in `options` of those some probe has, ascending
+  // The place of the first active option whose fade is full (EngineModel::fullFade): the
+  // options after it get nothing here. INT_MAX: none is.
+  int full = std::numeric_limits<int>::max();
+  FadeSums sums;  // of the active options
   double areaSquareMeters = 0.0;
 };
 
@@ -35,6 +41,11 @@ struct Change {
   std::size_t sample = 0;
   int off = -1, on = -1;
 };
+
+// Whether the change happens behind the sample's full option, where it changes nothing.
+bool behindFull(const Change& c, const SampleReach& s) {
+  return (c.off < 0 || c.off > s.full) && (c.on < 0 || c.on > s.full);
+}
 
 // The sample's floor that does not get the reflection right, as SurveyFigures counts it: the
 // fallback's share, and the part its probes shade when their error is over the tolerance.
@@ -82,6 +93,7 @@ class OptionSearch {
       for (std::size_t k = 0; k < reach_[i].options.size(); ++k)
         if (active_[static_cast<std::size_t>(reach_[i].options[k].option)])
           reach_[i].active.push_back(static_cast<int>(k));
+      settle(reach_[i]);
       bad_[i] = badAreaWith(i, -1, -1);
     });
     for (std::size_t i = 0; i < reach_.size(); ++i) {
@@ -132,25 +144,49 @@ class OptionSearch {
     });
   }
 
+  // The sample's full option and sums, from its active options.
+  void settle(SampleReach& s) const {
+    s.full = std::numeric_limits<int>::max();
+    s.sums = {};
+    for (const int k : s.active) {
+      const Reach& r = s.options[static_cast<std::size_t>(k)];
+      if (r.fade >= model_.fullFade && k < s.full) s.full = k;
+      s.sums.add(r.fade, r.sight, +1);
+    }
+  }
+
   // The sample's bad floor with the options now active, the one at place `off` given up and
   // the one at place `on` taken (-1: none).
   double badAreaWith(std::size_t sample, int off, int on) const {
     const SampleReach& s = reach_[sample];
+    if (model_.averagesFades) {
+      FadeSums sums = s.sums;
+      for (const auto& [k, sign] : {std::pair{off, -1}, std::pair{on, +1}})
+        if (k >= 0)
+          sums.add(s.options[static_cast<std::size_t>(k)].fade,
+                   s.options[static_cast<std::size_t>(k)].sight, sign);
+      return badArea(sums.averaged(), s.areaSquareMeters, toleranceDeg_);
+    }
     thread_local std::vector<ProbeFade> fades;  // no allocation per call
     fades.clear();
     // Each fade labelled by its place in s.options (the composition only carries labels), in
-    // the engine's order.
+    // the engine's order, up to the first full one.
+    bool full = false;
     const auto take = [&](int k) {
-      fades.push_back({k, s.options[static_cast<std::size_t>(k)].fade});
+      const double fade = s.options[static_cast<std::size_t>(k)].fade;
+      fades.push_back({k, fade});
+      full = fade >= model_.fullFade;
     };
     for (const int k : s.active) {
       if (on >= 0 && on < k) {
         take(on);
         on = -1;
+        if (full) break;
       }
       if (k != off) take(k);
+      if (full) break;
     }
-    if (on >= 0) take(on);
+    if (on >= 0 && !full) take(on);
     const EngineBlend blend = model_.compose(fades);
     const SurveySampleError e = sampleErrorOfBlend(blend.weights, blend.fallbackWeight, [&](int k) {
       return s.options[static_cast<std::size_t>(k)].sight;
@@ -191,7 +227,8 @@ class OptionSearch {
       if (target == current) continue;
       double gain = 0.0;
       for (const Change& c : changes(current, target))
-        gain += bad_[c.sample] - badAreaWith(c.sample, c.off, c.on);
+        if (!behindFull(c, reach_[c.sample]))
+          gain += bad_[c.sample] - badAreaWith(c.sample, c.off, c.on);
       if (gain > best.gain) best = {target, gain};
     }
     return best;
@@ -208,6 +245,7 @@ class OptionSearch {
       std::vector<int>& active = reach_[c.sample].active;
       if (c.off >= 0) active.erase(std::find(active.begin(), active.end(), c.off));
       if (c.on >= 0) active.insert(std::upper_bound(active.begin(), active.end(), c.on), c.on);
+      settle(reach_[c.sample]);
       bad_[c.sample] = badAreaWith(c.sample, -1, -1);
       for (const Reach& r : reach_[c.sample].options)
         stale_[static_cast<std::size_t>(probeOf_[static_cast<std::size_t>(r.option)])] = 1;

@@ -53,7 +53,17 @@ void takeEngine(Engine engine, const RuntimeEngines& from, RuntimeEngines& to) {
   }
 }
 
+// `engine`'s priority field in `e`, where it has one and an entry.
+void setPriority(Engine engine, RuntimeEngines& e, int priority) {
+  if (engine == Engine::Unity && e.unity) e.unity->importance = priority;
+}
+
 }  // namespace
+
+std::vector<int> enginePriorities(Engine engine) {
+  if (engine == Engine::Unity) return {1, 2};
+  return {};
+}
 
 std::vector<EnginePresetPolicy> enginePresetPolicies(Engine engine) {
   std::vector<EnginePresetPolicy> policies;
@@ -118,17 +128,21 @@ ProbeProxyBuild withBoxKept(const ProbeProxyBuild& build, std::size_t k) {
   return boxed;
 }
 
-// The export of `engine`'s presets under `policy` with each probe's box as `boxFrom` says.
-RuntimeExport enginePresets(Engine engine, const Scene& scene,
-                            const std::vector<ProbeProxyBuild>& builds,
-                            const EnginePresetPolicy& policy, std::span<const int> boxFrom) {
-  if (boxFrom.empty()) return makeRuntimeExport(scene, builds, policy);
+// The export of the engine's presets under the choice's policy, with each probe's box and
+// priority as the choice says.
+RuntimeExport enginePresets(const EnginePresetChoice& choice, const Scene& scene,
+                            const std::vector<ProbeProxyBuild>& builds) {
   std::vector<ProbeProxyBuild> boxed = builds;
-  for (std::size_t i = 0; i < boxed.size(); ++i)
-    if (boxFrom[i] >= 0) boxed[i] = withBoxKept(builds[i], static_cast<std::size_t>(boxFrom[i]));
-  RuntimeExport presets = makeRuntimeExport(scene, boxed, policy);
-  for (std::size_t i = 0; i < presets.probes.size(); ++i)
-    if (boxFrom[i] == kLeftOut) takeEngine(engine, RuntimeEngines{}, presets.probes[i].engines);
+  for (std::size_t i = 0; i < choice.boxFrom.size(); ++i)
+    if (choice.boxFrom[i] >= 0)
+      boxed[i] = withBoxKept(builds[i], static_cast<std::size_t>(choice.boxFrom[i]));
+  RuntimeExport presets = makeRuntimeExport(scene, boxed, choice.policy);
+  for (std::size_t i = 0; i < presets.probes.size(); ++i) {
+    RuntimeEngines& e = presets.probes[i].engines;
+    if (!choice.priority.empty()) setPriority(choice.engine, e, choice.priority[i]);
+    if (!choice.boxFrom.empty() && choice.boxFrom[i] == kLeftOut)
+      takeEngine(choice.engine, RuntimeEngines{}, e);
+  }
   return presets;
 }
 
@@ -158,19 +172,24 @@ std::string entrySource(Engine engine, const RuntimeEngines& e) {
   return {};
 }
 
-// Each probe's box for `engine` under `policy`: its default one, another its build fitted, or
-// none, whichever the engine renders the trial floor best with (engine_preset_options.h).
-// `defaults` are the policy's presets as the export makes them (each names its source box).
-std::vector<int> chooseEngineBoxes(Engine engine, const Scene& scene,
-                                   const std::vector<ProbeProxyBuild>& builds,
-                                   const EnginePresetPolicy& policy, const RuntimeExport& defaults,
-                                   const LevelRayCaster& level, const SurveyFloor& trialFloor,
-                                   const SurveyOptions& options) {
-  // Every option as a probe of its own: each probe's default box, then each other box.
+// Each probe's box and priority for `choice.engine` under `choice.policy`: its default box,
+// another its build fitted, or none, at each of the engine's priorities, whichever the engine
+// renders the trial floor best with (engine_preset_options.h). `defaults` are the policy's
+// presets as the export makes them (each names its source box).
+void chooseProbeEntries(EnginePresetChoice& choice, const Scene& scene,
+                        const std::vector<ProbeProxyBuild>& builds, const RuntimeExport& defaults,
+                        const LevelRayCaster& level, const SurveyFloor& trialFloor,
+                        const SurveyOptions& options) {
+  const Engine engine = choice.engine;
+  std::vector<int> priorities = enginePriorities(engine);
+  const bool prioritised = !priorities.empty();
+  if (!prioritised) priorities = {0};  // one pass, nothing set
+  // Every option as a probe of its own: each probe's default box, then each other box, each at
+  // every priority.
   Scene optionScene = scene;
   optionScene.probes.clear();
   std::vector<ProbeProxyBuild> optionBuilds;
-  std::vector<int> probeOfOption, boxOfOption;
+  std::vector<int> probeOfOption, boxOfOption, priorityOfOption;
   for (std::size_t i = 0; i < builds.size(); ++i) {
     const auto& candidates = builds[i].candidates;
     for (int k = kDefaultBox; k < static_cast<int>(candidates.size()); ++k) {
@@ -179,37 +198,49 @@ std::vector<int> chooseEngineBoxes(Engine engine, const Scene& scene,
            candidateName(candidates[static_cast<std::size_t>(k)]) ==
                entrySource(engine, defaults.probes[i].engines)))
         continue;
-      ProbeProxyBuild option =
-          k >= 0 ? withBoxKept(builds[i], static_cast<std::size_t>(k)) : builds[i];
-      // Named apart: an export holds each name once.
-      option.probe.append("/").append(std::to_string(k));
-      optionScene.probes.push_back(scene.probes[i]);
-      optionScene.probes.back().name = option.probe;
-      optionBuilds.push_back(std::move(option));
-      probeOfOption.push_back(static_cast<int>(i));
-      boxOfOption.push_back(k);
+      for (const int priority : priorities) {
+        ProbeProxyBuild option =
+            k >= 0 ? withBoxKept(builds[i], static_cast<std::size_t>(k)) : builds[i];
+        // Named apart: an export holds each name once.
+        option.probe.append("/").append(std::to_string(k));
+        option.probe.append("/").append(std::to_string(priority));
+        optionScene.probes.push_back(scene.probes[i]);
+        optionScene.probes.back().name = option.probe;
+        optionBuilds.push_back(std::move(option));
+        probeOfOption.push_back(static_cast<int>(i));
+        boxOfOption.push_back(k);
+        priorityOfOption.push_back(priority);
+      }
     }
   }
-  const EngineModel model =
-      engineModel(engine, makeRuntimeExport(optionScene, optionBuilds, policy), options.blend);
-  // The model holds the options with an entry for the engine; each its probe and box.
+  RuntimeExport optionPresets = makeRuntimeExport(optionScene, optionBuilds, choice.policy);
+  if (prioritised)
+    for (std::size_t j = 0; j < optionPresets.probes.size(); ++j)
+      setPriority(engine, optionPresets.probes[j].engines, priorityOfOption[j]);
+  const EngineModel model = engineModel(engine, optionPresets, options.blend);
+  // The model holds the options with an entry for the engine; each its probe, box and priority.
   std::vector<int> probeOf, start(builds.size(), -1);
   for (std::size_t j = 0; j < model.probes.size(); ++j) {
     const std::size_t option = static_cast<std::size_t>(model.probes[j].sceneProbe);
     probeOf.push_back(probeOfOption[option]);
-    if (boxOfOption[option] == kDefaultBox)
+    if (boxOfOption[option] == kDefaultBox && priorityOfOption[option] == priorities.front())
       start[static_cast<std::size_t>(probeOfOption[option])] = static_cast<int>(j);
   }
   const std::vector<int> chosen =
       chooseEngineOptions(model, probeOf, start, trialFloor, level, options.toleranceDeg);
-  std::vector<int> boxFrom(builds.size(), kDefaultBox);
+  choice.boxFrom.assign(builds.size(), kDefaultBox);
+  if (prioritised) choice.priority.assign(builds.size(), priorities.front());
   for (std::size_t i = 0; i < chosen.size(); ++i) {
     if (chosen[i] == start[i]) continue;
-    boxFrom[i] = chosen[i] < 0 ? kLeftOut
-                               : boxOfOption[static_cast<std::size_t>(
-                                     model.probes[static_cast<std::size_t>(chosen[i])].sceneProbe)];
+    if (chosen[i] < 0) {
+      choice.boxFrom[i] = kLeftOut;
+      continue;
+    }
+    const std::size_t option =
+        static_cast<std::size_t>(model.probes[static_cast<std::size_t>(chosen[i])].sceneProbe);
+    choice.boxFrom[i] = boxOfOption[option];
+    if (prioritised) choice.priority[i] = priorityOfOption[option];
   }
-  return boxFrom;
 }
 
 EnginePresetChoice choose(Engine engine, PresetsByPolicy& presetsOf, const LevelRayCaster& level,
@@ -233,12 +264,11 @@ EnginePresetChoice choose(Engine engine, PresetsByPolicy& presetsOf, const Level
     }
   }
   if (chooseBoxes)
-    best.boxFrom = chooseEngineBoxes(engine, presetsOf.scene(), presetsOf.builds(), best.policy,
-                                     presetsOf(best.policy), level, trialFloor, options);
+    chooseProbeEntries(best, presetsOf.scene(), presetsOf.builds(), presetsOf(best.policy), level,
+                       trialFloor, options);
   const RuntimeExport kept =
-      best.boxFrom.empty() ? presetsOf(best.policy)
-                           : asWritten(enginePresets(engine, presetsOf.scene(), presetsOf.builds(),
-                                                     best.policy, best.boxFrom));
+      chooseBoxes ? asWritten(enginePresets(best, presetsOf.scene(), presetsOf.builds()))
+                  : presetsOf(best.policy);
   best.survey = surveyModel(engineModel(engine, kept, options.blend), floor, level, options);
   return best;
 }
@@ -271,8 +301,7 @@ RuntimeExport exportForEngines(const Scene& scene, const std::vector<ProbeProxyB
                                std::span<const EnginePresetChoice> choices) {
   RuntimeExport merged = makeRuntimeExport(scene, builds);
   for (const EnginePresetChoice& choice : choices) {
-    const RuntimeExport own =
-        enginePresets(choice.engine, scene, builds, choice.policy, choice.boxFrom);
+    const RuntimeExport own = enginePresets(choice, scene, builds);
     for (std::size_t i = 0; i < merged.probes.size(); ++i)
       takeEngine(choice.engine, own.probes[i].engines, merged.probes[i].engines);
   }

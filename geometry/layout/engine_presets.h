@@ -38,9 +38,18 @@ struct EnginePresetChoice {
   // kDefaultBox, a build candidate's index (that box), or kLeftOut (no entry: the engine
   // renders the level better without the probe). Empty: every probe kDefaultBox.
   std::vector<int> boxFrom;
+  // Per scene probe, the value of the engine's priority field (enginePriorities), chosen with
+  // its box. Empty: the engine's default for every probe.
+  std::vector<int> priority;
   SurveyResult survey;                    // of its presets under the engine's model
   std::vector<EnginePresetTrial> trials;  // every policy tried, in order
 };
+
+// The values of the engine's own priority field a layout chooses among, its default first;
+// empty where the engine has none. Unity's ReflectionProbe.importance: 1 (Unity's default), and
+// 2 to draw a probe over every other it overlaps (a room's probe over the smaller boxes of the
+// corridors reaching into it; two levels express that, more would only multiply the options).
+std::vector<int> enginePriorities(Engine engine);
 
 // The policies tried for an engine, in order: the export `build` writes (the scene's fade), no
 // fade, and the fade once and twice as wide with the floor cleared; each with the engine's own

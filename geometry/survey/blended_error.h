@@ -78,6 +78,46 @@ SurveySampleError sampleErrorOfBlend(const Weights& weights, double fallbackWeig
   return e;
 }
 
+// The fades of a sample's probes summed by what each shows there: all that an average of the
+// fades (normalizedFades, Godot 3) needs, so that one probe can be added or taken away in one
+// step. averaged() is sampleErrorOfBlend(normalizedFades(fades), sights) up to rounding.
+struct FadeSums {
+  double all = 0.0, visible = 0.0, visibleError = 0.0, hidden = 0.0, uncaptured = 0.0;
+  int count = 0, visibleCount = 0;  // exact where a difference of sums is not
+
+  void add(double fade, const ProbeSight& sight, int sign) {
+    all += sign * fade;
+    count += sign;
+    if (!sight.captured) {
+      uncaptured += sign * fade;
+    } else if (sight.hidden) {
+      hidden += sign * fade;
+    } else {
+      const double error = std::isnan(sight.errorDeg) ? kMissErrorDeg : sight.errorDeg;
+      visible += sign * fade;
+      visibleError += sign * fade * error;
+      visibleCount += sign;
+    }
+  }
+
+  SurveySampleError averaged() const {
+    SurveySampleError e;
+    if (count == 0) {
+      e.uncovered = true;
+      e.uncoveredWeight = 1.0;
+      return e;
+    }
+    e.uncoveredWeight = uncaptured / all;
+    if (visibleCount > 0) {
+      e.errorDeg = visibleError / visible;
+      e.occludedWeight = hidden / all;
+    } else {
+      e.occludedWeight = std::max(0.0, 1.0 - e.uncoveredWeight);
+    }
+    return e;
+  }
+};
+
 // What probe `probe` of the model shows at the sample, computed as far as it is read.
 ProbeSight engineProbeSight(const LevelRayCaster& level, const EngineProbe& probe,
                             const ReflectionSample& sample);

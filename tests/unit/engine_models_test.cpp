@@ -53,6 +53,45 @@ double smoothstep(double e0, double e1, double x) {
 const BoxShape kBox{{2.0, 2.0, 1.5}, {2.0, 2.0, 1.5}, kUnturned};  // [0, 4]^2 x [0, 3]
 const glm::dvec3 kEye{-5.0, 2.0, 1.7};
 
+TEST(BlendComposition, FadeSumsAverageAsTheNormalizedBlendWithProbesAddedAndTakenAway) {
+  // Five probes: seen (one a miss), hidden, and one whose cubemap stops short.
+  const std::vector<ProbeFade> fades = {{0, 0.5}, {1, 0.8}, {2, 0.3}, {3, 0.25}, {4, 0.6}};
+  const std::vector<ProbeSight> sights = {{true, false, 2.0},
+                                          {true, false, 30.0},
+                                          {true, true, 1.0},
+                                          {false, false, 4.0},
+                                          {true, false, std::nan("")}};
+  const auto direct = [&](const std::vector<int>& probes) {
+    std::vector<ProbeFade> some;
+    for (const int p : probes) some.push_back(fades[static_cast<std::size_t>(p)]);
+    const EngineBlend b = normalizedFades(some);
+    return sampleErrorOfBlend(b.weights, b.fallbackWeight,
+                              [&](int p) { return sights[static_cast<std::size_t>(p)]; });
+  };
+  FadeSums sums;
+  for (int p = 0; p < 5; ++p) sums.add(fades[p].fade, sights[p], +1);
+  const auto expectSame = [](const SurveySampleError& a, const SurveySampleError& b) {
+    EXPECT_EQ(a.uncovered, b.uncovered);
+    EXPECT_NEAR(a.uncoveredWeight, b.uncoveredWeight, 1e-12);
+    EXPECT_NEAR(a.occludedWeight, b.occludedWeight, 1e-12);
+    EXPECT_EQ(std::isnan(a.errorDeg), std::isnan(b.errorDeg));
+    if (!std::isnan(a.errorDeg)) {
+      EXPECT_NEAR(a.errorDeg, b.errorDeg, 1e-12);
+    }
+  };
+  expectSame(sums.averaged(), direct({0, 1, 2, 3, 4}));
+  // (0.5 * 2 + 0.8 * 30 + 0.6 * 180) / 1.9 over the seen, 0.3 of 2.45 hidden, 0.25 uncaptured.
+  EXPECT_NEAR(sums.averaged().errorDeg, (1.0 + 24.0 + 108.0) / 1.9, 1e-12);
+  sums.add(fades[1].fade, sights[1], -1);
+  expectSame(sums.averaged(), direct({0, 2, 3, 4}));
+  for (const int p : {0, 4}) sums.add(fades[p].fade, sights[p], -1);
+  expectSame(sums.averaged(), direct({2, 3}));  // none seen: the hidden share is the rest
+  EXPECT_TRUE(std::isnan(sums.averaged().errorDeg));
+  for (const int p : {2, 3}) sums.add(fades[p].fade, sights[p], -1);
+  expectSame(sums.averaged(), direct({}));  // none at all: the sky
+  EXPECT_TRUE(sums.averaged().uncovered);
+}
+
 TEST(BlendComposition, EachOrderAgainstItsShaderLoopWrittenOut) {
   const std::vector<ProbeFade> fades = {{0, 0.5}, {1, 0.8}, {2, 0.3}};
   // Front to back: 0.5; 0.8 of the 0.5 left; 0.3 of the 0.1 left; sky 0.07.
@@ -118,6 +157,27 @@ TEST(UnityModel, TheExportedBoxFadesOutToTheMeasuredBoxSmallerBoxOnTop) {
   const std::map<int, double> seam = weightsOf(nested.blend({1.875, 1.5, 1}, kEye));
   EXPECT_NEAR(seam.at(1), 0.5, 1e-12);
   EXPECT_NEAR(seam.at(0), 0.5, 1e-12);
+}
+
+TEST(UnityModel, TheMoreImportantProbeIsDrawnOverTheSmallerBox) {
+  // ReflectionProbe.importance: inside both, only the important one; leaving its box, it fades
+  // over the other. The large box raised to 2 now covers the small one inside it.
+  const BoxShape small{{1.5, 1.5, 1.5}, {0.5, 0.5, 1.5}, kUnturned};
+  RuntimeExport presets =
+      exportOf({probeWithPresets("large", kBox, kBox.centerMeters, fadingInside(kBox)),
+                probeWithPresets("small", small, small.centerMeters, fadingInside(small))});
+  presets.probes[0].engines.unity->importance = 2;
+  const EngineModel raised = unityModel(presets);
+  EXPECT_EQ(weightsOf(raised.blend({1.5, 1.5, 1}, kEye)), (std::map<int, double>{{0, 1.0}}));
+  // Half way out of the large box's fade (0.375 m outside its 0.75 m blend), where the small box
+  // is far: the large one at half, the sky the rest.
+  const EngineBlend edge = raised.blend({3.625, 2, 1.5}, kEye);
+  EXPECT_EQ(weightsOf(edge), (std::map<int, double>{{0, 0.5}}));
+  EXPECT_NEAR(edge.fallbackWeight, 0.5, 1e-12);
+  // Both raised: the smaller box on top again.
+  presets.probes[1].engines.unity->importance = 2;
+  EXPECT_EQ(weightsOf(unityModel(presets).blend({1.5, 1.5, 1}, kEye)),
+            (std::map<int, double>{{1, 1.0}}));
 }
 
 TEST(UnityModel, ProjectsOnTheExportedBoxGrownByTheBlendDistanceTheMeasuredBox) {

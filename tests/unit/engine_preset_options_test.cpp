@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 namespace probeproxy {
 namespace {
 
@@ -73,6 +75,34 @@ TEST(EnginePresetOptions, AProbeTakesTheBoxOfTheRoomOverOneThatCutsItShort) {
   EXPECT_EQ(chooseEngineOptions(unityModel(exportOf({unityProbe("east/room", kRoom, kEast)})),
                                 std::vector<int>{0}, {0}, room.floor, room.level, 5.0),
             (std::vector<int>{0}));
+}
+
+// Unity's importance, as `layout --engine unity` offers it: each probe at 1 (Unity's default)
+// and at 2.
+RuntimeProbe atImportance(RuntimeProbe probe, int importance) {
+  probe.name.append("/").append(std::to_string(importance));
+  probe.engines.unity->importance = importance;
+  return probe;
+}
+
+TEST(EnginePresetOptions, TheRoomsProbeIsRaisedOverASmallerBoxThatCutsItShort) {
+  const Room room;
+  // The west probe's box stops 0.25 m short of the east wall; the east probe's smaller box, on
+  // top by default, cuts the room at x 6. Leaving the east probe out leaves the last 0.25 m to
+  // the sky; raising the west probe over it keeps the east probe there and the rest right.
+  const BoxShape west{{4.875, 2.0, 1.5}, {4.875, 2.0, 1.5}, kUnturned};  // [0, 9.75] x [0, 4]
+  const RuntimeProbe w = unityProbe("west", west, kWest);
+  const RuntimeProbe e = unityProbe("east", kEastHalf, kEast);
+  const RuntimeExport options =
+      exportOf({atImportance(w, 1), atImportance(w, 2), atImportance(e, 1), atImportance(e, 2)});
+  const std::vector<int> probeOf = {0, 0, 1, 1};
+  EXPECT_EQ(chooseEngineOptions(unityModel(options), probeOf, {0, 2}, room.floor, room.level, 5.0),
+            (std::vector<int>{1, 2}));
+  const double before = room.badShare(exportOf({atImportance(w, 1), atImportance(e, 1)}));
+  const double raised = room.badShare(exportOf({atImportance(w, 2), atImportance(e, 1)}));
+  const double leftOut = room.badShare(exportOf({atImportance(w, 1)}));
+  EXPECT_LT(raised, 0.5 * before);
+  EXPECT_LT(raised, leftOut);
 }
 
 TEST(EnginePresetOptions, TheGenericModelKeepsWhatItStartsWith) {

@@ -261,6 +261,7 @@ void expectEnginesClose(const RuntimeEngines& a, const RuntimeEngines& b) {
   }
   if (a.unity) {
     EXPECT_CLOSE(a.unity->blendDistance, b.unity->blendDistance, kEngine);
+    EXPECT_EQ(a.unity->importance, b.unity->importance);
     EXPECT_EQ(a.unity->source.candidate, b.unity->source.candidate);
     expectClose(a.unity->source.error, b.unity->source.error);
     expectClose(a.unity->position, b.unity->position, kEngine);
@@ -382,6 +383,21 @@ TEST_F(RuntimeExport, EveryKindReadsBackExactly) {
   EXPECT_TRUE(std::isnan(read.probes[0].error.p95Deg));  // written as null
   EXPECT_EQ(read.probes[4].error.p95Deg, 0.4);
   EXPECT_EQ(read.probes[4].enlighten.epsilon, 1e-6);
+}
+
+TEST_F(RuntimeExport, UnityImportanceReadsBackAndDefaultsToUnitysOne) {
+  Runtime made = makeRuntimeExport(roomScene(folder_, UpAxis::Z, 1.0), roomBuilds());
+  ASSERT_TRUE(made.probes[3].engines.unity);
+  EXPECT_EQ(made.probes[3].engines.unity->importance, 1);  // Unity's default
+  made.probes[3].engines.unity->importance = 7;
+  std::string json = runtimeExportJson(made);
+  expectSameRuntime(parseRuntimeExport(json, "proxies.json"), made, 0.0);
+  // Written before importance was: Unity's default.
+  const std::string written = R"("importance": 7)";
+  const std::size_t at = json.find(written);
+  ASSERT_NE(at, std::string::npos);
+  json.replace(at, written.size(), R"("written_before": 0)");
+  EXPECT_EQ(parseRuntimeExport(json, "proxies.json").probes[3].engines.unity->importance, 1);
 }
 
 TEST_F(RuntimeExport, YUpCentimetreSceneRoundTripsToTheSameWorldValues) {
@@ -913,6 +929,12 @@ TEST_F(RuntimeExportBadInput, WrongTypeNamesTheValue) {
   EXPECT_EQ(problemAfter(R"("box_projection": true)", R"("box_projection": 1)"),
             "$.probes[0].engines.unity_reflection_probe.box_projection: expected true or false, "
             "got 1");
+  EXPECT_EQ(problemAfter(R"("importance": 1)", R"("importance": 1.5)"),
+            "$.probes[0].engines.unity_reflection_probe.importance: expected an integer (a 32-bit "
+            "int), got 1.5");
+  EXPECT_EQ(problemAfter(R"("importance": 1)", R"("importance": 3000000000)"),
+            "$.probes[0].engines.unity_reflection_probe.importance: expected an integer (a 32-bit "
+            "int), got 3000000000");
   const glm::uvec3 first = makeRuntimeExport(roomScene(folder_, UpAxis::Z, 1.0), roomBuilds())
                                .probes[2]
                                .convex.triangles[0];

@@ -228,6 +228,14 @@ std::string layoutReportJson(const LayoutJobOptions& o, const LayoutJobResult& r
           e["other_box"][name] =
               candidateName(r.builds[i].candidates[static_cast<std::size_t>(c.boxFrom[i])]);
       }
+      // The engine's priority field where the layout set it above the engine's default.
+      const std::vector<int> priorities = enginePriorities(c.engine);
+      if (!priorities.empty()) {
+        e["priority"] = nlohmann::ordered_json::object();
+        for (std::size_t i = 0; i < c.priority.size(); ++i)
+          if (c.priority[i] != priorities.front())
+            e["priority"][r.scene.probes[i].name] = c.priority[i];
+      }
       SurveyResult named = c.survey;
       named.scene = baselineName(o.layout.baseline);
       e["survey"] = nlohmann::ordered_json::parse(surveyReportJson(named));
