@@ -67,10 +67,12 @@ struct Move {
 class OptionSearch {
  public:
   OptionSearch(const EngineModel& model, std::span<const int> probeOf, std::vector<int> start,
-               const SurveyFloor& floor, const LevelRayCaster& level, double toleranceDeg)
+               const SurveyFloor& floor, const LevelRayCaster& level, double toleranceDeg,
+               std::size_t keptProbes)
       : model_(model),
         probeOf_(probeOf),
         toleranceDeg_(toleranceDeg),
+        keptProbes_(keptProbes),
         chosen_(std::move(start)),
         optionsOf_(chosen_.size()),
         reach_(floor.samples.size()),
@@ -217,11 +219,11 @@ class OptionSearch {
   }
 
   // The probe's move that saves the most bad floor: to each of its other options in turn, then
-  // out.
+  // out (unless it is kept).
   Move bestMove(int probe) const {
     const int current = chosen_[static_cast<std::size_t>(probe)];
     std::vector<int> targets = optionsOf_[static_cast<std::size_t>(probe)];
-    targets.push_back(-1);
+    if (static_cast<std::size_t>(probe) >= keptProbes_) targets.push_back(-1);
     Move best{current, -INFINITY};
     for (const int target : targets) {
       if (target == current) continue;
@@ -256,6 +258,7 @@ class OptionSearch {
   const EngineModel& model_;
   std::span<const int> probeOf_;
   double toleranceDeg_ = 0.0;
+  std::size_t keptProbes_ = 0;               // probes never left out
   std::vector<int> chosen_;                  // per probe: its option, -1 none
   std::vector<std::vector<int>> optionsOf_;  // per probe, ascending
   std::vector<SampleReach> reach_;           // per sample
@@ -271,11 +274,13 @@ class OptionSearch {
 
 std::vector<int> chooseEngineOptions(const EngineModel& model, std::span<const int> probeOf,
                                      std::vector<int> start, const SurveyFloor& floor,
-                                     const LevelRayCaster& level, double toleranceDeg) {
+                                     const LevelRayCaster& level, double toleranceDeg,
+                                     std::size_t keptProbes) {
   if (probeOf.size() != model.probes.size())
     throw std::invalid_argument("chooseEngineOptions: one probe per option");
   if (!model.fades || !model.compose) return start;
-  return OptionSearch(model, probeOf, std::move(start), floor, level, toleranceDeg).run();
+  return OptionSearch(model, probeOf, std::move(start), floor, level, toleranceDeg, keptProbes)
+      .run();
 }
 
 }  // namespace probeproxy

@@ -179,7 +179,7 @@ std::string entrySource(Engine engine, const RuntimeEngines& e) {
 void chooseProbeEntries(EnginePresetChoice& choice, const Scene& scene,
                         const std::vector<ProbeProxyBuild>& builds, const RuntimeExport& defaults,
                         const LevelRayCaster& level, const SurveyFloor& trialFloor,
-                        const SurveyOptions& options) {
+                        const SurveyOptions& options, std::size_t keptProbes) {
   const Engine engine = choice.engine;
   std::vector<int> priorities = enginePriorities(engine);
   const bool prioritised = !priorities.empty();
@@ -226,8 +226,8 @@ void chooseProbeEntries(EnginePresetChoice& choice, const Scene& scene,
     if (boxOfOption[option] == kDefaultBox && priorityOfOption[option] == priorities.front())
       start[static_cast<std::size_t>(probeOfOption[option])] = static_cast<int>(j);
   }
-  const std::vector<int> chosen =
-      chooseEngineOptions(model, probeOf, start, trialFloor, level, options.toleranceDeg);
+  const std::vector<int> chosen = chooseEngineOptions(model, probeOf, start, trialFloor, level,
+                                                      options.toleranceDeg, keptProbes);
   choice.boxFrom.assign(builds.size(), kDefaultBox);
   if (prioritised) choice.priority.assign(builds.size(), priorities.front());
   for (std::size_t i = 0; i < chosen.size(); ++i) {
@@ -246,7 +246,7 @@ void chooseProbeEntries(EnginePresetChoice& choice, const Scene& scene,
 EnginePresetChoice choose(Engine engine, PresetsByPolicy& presetsOf, const LevelRayCaster& level,
                           const SurveyFloor& floor, const SurveyFloor& trialFloor,
                           const SurveyOptions& survey, std::span<const EnginePresetPolicy> policies,
-                          bool chooseBoxes) {
+                          ProbeEntries entries) {
   if (engine == Engine::Generic)
     throw std::invalid_argument("choosePresetsForEngine: the generic model has no presets");
   SurveyOptions options = survey;
@@ -263,36 +263,39 @@ EnginePresetChoice choose(Engine engine, PresetsByPolicy& presetsOf, const Level
       bestTrial = trial.figures;
     }
   }
-  if (chooseBoxes)
+  if (entries.choose)
     chooseProbeEntries(best, presetsOf.scene(), presetsOf.builds(), presetsOf(best.policy), level,
-                       trialFloor, options);
+                       trialFloor, options, entries.keptProbes);
   const RuntimeExport kept =
-      chooseBoxes ? asWritten(enginePresets(best, presetsOf.scene(), presetsOf.builds()))
-                  : presetsOf(best.policy);
+      entries.choose ? asWritten(enginePresets(best, presetsOf.scene(), presetsOf.builds()))
+                     : presetsOf(best.policy);
   best.survey = surveyModel(engineModel(engine, kept, options.blend), floor, level, options);
   return best;
 }
 
 }  // namespace
 
-EnginePresetChoice choosePresetsForEngine(
-    Engine engine, const Scene& scene, const std::vector<ProbeProxyBuild>& builds,
-    const LevelRayCaster& level, const SurveyFloor& floor, const SurveyFloor& trialFloor,
-    const SurveyOptions& survey, std::span<const EnginePresetPolicy> policies, bool chooseBoxes) {
+EnginePresetChoice choosePresetsForEngine(Engine engine, const Scene& scene,
+                                          const std::vector<ProbeProxyBuild>& builds,
+                                          const LevelRayCaster& level, const SurveyFloor& floor,
+                                          const SurveyFloor& trialFloor,
+                                          const SurveyOptions& survey,
+                                          std::span<const EnginePresetPolicy> policies,
+                                          ProbeEntries entries) {
   PresetsByPolicy presetsOf(scene, builds);
-  return choose(engine, presetsOf, level, floor, trialFloor, survey, policies, chooseBoxes);
+  return choose(engine, presetsOf, level, floor, trialFloor, survey, policies, entries);
 }
 
 std::vector<EnginePresetChoice> choosePresetsForEngines(
     std::span<const Engine> engines, const Scene& scene, const std::vector<ProbeProxyBuild>& builds,
     const LevelRayCaster& level, const SurveyFloor& floor, const SurveyFloor& trialFloor,
-    const SurveyOptions& survey, bool chooseBoxes) {
+    const SurveyOptions& survey, ProbeEntries entries) {
   PresetsByPolicy presetsOf(scene, builds);  // most policies are tried by every engine
   std::vector<EnginePresetChoice> choices;
   for (const Engine engine : engines) {
     if (engine == Engine::Generic) continue;
     choices.push_back(choose(engine, presetsOf, level, floor, trialFloor, survey,
-                             enginePresetPolicies(engine), chooseBoxes));
+                             enginePresetPolicies(engine), entries));
   }
   return choices;
 }

@@ -59,21 +59,31 @@ std::vector<int> enginePriorities(Engine engine);
 // fallback, then the lowest p95, then the first.
 std::vector<EnginePresetPolicy> enginePresetPolicies(Engine engine);
 
+// Whether, after the policy, each probe's entry is chosen (its box and priority, or none:
+// engine_preset_options.h). A baseline keeps every probe's default box; a layout chooses, but
+// never leaves out its first `keptProbes` (the artist's probes `--keep-authored` kept).
+struct ProbeEntries {
+  bool choose = true;
+  std::size_t keptProbes = 0;
+};
+
 // `engine` is not Generic; `floor` is the layout's prepared survey floor, `trialFloor` the same
-// floor with fewer samples per cell, on which the policies are compared and, with
-// `chooseBoxes`, each probe's box for the kept one (another of its build's boxes, or none)
-// chosen; the kept presets are then surveyed on `floor`. `survey`: their options; `policies`:
-// those to try.
-EnginePresetChoice choosePresetsForEngine(
-    Engine engine, const Scene& scene, const std::vector<ProbeProxyBuild>& builds,
-    const LevelRayCaster& level, const SurveyFloor& floor, const SurveyFloor& trialFloor,
-    const SurveyOptions& survey, std::span<const EnginePresetPolicy> policies, bool chooseBoxes);
+// floor with fewer samples per cell, on which the policies are compared and each probe's entry
+// under the kept one chosen as `entries` says; the kept presets are then surveyed on `floor`.
+// `survey`: their options; `policies`: those to try.
+EnginePresetChoice choosePresetsForEngine(Engine engine, const Scene& scene,
+                                          const std::vector<ProbeProxyBuild>& builds,
+                                          const LevelRayCaster& level, const SurveyFloor& floor,
+                                          const SurveyFloor& trialFloor,
+                                          const SurveyOptions& survey,
+                                          std::span<const EnginePresetPolicy> policies,
+                                          ProbeEntries entries);
 
 // Every engine's choice, in the order given (Generic skipped), each from enginePresetPolicies().
 std::vector<EnginePresetChoice> choosePresetsForEngines(
     std::span<const Engine> engines, const Scene& scene, const std::vector<ProbeProxyBuild>& builds,
     const LevelRayCaster& level, const SurveyFloor& floor, const SurveyFloor& trialFloor,
-    const SurveyOptions& survey, bool chooseBoxes);
+    const SurveyOptions& survey, ProbeEntries entries);
 
 // The export with each chosen engine's entries made by its kept policy (Unreal's box and
 // sphere captures both by Unreal's) from the boxes it chose, every other entry by the default

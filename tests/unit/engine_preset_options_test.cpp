@@ -56,6 +56,10 @@ TEST(EnginePresetOptions, AProbeWhoseSmallerBoxCutsTheRoomShortIsLeftOut) {
   const std::vector<int> chosen =
       chooseEngineOptions(unityModel(both), probeOf, {0, 1}, room.floor, room.level, 5.0);
   EXPECT_EQ(chosen, (std::vector<int>{0, -1}));
+  // An artist's probes kept by the layout stay in every engine, however they render.
+  EXPECT_EQ(chooseEngineOptions(unityModel(both), probeOf, {0, 1}, room.floor, room.level, 5.0,
+                                /*keptProbes=*/2),
+            (std::vector<int>{0, 1}));
   const double before = room.badShare(both);
   const double after = room.badShare(exportOf({unityProbe("west", kRoom, kWest)}));
   // Rays from the east half that meet the cut before the ceiling: a few percent of the floor.

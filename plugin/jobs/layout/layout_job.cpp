@@ -375,9 +375,11 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
     SurveyOptions trial = survey;
     trial.samplesPerCell = std::min(survey.samplesPerCell, kEngineTrialSamplesPerCell);
     const SurveyFloor trialFloor = prepareSurveyFloor(seeds, rayCaster, trial);
-    r.engines =
-        choosePresetsForEngines(o.engines, r.scene, r.builds, rayCaster, floor, trialFloor, survey,
-                                /*chooseBoxes=*/o.layout.baseline == LayoutBaseline::None);
+    // The artist's probes come first in the scene and stay in every engine.
+    const ProbeEntries entries{o.layout.baseline == LayoutBaseline::None,
+                               o.layout.keepAuthored ? input.probes.size() : 0};
+    r.engines = choosePresetsForEngines(o.engines, r.scene, r.builds, rayCaster, floor, trialFloor,
+                                        survey, entries);
     if (o.engines.size() == 1 && !r.engines.empty()) r.survey = r.engines.front().survey;
     stageDone("engines");
   }
