@@ -5,7 +5,6 @@
 
 #include <cmath>
 #include <deque>
-#include <stdexcept>
 #include <string>
 #include <tuple>
 #include <variant>
@@ -243,12 +242,12 @@ void chooseProbeEntries(EnginePresetChoice& choice, const Scene& scene,
   }
 }
 
+// The policy `engine` (not Generic) renders the trial floor best with, each probe's entry
+// under it as `entries` says, and the kept presets surveyed on `floor`.
 EnginePresetChoice choose(Engine engine, PresetsByPolicy& presetsOf, const LevelRayCaster& level,
                           const SurveyFloor& floor, const SurveyFloor& trialFloor,
                           const SurveyOptions& survey, std::span<const EnginePresetPolicy> policies,
                           ProbeEntries entries) {
-  if (engine == Engine::Generic)
-    throw std::invalid_argument("choosePresetsForEngine: the generic model has no presets");
   SurveyOptions options = survey;
   options.engine = engine;
   EnginePresetChoice best;
@@ -274,17 +273,6 @@ EnginePresetChoice choose(Engine engine, PresetsByPolicy& presetsOf, const Level
 }
 
 }  // namespace
-
-EnginePresetChoice choosePresetsForEngine(Engine engine, const Scene& scene,
-                                          const std::vector<ProbeProxyBuild>& builds,
-                                          const LevelRayCaster& level, const SurveyFloor& floor,
-                                          const SurveyFloor& trialFloor,
-                                          const SurveyOptions& survey,
-                                          std::span<const EnginePresetPolicy> policies,
-                                          ProbeEntries entries) {
-  PresetsByPolicy presetsOf(scene, builds);
-  return choose(engine, presetsOf, level, floor, trialFloor, survey, policies, entries);
-}
 
 std::vector<EnginePresetChoice> choosePresetsForEngines(
     std::span<const Engine> engines, const Scene& scene, const std::vector<ProbeProxyBuild>& builds,

@@ -67,19 +67,11 @@ struct ProbeEntries {
   std::size_t keptProbes = 0;
 };
 
-// `engine` is not Generic; `floor` is the layout's prepared survey floor, `trialFloor` the same
+// Every engine's choice (Generic skipped), in the order given, its policies those of
+// enginePresetPolicies(). `floor` is the layout's prepared survey floor, `trialFloor` the same
 // floor with fewer samples per cell, on which the policies are compared and each probe's entry
-// under the kept one chosen as `entries` says; the kept presets are then surveyed on `floor`.
-// `survey`: their options; `policies`: those to try.
-EnginePresetChoice choosePresetsForEngine(Engine engine, const Scene& scene,
-                                          const std::vector<ProbeProxyBuild>& builds,
-                                          const LevelRayCaster& level, const SurveyFloor& floor,
-                                          const SurveyFloor& trialFloor,
-                                          const SurveyOptions& survey,
-                                          std::span<const EnginePresetPolicy> policies,
-                                          ProbeEntries entries);
-
-// Every engine's choice, in the order given (Generic skipped), each from enginePresetPolicies().
+// under the kept one chosen as `entries` says; the kept presets are then surveyed on `floor` with
+// the options `survey`.
 std::vector<EnginePresetChoice> choosePresetsForEngines(
     std::span<const Engine> engines, const Scene& scene, const std::vector<ProbeProxyBuild>& builds,
     const LevelRayCaster& level, const SurveyFloor& floor, const SurveyFloor& trialFloor,
