@@ -47,10 +47,13 @@ bool behindFull(const Change& c, const SampleReach& s) {
   return (c.off < 0 || c.off > s.full) && (c.on < 0 || c.on > s.full);
 }
 
-// The sample's floor that does not get the reflection right, as SurveyFigures counts it: the
-// fallback's share, and the part its probes shade when their error is over the tolerance.
+// The sample's floor that does not get the reflection right: the fallback's share, the share
+// of probes that cannot see the true hit (they show what stands in front of it), and the rest
+// where its error is over the tolerance. The survey reports the hidden share apart from its
+// error (`occluded`); a search that left it out would leave out the probes that see the floor
+// and keep those that cannot.
 double badArea(const SurveySampleError& e, double areaSquareMeters, double toleranceDeg) {
-  double bad = e.uncoveredWeight * areaSquareMeters;
+  double bad = (e.uncoveredWeight + e.occludedWeight) * areaSquareMeters;
   if (!std::isnan(e.errorDeg) && e.errorDeg > toleranceDeg)
     bad += areaSquareMeters * (1.0 - e.occludedWeight - e.uncoveredWeight);
   return bad;

@@ -13,8 +13,11 @@ namespace probeproxy {
 
 namespace {
 
-// Floor that does not get the reflection right: over the tolerance, or the fallback's share.
-double badFloorShare(const SurveyFigures& f) { return f.overToleranceShare + f.uncoveredShare; }
+// Floor that does not get the reflection right: over the tolerance, the fallback's share, or
+// shown by probes that cannot see what it reflects (engine_preset_options.cpp, badArea).
+double badFloorShare(const SurveyFigures& f) {
+  return f.overToleranceShare + f.uncoveredShare + f.occludedShare;
+}
 
 bool better(const SurveyFigures& a, const SurveyFigures& b) {
   const double pa = std::isnan(a.p95Deg) ? INFINITY : a.p95Deg;

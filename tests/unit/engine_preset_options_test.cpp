@@ -4,6 +4,7 @@
 
 #include "geometry/layout/engine_preset_options.h"
 #include "geometry/builtin/box_room.h"
+#include "geometry/builtin/l_room.h"
 #include "geometry/engines/engine_model.h"
 #include "geometry/survey/run_survey.h"
 #include "tests/unit/engine_test_probes.h"
@@ -107,6 +108,35 @@ TEST(EnginePresetOptions, TheRoomsProbeIsRaisedOverASmallerBoxThatCutsItShort) {
   const double leftOut = room.badShare(exportOf({atImportance(w, 1)}));
   EXPECT_LT(raised, 0.5 * before);
   EXPECT_LT(raised, leftOut);
+}
+
+TEST(EnginePresetOptions, AProbeIsNotLeftOutForOneThatCannotSeeWhatItsFloorReflects) {
+  // An L of two arms round a corner room: the y arm's probe has the arm's own box, on top of the
+  // x arm's probe whose box is the L's bounds. Without it the x arm's probe, round the corner,
+  // would show the y arm's floor what stands between: hidden, not right, however small the
+  // y arm's own errors where its box cuts the corner short.
+  const LevelRayCaster level{lRoom({4.0, 6.0, 3.0})};
+  SurveyOptions options;
+  options.engine = Engine::Unity;
+  options.samplesPerCell = 2;
+  const std::vector<glm::dvec3> seeds = {{2.0, 2.0, 1.5}};
+  const SurveyFloor floor = prepareSurveyFloor(seeds, level, options);
+  const BoxShape bounds{{5.0, 5.0, 1.5}, {5.0, 5.0, 1.5}, kUnturned};
+  const BoxShape yArm{{2.0, 7.0, 1.5}, {2.0, 3.0, 1.5}, kUnturned};
+  const RuntimeExport both =
+      exportOf({unityProbe("x", bounds, {8.0, 2.0, 1.5}), unityProbe("y", yArm, {2.0, 8.0, 1.5})});
+  EXPECT_EQ(
+      chooseEngineOptions(unityModel(both), std::vector<int>{0, 1}, {0, 1}, floor, level, 5.0),
+      (std::vector<int>{0, 1}));
+  // What leaving it out would do: most of the y arm shown by a probe that cannot see it.
+  const SurveyFigures alone =
+      surveyModel(unityModel(exportOf({unityProbe("x", bounds, {8.0, 2.0, 1.5})})), floor, level,
+                  options)
+          .figures;
+  const SurveyFigures kept = surveyModel(unityModel(both), floor, level, options).figures;
+  EXPECT_GT(alone.occludedShare, kept.occludedShare + 0.1);
+  EXPECT_LT(alone.overToleranceShare + alone.uncoveredShare,
+            kept.overToleranceShare + kept.uncoveredShare);
 }
 
 TEST(EnginePresetOptions, TheGenericModelKeepsWhatItStartsWith) {
