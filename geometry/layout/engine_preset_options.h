@@ -12,7 +12,8 @@
 //
 // Local search under the engine's own model: while one move (a probe to another of its
 // options, or left out) makes the floor that does not get the reflection right (over the
-// tolerance, or left to the engine's fallback) smaller by at least kLeastOptionGain of the
+// tolerance, left to the engine's fallback, or shown by probes that cannot see what it
+// reflects: what stands in front of it) smaller by at least kLeastOptionGain of the
 // floor, the move that makes it smallest is made (ties: the lowest probe, then option). Each
 // sample's options, fades and sights are found once; a move re-weighs only the samples its two
 // options reach, and re-judges only the probes with an option there.

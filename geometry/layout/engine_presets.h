@@ -55,8 +55,9 @@ std::vector<int> enginePriorities(Engine engine);
 // fade, and the fade once and twice as wide with the floor cleared; each with the engine's own
 // second choice off, then on: Bevy's cube about the capture point, for the others the boxes cut
 // to the influence in plan (8); EEVEE both the cut and its influence inside the scene's range in
-// plan (16). The kept one has the least floor over the tolerance or left to the engine's
-// fallback, then the lowest p95, then the first.
+// plan (16). The kept one has the least floor over the tolerance, left to the engine's
+// fallback or shown by probes that cannot see what it reflects, then the lowest p95, then the
+// first.
 std::vector<EnginePresetPolicy> enginePresetPolicies(Engine engine);
 
 // Whether, after the policy, each probe's entry is chosen (its box and priority, or none:

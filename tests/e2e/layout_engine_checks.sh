@@ -3,8 +3,8 @@
 # A layout made for every engine (`layout --engine all`) exports, per engine, the presets it
 # measured: `survey --engine E --proxies proxies.json` on the layout's scene gives layout.json's
 # figures for E exactly; each engine's kept policy is the best of its trials (the least floor
-# over the tolerance or left to the fallback, then the lowest p95); the same run twice writes the
-# same bytes.
+# over the tolerance, left to the fallback or shown by probes that cannot see what it reflects,
+# then the lowest p95); the same run twice writes the same bytes.
 set -eu
 probeproxy=$1 scene=$2 work=$3
 rm -rf "$work" && mkdir -p "$work"
@@ -34,7 +34,7 @@ for name, entry in engines.items():
         assert survey[key] == value, (name, key, survey[key], value)
     def rank(t):
         p95 = t["p95_deg"] if t["p95_deg"] is not None else math.inf
-        return (t["over_tolerance_share"] + t["uncovered_share"], p95)
+        return (t["over_tolerance_share"] + t["uncovered_share"] + t["occluded_share"], p95)
     best = min(entry["tried"], key=rank)
     keys = ("clip_to_influence", "fade_scale", "clear_the_floor", "cube_about_capture",
             "influence_inside")

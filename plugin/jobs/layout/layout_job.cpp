@@ -216,6 +216,7 @@ std::string layoutReportJson(const LayoutJobOptions& o, const LayoutJobResult& r
         trial["p95_deg"] = number(t.figures.p95Deg);
         trial["over_tolerance_share"] = number(t.figures.overToleranceShare);
         trial["uncovered_share"] = number(t.figures.uncoveredShare);
+        trial["occluded_share"] = number(t.figures.occludedShare);
         e["tried"].push_back(trial);
       }
       // Where the engine takes another box than `build` exports, or none: probe by probe.
