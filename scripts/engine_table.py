@@ -8,9 +8,10 @@
     "engines");
   - `probeproxy layout --baseline grid --max-probes N --engine all`: a grid of box-projected
     probes with the layout's count, each engine's presets chosen the same way.
-Prints one Markdown table per engine: floor over 5 deg, uncovered floor (left to the engine's
-sky / ambient fallback) and p95 for the three, and the layout-to-grid ratio of the floor over
-5 deg. With --jsonl FILE each level's figures are also appended there as they come.
+Prints one Markdown table per engine: floor over 5 deg, occluded floor (shown by probes that
+cannot see what it reflects), uncovered floor (left to the engine's sky / ambient fallback) and
+p95 for the three, and the layout-to-grid ratios of the floor over 5 deg and of the floor not
+right (the three shares together, what the engine choice minimises). With --jsonl FILE each level's figures are also appended there as they come.
 
   /usr/bin/python3 scripts/engine_table.py build/plugin/cli/probeproxy build/corpus/scenes \
       [--levels downer toxic] [--engines unity godot3] [--work DIR] [--jsonl FILE]
@@ -32,7 +33,12 @@ def run_json(*command):
 
 def figures(survey):
     return {"p95": survey["p95_deg"], "over": survey["over_tolerance_share"],
-            "uncovered": survey["uncovered_share"], "probes": survey["probes"]}
+            "occluded": survey["occluded_share"], "uncovered": survey["uncovered_share"],
+            "probes": survey["probes"]}
+
+
+def not_right(f):
+    return f["over"] + f["occluded"] + f["uncovered"]
 
 
 def level_figures(probeproxy, scene, work, engines):
@@ -63,7 +69,8 @@ def level_figures(probeproxy, scene, work, engines):
 
 def cell(f):
     p95 = "—" if f["p95"] is None else "%.1f" % f["p95"]
-    return "%.1f%% / %.1f%% / %s" % (100 * f["over"], 100 * f["uncovered"], p95)
+    return "%.1f%% / %.1f%% / %.1f%% / %s" % (100 * f["over"], 100 * f["occluded"],
+                                              100 * f["uncovered"], p95)
 
 
 def main():
@@ -89,19 +96,21 @@ def main():
                 with open(args.jsonl, "a") as f:
                     f.write(json.dumps({"level": level, **results[level]}) + "\n")
     for engine in args.engines:
-        print("\n**%s** (floor over 5 deg / uncovered / p95 deg)\n" % engine)
+        print("\n**%s** (floor over 5 deg / occluded / uncovered / p95 deg)\n" % engine)
         print("| level | generic layout's presets | layout for %s | same-count grid for %s "
-              "| probes: layout for %s (left out, other box) / grid | over 5 deg, layout / grid |"
-              % (engine, engine, engine))
-        print("|---|---|---|---|---|---|")
+              "| probes: layout for %s (left out, other box) / grid | over 5 deg, layout / grid "
+              "| not right, layout / grid |" % (engine, engine, engine))
+        print("|---|---|---|---|---|---|---|")
         for level, r in results.items():
             e = r["engines"][engine]
             ratio = e["layout"]["over"] / e["grid"]["over"] if e["grid"]["over"] > 0 else float("nan")
             probes = "%d (%d, %d%s) / %d" % (
                 e["layout"]["probes"], e["left_out"], e["other_box"],
                 ", %d raised" % e["raised"] if e["raised"] else "", e["grid"]["probes"])
-            print("| %s | %s | %s | %s | %s | %.2f |" % (level, cell(e["today"]), cell(e["layout"]),
-                                                       cell(e["grid"]), probes, ratio))
+            wrong = not_right(e["layout"]) / not_right(e["grid"]) if not_right(e["grid"]) > 0 \
+                else float("nan")
+            print("| %s | %s | %s | %s | %s | %.2f | %.2f |" % (
+                level, cell(e["today"]), cell(e["layout"]), cell(e["grid"]), probes, ratio, wrong))
 
 
 if __name__ == "__main__":
