@@ -155,7 +155,7 @@ class OptionSearch {
     s.sums = {};
     for (const int k : s.active) {
       const Reach& r = s.options[static_cast<std::size_t>(k)];
-      if (r.fade >= model_.fullFade && k < s.full) s.full = k;
+      if (r.fade >= model_.fullFade) s.full = std::min(s.full, k);  // active is ascending
       s.sums.add(r.fade, r.sight, +1);
     }
   }
