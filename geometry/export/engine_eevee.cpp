@@ -66,4 +66,20 @@ EeveeReflectionCubemap eeveeReflectionCubemap(const BoxShape& proxy, glm::dvec3 
   return probe;
 }
 
+EeveeReflectionCubemap eeveeReflectionCubemapAtBoxCentre(const BoxShape& box,
+                                                         double transitionMeters) {
+  const glm::dvec3 h = glm::max(box.halfExtentsMeters, kSmallestScaleMeters);
+  const double shortest = std::min({h.x, h.y, h.z});
+  // Grown by g = 1 + t / shortest, the influence's full-weight part (1 - falloff of it) is the
+  // box when falloff = 1 - 1 / g; the parallax volume, 1 / g of the influence, is the box.
+  const double grown = 1.0 + std::max(transitionMeters, 0.0) / shortest;
+  EeveeReflectionCubemap probe;
+  probe.location = box.centerMeters;
+  probe.rotation = box.worldFromBox;
+  probe.scale = grown * h;
+  probe.falloff = std::clamp(1.0 - 1.0 / grown, kSmallestFalloff, 1.0);
+  probe.parallaxDistance = 1.0 / grown;
+  return probe;
+}
+
 }  // namespace probeproxy

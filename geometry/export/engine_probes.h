@@ -231,6 +231,12 @@ UnityHdrpReflectionProbe unityHdrpReflectionProbe(const BoxShape& proxy, glm::dv
 EeveeReflectionCubemap eeveeReflectionCubemap(const BoxShape& proxy, glm::dvec3 captureMeters,
                                               const InfluenceVolume& influence,
                                               bool inside = false);
+// EEVEE captured at the box's centre, where its one transform can hold the box exactly: the
+// parallax volume is the box, the influence the box grown about its centre so that it has full
+// weight over the whole box and fades to nothing `transitionMeters` beyond its shortest side
+// (farther beyond the longer sides: EEVEE's falloff is a share of each half-extent).
+EeveeReflectionCubemap eeveeReflectionCubemapAtBoxCentre(const BoxShape& box,
+                                                         double transitionMeters);
 UnrealBoxReflectionCapture unrealBoxReflectionCapture(const BoxShape& box, glm::dvec3 captureMeters,
                                                       const InfluenceVolume& influence);
 UnrealSphereReflectionCapture unrealSphereReflectionCapture(const SphereShape& sphere,

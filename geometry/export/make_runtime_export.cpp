@@ -211,7 +211,9 @@ RuntimeEngines enginesFor(const ProbeProxyBuild& build, const Probe& probe,
     engines.unityHdrp = unityHdrpReflectionProbe(*box, probe.captureMeters, influence);
     engines.unityHdrp->source = source;
     engines.eevee =
-        eeveeReflectionCubemap(*box, probe.captureMeters, influence, policy.influenceInside);
+        policy.eeveeAtBoxCentre
+            ? eeveeReflectionCubemapAtBoxCentre(*box, transitionDistanceMeters(influence))
+            : eeveeReflectionCubemap(*box, probe.captureMeters, influence, policy.influenceInside);
     engines.eevee->source = source;
   }
   if (const auto i = bestCandidate(cs, isTrueSphere)) {

@@ -191,6 +191,10 @@ struct EnginePresetPolicy {
   // the scene's outer range, instead of the smallest holding it (which reaches past the near
   // side); in height it still holds the range, floor included.
   bool influenceInside = false;
+  // EEVEE: the probe captured at the centre of its box, which it then holds exactly
+  // (eeveeReflectionCubemapAtBoxCentre), instead of at the scene's capture point. `layout
+  // --engine eevee` chooses it probe by probe, where the way from the capture point is clear.
+  bool eeveeAtBoxCentre = false;
 
   bool operator==(const EnginePresetPolicy&) const = default;
 };

@@ -2,7 +2,13 @@
 
 #include "geometry/engines/engine_model.h"
 #include "geometry/layout/engine_preset_options.h"
+#include "geometry/layout/layout_candidates.h"
+#include "geometry/probe_proxies/build_scene_proxies.h"
+#include "geometry/raycast/open_space.h"
 
+#include <glm/geometric.hpp>
+
+#include <algorithm>
 #include <cmath>
 #include <deque>
 #include <string>
@@ -130,8 +136,8 @@ ProbeProxyBuild withBoxKept(const ProbeProxyBuild& build, std::size_t k) {
   return boxed;
 }
 
-// The export of the engine's presets under the choice's policy, with each probe's box and
-// priority as the choice says.
+// The export of the engine's presets under the choice's policy, with each probe's box,
+// priority and capture point as the choice says.
 RuntimeExport enginePresets(const EnginePresetChoice& choice, const Scene& scene,
                             const std::vector<ProbeProxyBuild>& builds) {
   std::vector<ProbeProxyBuild> boxed = builds;
@@ -139,6 +145,14 @@ RuntimeExport enginePresets(const EnginePresetChoice& choice, const Scene& scene
     if (choice.boxFrom[i] >= 0)
       boxed[i] = withBoxKept(builds[i], static_cast<std::size_t>(choice.boxFrom[i]));
   RuntimeExport presets = makeRuntimeExport(scene, boxed, choice.policy);
+  if (std::find(choice.atBoxCentre.begin(), choice.atBoxCentre.end(), true) !=
+      choice.atBoxCentre.end()) {
+    EnginePresetPolicy centred = choice.policy;
+    centred.eeveeAtBoxCentre = true;
+    const RuntimeExport moved = makeRuntimeExport(scene, boxed, centred);
+    for (std::size_t i = 0; i < presets.probes.size(); ++i)
+      if (choice.atBoxCentre[i]) presets.probes[i].engines.eevee = moved.probes[i].engines.eevee;
+  }
   for (std::size_t i = 0; i < presets.probes.size(); ++i) {
     RuntimeEngines& e = presets.probes[i].engines;
     if (!choice.priority.empty()) setPriority(choice.engine, e, choice.priority[i]);
@@ -174,10 +188,35 @@ std::string entrySource(Engine engine, const RuntimeEngines& e) {
   return {};
 }
 
-// Each probe's box and priority for `choice.engine` under `choice.policy`: its default box,
-// another its build fitted, or none, at each of the engine's priorities, whichever the engine
-// renders the trial floor best with (engine_preset_options.h). `defaults` are the policy's
-// presets as the export makes them (each names its source box).
+// Where EEVEE may capture a probe at its box's centre: a point in the open, clear of every
+// surface as a layout's capture points are, in plain sight of the probe's own capture point (the
+// same air: not across a wall in a box that holds two rooms).
+bool captureCanMoveTo(const LevelRayCaster& level, glm::dvec3 fromMeters, glm::dvec3 toMeters) {
+  const glm::dvec3 way = toMeters - fromMeters;
+  const double distance = glm::length(way);
+  if (distance > 0.0) {
+    const RayHit hit = level.firstHit({fromMeters, glm::vec3(way / distance)});
+    if (hit.hit() && double(hit.t) < distance) return false;
+  }
+  return !lookUpAndDown(level, std::span(&toMeters, 1))[0].insideSolid &&
+         nearestSurface(level, toMeters).distanceMeters >= kLayoutCaptureClearanceMeters;
+}
+
+// One way to make a probe's entry for the engine: from its default box or another its build
+// fitted, at one of the engine's priorities, captured where the scene says or (EEVEE) at the
+// box's centre.
+struct EntryOption {
+  int probe = 0;
+  int box = kDefaultBox;
+  int priority = 0;
+  bool atBoxCentre = false;
+};
+
+// Each probe's box, priority and (EEVEE) capture point for `choice.engine` under
+// `choice.policy`: its default box, another its build fitted, or none, at each of the engine's
+// priorities, whichever the engine renders the trial floor best with
+// (engine_preset_options.h). `defaults` are the policy's presets as the export makes them (each
+// names its source box).
 void chooseProbeEntries(EnginePresetChoice& choice, const Scene& scene,
                         const std::vector<ProbeProxyBuild>& builds, const RuntimeExport& defaults,
                         const LevelRayCaster& level, const SurveyFloor& trialFloor,
@@ -186,62 +225,77 @@ void chooseProbeEntries(EnginePresetChoice& choice, const Scene& scene,
   std::vector<int> priorities = enginePriorities(engine);
   const bool prioritised = !priorities.empty();
   if (!prioritised) priorities = {0};  // one pass, nothing set
+  const std::vector<bool> centrings =
+      engine == Engine::Eevee ? std::vector<bool>{false, true} : std::vector<bool>{false};
   // Every option as a probe of its own: each probe's default box, then each other box, each at
-  // every priority.
-  Scene optionScene = scene;
-  optionScene.probes.clear();
-  std::vector<ProbeProxyBuild> optionBuilds;
-  std::vector<int> probeOfOption, boxOfOption, priorityOfOption;
-  for (std::size_t i = 0; i < builds.size(); ++i) {
-    const auto& candidates = builds[i].candidates;
-    for (int k = kDefaultBox; k < static_cast<int>(candidates.size()); ++k) {
-      if (k >= 0 &&
-          (!std::holds_alternative<BoxShape>(candidates[static_cast<std::size_t>(k)].shape) ||
-           candidateName(candidates[static_cast<std::size_t>(k)]) ==
-               entrySource(engine, defaults.probes[i].engines)))
-        continue;
-      for (const int priority : priorities) {
-        ProbeProxyBuild option =
-            k >= 0 ? withBoxKept(builds[i], static_cast<std::size_t>(k)) : builds[i];
-        // Named apart: an export holds each name once.
-        option.probe.append("/").append(std::to_string(k));
-        option.probe.append("/").append(std::to_string(priority));
-        optionScene.probes.push_back(scene.probes[i]);
-        optionScene.probes.back().name = option.probe;
-        optionBuilds.push_back(std::move(option));
-        probeOfOption.push_back(static_cast<int>(i));
-        boxOfOption.push_back(k);
-        priorityOfOption.push_back(priority);
+  // every priority and capture point; the ones captured at their box's centre made by that
+  // policy, in an export of their own.
+  std::vector<EntryOption> entryOptions;
+  RuntimeExport optionPresets;
+  for (const bool centred : centrings) {
+    Scene optionScene = scene;
+    optionScene.probes.clear();
+    std::vector<ProbeProxyBuild> optionBuilds;
+    for (std::size_t i = 0; i < builds.size(); ++i) {
+      const auto& candidates = builds[i].candidates;
+      for (int k = kDefaultBox; k < static_cast<int>(candidates.size()); ++k) {
+        if (k >= 0 &&
+            (!std::holds_alternative<BoxShape>(candidates[static_cast<std::size_t>(k)].shape) ||
+             candidateName(candidates[static_cast<std::size_t>(k)]) ==
+                 entrySource(engine, defaults.probes[i].engines)))
+          continue;
+        for (const int priority : priorities) {
+          ProbeProxyBuild option =
+              k >= 0 ? withBoxKept(builds[i], static_cast<std::size_t>(k)) : builds[i];
+          // Named apart: an export holds each name once.
+          option.probe.append("/").append(std::to_string(k));
+          option.probe.append("/").append(std::to_string(priority));
+          optionScene.probes.push_back(scene.probes[i]);
+          optionScene.probes.back().name = option.probe;
+          optionBuilds.push_back(std::move(option));
+          entryOptions.push_back({static_cast<int>(i), k, priority, centred});
+        }
       }
     }
+    EnginePresetPolicy policy = choice.policy;
+    policy.eeveeAtBoxCentre = centred;
+    RuntimeExport made = makeRuntimeExport(optionScene, optionBuilds, policy);
+    for (auto& probe : made.probes) optionPresets.probes.push_back(std::move(probe));
   }
-  RuntimeExport optionPresets = makeRuntimeExport(optionScene, optionBuilds, choice.policy);
-  if (prioritised)
-    for (std::size_t j = 0; j < optionPresets.probes.size(); ++j)
-      setPriority(engine, optionPresets.probes[j].engines, priorityOfOption[j]);
+  for (std::size_t j = 0; j < optionPresets.probes.size(); ++j) {
+    const EntryOption& o = entryOptions[j];
+    RuntimeEngines& e = optionPresets.probes[j].engines;
+    if (prioritised) setPriority(engine, e, o.priority);
+    if (o.atBoxCentre && e.eevee &&
+        !captureCanMoveTo(level, scene.probes[static_cast<std::size_t>(o.probe)].captureMeters,
+                          e.eevee->location))
+      e.eevee.reset();
+  }
   const EngineModel model = engineModel(engine, optionPresets, options.blend);
   // The model holds the options with an entry for the engine; each its probe, box and priority.
   std::vector<int> probeOf, start(builds.size(), -1);
   for (std::size_t j = 0; j < model.probes.size(); ++j) {
-    const std::size_t option = static_cast<std::size_t>(model.probes[j].sceneProbe);
-    probeOf.push_back(probeOfOption[option]);
-    if (boxOfOption[option] == kDefaultBox && priorityOfOption[option] == priorities.front())
-      start[static_cast<std::size_t>(probeOfOption[option])] = static_cast<int>(j);
+    const EntryOption& o = entryOptions[static_cast<std::size_t>(model.probes[j].sceneProbe)];
+    probeOf.push_back(o.probe);
+    if (o.box == kDefaultBox && o.priority == priorities.front() && !o.atBoxCentre)
+      start[static_cast<std::size_t>(o.probe)] = static_cast<int>(j);
   }
   const std::vector<int> chosen = chooseEngineOptions(model, probeOf, start, trialFloor, level,
                                                       options.toleranceDeg, keptProbes);
   choice.boxFrom.assign(builds.size(), kDefaultBox);
   if (prioritised) choice.priority.assign(builds.size(), priorities.front());
+  choice.atBoxCentre.assign(builds.size(), false);
   for (std::size_t i = 0; i < chosen.size(); ++i) {
     if (chosen[i] == start[i]) continue;
     if (chosen[i] < 0) {
       choice.boxFrom[i] = kLeftOut;
       continue;
     }
-    const std::size_t option =
-        static_cast<std::size_t>(model.probes[static_cast<std::size_t>(chosen[i])].sceneProbe);
-    choice.boxFrom[i] = boxOfOption[option];
-    if (prioritised) choice.priority[i] = priorityOfOption[option];
+    const EntryOption& o = entryOptions[static_cast<std::size_t>(
+        model.probes[static_cast<std::size_t>(chosen[i])].sceneProbe)];
+    choice.boxFrom[i] = o.box;
+    if (prioritised) choice.priority[i] = o.priority;
+    choice.atBoxCentre[i] = o.atBoxCentre;
   }
 }
 

@@ -41,6 +41,10 @@ struct EnginePresetChoice {
   // Per scene probe, the value of the engine's priority field (enginePriorities), chosen with
   // its box. Empty: the engine's default for every probe.
   std::vector<int> priority;
+  // Per scene probe, whether the engine captures it at its box's centre (EEVEE, whose one
+  // transform centres both volumes on the capture point: EnginePresetPolicy::eeveeAtBoxCentre).
+  // Empty: none.
+  std::vector<bool> atBoxCentre;
   SurveyResult survey;                    // of its presets under the engine's model
   std::vector<EnginePresetTrial> trials;  // every policy tried, in order
 };

@@ -494,6 +494,24 @@ TEST(EnginePresetPolicy, ClippingCutsTheBoxInPlanToTheInfluenceAndScalingWidensT
                std::invalid_argument);
 }
 
+TEST(EnginePresetPolicy, EeveeAtTheBoxCentreProjectsOnTheBoxWithFullWeightOverItAndFadesBeyond) {
+  const OneRoomProbe r = oneRoomProbe();
+  EnginePresetPolicy centred;
+  centred.eeveeAtBoxCentre = true;
+  const EngineModel model = eeveeModel(makeRuntimeExport(r.scene, r.builds, centred));
+  // The room's box, its bottom 2 cm under the floor: centre z 1.49, half-height 1.51.
+  const BoxShape& parallax = std::get<BoxShape>(model.probes[0].projection);
+  EXPECT_NEAR(glm::distance(parallax.centerMeters, glm::dvec3(0.0, 0.0, 1.49)), 0.0, 1e-12);
+  EXPECT_NEAR(glm::distance(parallax.halfExtentsMeters, glm::dvec3(3.0, 2.0, 1.51)), 0.0, 1e-12);
+  EXPECT_EQ(model.probes[0].captureMeters, parallax.centerMeters);
+  // Full weight up to the room's walls, its floor's corner included.
+  EXPECT_EQ(model.blend({2.99, 1.99, 0.0}, kEye).fallbackWeight, 0.0);
+  // Beyond, the influence (the box grown by the 0.5 m fade over its 1.51 m shortest side)
+  // fades: half way through the fade above the ceiling, half the weight.
+  EXPECT_NEAR(model.blend({0.0, 0.0, 3.0 + 0.25}, kEye).fallbackWeight, 0.5, 1e-9);
+  EXPECT_NEAR(model.blend({0.0, 0.0, 3.0 + 0.5}, kEye).fallbackWeight, 1.0, 1e-9);
+}
+
 TEST(EngineModels, TheGenericModelIsTheSurveysOwnBlend) {
   const LevelRayCaster level(boxRoom({0, 0, 0}, {10, 4, 3}));
   BoxInfluence left, right;

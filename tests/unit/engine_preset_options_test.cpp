@@ -6,6 +6,7 @@
 #include "geometry/builtin/box_room.h"
 #include "geometry/builtin/l_room.h"
 #include "geometry/engines/engine_model.h"
+#include "geometry/layout/engine_presets.h"
 #include "geometry/survey/run_survey.h"
 #include "tests/unit/engine_test_probes.h"
 
@@ -151,6 +152,60 @@ TEST(EnginePresetOptions, TheGenericModelKeepsWhatItStartsWith) {
       (std::vector<int>{0, 1}));
   EXPECT_THROW(chooseEngineOptions(generic, std::vector<int>{0}, {0}, room.floor, room.level, 5.0),
                std::invalid_argument);
+}
+
+// EEVEE centres both volumes on the capture point, so a probe captured off its room's centre
+// gets a parallax box about that point, not the room. A layout for EEVEE captures it at its
+// box's centre instead, where the parallax box is the room and every reflection is right.
+TEST(EnginePresets, EeveeCapturesAnOffCentreProbeAtItsBoxCentreWhereItHoldsTheRoom) {
+  const Room room;
+  SurveyOptions options = room.options;
+  options.engine = Engine::Eevee;
+  Scene scene;
+  scene.file = "room.scene.json";
+  Probe probe;
+  probe.name = "p";
+  probe.captureMeters = {2.0, 1.0, 1.6};
+  probe.influence = BoxInfluence{kRoom.centerMeters, kRoom.halfExtentsMeters, kUnturned,
+                                 kRoom.halfExtentsMeters - 0.5};
+  scene.probes.push_back(probe);
+  ProbeProxyBuild build;
+  build.probe = "p";
+  ProxyCandidate box;
+  box.origin = CandidateOrigin::Aabb;
+  box.shape = kRoom;
+  build.candidates.push_back(box);
+  const std::vector<ProbeProxyBuild> builds = {build};
+  const Engine eevee = Engine::Eevee;
+  const std::vector<EnginePresetChoice> choices =
+      choosePresetsForEngines(std::span(&eevee, 1), scene, builds, room.level, room.floor,
+                              room.floor, options, ProbeEntries{});
+  ASSERT_EQ(choices.size(), 1u);
+  const EnginePresetChoice& c = choices[0];
+  EXPECT_EQ(c.atBoxCentre, std::vector<bool>{true});
+  EXPECT_EQ(c.boxFrom, std::vector<int>{kDefaultBox});
+  // Captured where the scene says, under every policy, most of the floor was not right: off,
+  // or left to the world probe by influences fading over it.
+  const auto notRight = [](const SurveyFigures& f) {
+    return f.overToleranceShare + f.uncoveredShare + f.occludedShare;
+  };
+  for (const EnginePresetTrial& t : c.trials) EXPECT_GT(notRight(t.figures), 0.5);
+  EXPECT_LT(notRight(c.survey.figures), 0.01);
+  // What is written is what was measured: the entry at the box's centre, the room as its
+  // parallax volume, its bottom under the floor as the policy lowered it.
+  const RuntimeExport written = exportForEngines(scene, builds, choices);
+  const EngineModel model = eeveeModel(written);
+  ASSERT_EQ(model.probes.size(), 1u);
+  const BoxShape& parallax = std::get<BoxShape>(model.probes[0].projection);
+  EXPECT_EQ(model.probes[0].captureMeters, parallax.centerMeters);
+  EXPECT_NEAR(parallax.centerMeters.x, 5.0, 1e-12);
+  EXPECT_NEAR(parallax.centerMeters.y, 2.0, 1e-12);
+  EXPECT_NEAR(parallax.halfExtentsMeters.x, 5.0, 1e-12);
+  EXPECT_NEAR(parallax.halfExtentsMeters.y, 2.0, 1e-12);
+  EXPECT_NEAR(parallax.centerMeters.z + parallax.halfExtentsMeters.z, 3.0, 1e-12);
+  EXPECT_LE(parallax.centerMeters.z - parallax.halfExtentsMeters.z, -0.02 + 1e-12);
+  EXPECT_EQ(surveyModel(model, room.floor, room.level, options).figures.overToleranceShare,
+            c.survey.figures.overToleranceShare);
 }
 
 }  // namespace

@@ -237,6 +237,12 @@ std::string layoutReportJson(const LayoutJobOptions& o, const LayoutJobResult& r
           if (c.priority[i] != priorities.front())
             e["priority"][r.scene.probes[i].name] = c.priority[i];
       }
+      // EEVEE's probes captured at their box's centre rather than at the scene's point.
+      if (c.engine == Engine::Eevee) {
+        e["at_box_centre"] = nlohmann::ordered_json::array();
+        for (std::size_t i = 0; i < c.atBoxCentre.size(); ++i)
+          if (c.atBoxCentre[i]) e["at_box_centre"].push_back(r.scene.probes[i].name);
+      }
       SurveyResult named = c.survey;
       named.scene = baselineName(o.layout.baseline);
       e["survey"] = nlohmann::ordered_json::parse(surveyReportJson(named));
