@@ -11,10 +11,17 @@
 Prints one Markdown table per engine: floor over 5 deg, occluded floor (shown by probes that
 cannot see what it reflects), uncovered floor (left to the engine's sky / ambient fallback) and
 p95 for the three, and the layout-to-grid ratios of the floor over 5 deg and of the floor not
-right (the three shares together, what the engine choice minimises). With --jsonl FILE each level's figures are also appended there as they come.
+right (the three shares together, what the engine choice minimises); then one summary table, an
+engine a row and a level a column (floor over 5 deg, layout / grid and their ratio; the floor
+not right, layout / grid), with the levels where the layout has at most half the grid's floor
+over 5 deg and under 30%. With --jsonl FILE each level's figures are also appended there as they
+come; --from-jsonl FILE prints the tables of such a file without running anything;
+--without-generic skips the first run (and the tables' first column).
 
   /usr/bin/python3 scripts/engine_table.py build/plugin/cli/probeproxy build/corpus/scenes \
-      [--levels downer toxic] [--engines unity godot3] [--work DIR] [--jsonl FILE]
+      [--levels downer toxic] [--engines unity godot3] [--work DIR] [--jsonl FILE] \
+      [--without-generic]
+  /usr/bin/python3 scripts/engine_table.py - - --from-jsonl FILE
 """
 import argparse
 import glob
@@ -41,21 +48,23 @@ def not_right(f):
     return f["over"] + f["occluded"] + f["uncovered"]
 
 
-def level_figures(probeproxy, scene, work, engines):
+def level_figures(probeproxy, scene, work, engines, generic=True):
     plain, engine, grid = (os.path.join(work, kind) for kind in ("plain", "engine", "grid"))
-    layout = run_json(probeproxy, "layout", scene, "--out", plain, "--json")
     names = ",".join(engines)
     tuned = run_json(probeproxy, "layout", scene, "--out", engine, "--json", "--engine", names)
     baseline = run_json(probeproxy, "layout", scene, "--out", grid, "--json", "--baseline",
-                        "grid", "--max-probes", str(layout["probes"]), "--engine", names)
-    out = {"probes": layout["probes"], "grid_probes": baseline["probes"],
-           "generic": figures(layout["survey"]), "engines": {}}
+                        "grid", "--max-probes", str(tuned["probes"]), "--engine", names)
+    out = {"probes": tuned["probes"], "grid_probes": baseline["probes"],
+           "generic": figures(tuned["survey"]), "engines": {}}
+    # The same probes as `layout` alone writes them: the engine stage changes only the presets.
+    if generic:
+        run_json(probeproxy, "layout", scene, "--out", plain, "--json")
     for engine in engines:
         today = run_json(probeproxy, "survey", os.path.join(plain, "layout.scene.json"),
                          "--engine", engine, "--proxies", os.path.join(plain, "proxies.json"),
-                         "--json")
+                         "--json") if generic else None
         out["engines"][engine] = {
-            "today": figures(today),
+            "today": today and figures(today),
             "layout": figures(tuned["engines"][engine]["survey"]),
             "grid": figures(baseline["engines"][engine]["survey"]),
             "policy": {k: tuned["engines"][engine][k]
@@ -63,14 +72,65 @@ def level_figures(probeproxy, scene, work, engines):
                                  "cube_about_capture", "influence_inside")},
             "left_out": len(tuned["engines"][engine]["left_out"]),
             "other_box": len(tuned["engines"][engine]["other_box"]),
-            "raised": len(tuned["engines"][engine].get("priority", {}))}
+            "raised": len(tuned["engines"][engine].get("priority", {})),
+            "centred": len(tuned["engines"][engine].get("at_box_centre", []))}
     return out
 
 
 def cell(f):
+    if f is None:
+        return "not measured"
     p95 = "—" if f["p95"] is None else "%.1f" % f["p95"]
     return "%.1f%% / %.1f%% / %.1f%% / %s" % (100 * f["over"], 100 * f["occluded"],
                                               100 * f["uncovered"], p95)
+
+
+def ratio(a, b):
+    return a / b if b > 0 else float("nan")
+
+
+def meets_goal(e):
+    """At most half the grid's floor over 5 deg, and under 30%."""
+    return e["layout"]["over"] <= 0.5 * e["grid"]["over"] and e["layout"]["over"] < 0.3
+
+
+def print_level_tables(results, engines):
+    for engine in engines:
+        print("\n**%s** (floor over 5 deg / occluded / uncovered / p95 deg)\n" % engine)
+        print("| level | generic layout's presets | layout for %s | same-count grid for %s "
+              "| probes: layout for %s (left out, other box) / grid | over 5 deg, layout / grid "
+              "| not right, layout / grid |" % (engine, engine, engine))
+        print("|---|---|---|---|---|---|---|")
+        for level, r in results.items():
+            e = r["engines"][engine]
+            extra = "".join(", %d %s" % (e.get(k, 0), word)
+                            for k, word in (("raised", "raised"), ("centred", "at box centre"))
+                            if e.get(k, 0))
+            probes = "%d (%d, %d%s) / %d" % (e["layout"]["probes"], e["left_out"],
+                                            e["other_box"], extra, e["grid"]["probes"])
+            print("| %s | %s | %s | %s | %s | %.2f | %.2f |" % (
+                level, cell(e["today"]), cell(e["layout"]), cell(e["grid"]), probes,
+                ratio(e["layout"]["over"], e["grid"]["over"]),
+                ratio(not_right(e["layout"]), not_right(e["grid"]))))
+
+
+def print_summary(results, engines):
+    """One row per engine, one column per level: floor over 5 deg, layout / grid (ratio); below
+    it the floor not right, layout / grid, %; and the levels where the goal holds."""
+    levels = list(results)
+    print("\n| engine | %s | maps at most half the grid's and under 30%% |" % " | ".join(levels))
+    print("|---|%s---|" % ("---|" * len(levels)))
+    for engine in engines:
+        cells, met = [], []
+        for level in levels:
+            e = results[level]["engines"][engine]
+            lo, go = 100 * e["layout"]["over"], 100 * e["grid"]["over"]
+            cells.append("%.1f / %.1f (%.2f)<br>%.0f / %.0f" % (
+                lo, go, ratio(lo, go), 100 * not_right(e["layout"]), 100 * not_right(e["grid"])))
+            if meets_goal(e):
+                met.append(level)
+        print("| `%s` | %s | %d of %d%s |" % (engine, " | ".join(cells), len(met), len(levels),
+                                             " (%s)" % ", ".join(met) if met else ""))
 
 
 def main():
@@ -81,8 +141,17 @@ def main():
     parser.add_argument("--work", help="keep every run's output here")
     parser.add_argument("--jsonl", help="append each level's figures to this file")
     parser.add_argument("--engines", nargs="*", default=list(ENGINES))
+    parser.add_argument("--from-jsonl", help="print the tables of figures a --jsonl run saved")
+    parser.add_argument("--without-generic", action="store_true",
+                        help="skip the generic layout's presets (one layout run less per level)")
     args = parser.parse_args()
 
+    if args.from_jsonl:
+        with open(args.from_jsonl) as f:
+            results = {r.pop("level"): r for r in map(json.loads, f)}
+        print_level_tables(results, args.engines)
+        print_summary(results, args.engines)
+        return
     scenes = sorted(glob.glob(os.path.join(args.scenes, "*", "*.scene.json")))
     if args.levels:
         scenes = [s for s in scenes if os.path.basename(os.path.dirname(s)) in args.levels]
@@ -91,26 +160,13 @@ def main():
         for scene in scenes:
             level = os.path.basename(os.path.dirname(scene))
             work = os.path.join(args.work or scratch, level)
-            results[level] = level_figures(args.probeproxy, scene, work, args.engines)
+            results[level] = level_figures(args.probeproxy, scene, work, args.engines,
+                                           not args.without_generic)
             if args.jsonl:
                 with open(args.jsonl, "a") as f:
                     f.write(json.dumps({"level": level, **results[level]}) + "\n")
-    for engine in args.engines:
-        print("\n**%s** (floor over 5 deg / occluded / uncovered / p95 deg)\n" % engine)
-        print("| level | generic layout's presets | layout for %s | same-count grid for %s "
-              "| probes: layout for %s (left out, other box) / grid | over 5 deg, layout / grid "
-              "| not right, layout / grid |" % (engine, engine, engine))
-        print("|---|---|---|---|---|---|---|")
-        for level, r in results.items():
-            e = r["engines"][engine]
-            ratio = e["layout"]["over"] / e["grid"]["over"] if e["grid"]["over"] > 0 else float("nan")
-            probes = "%d (%d, %d%s) / %d" % (
-                e["layout"]["probes"], e["left_out"], e["other_box"],
-                ", %d raised" % e["raised"] if e["raised"] else "", e["grid"]["probes"])
-            wrong = not_right(e["layout"]) / not_right(e["grid"]) if not_right(e["grid"]) > 0 \
-                else float("nan")
-            print("| %s | %s | %s | %s | %s | %.2f | %.2f |" % (
-                level, cell(e["today"]), cell(e["layout"]), cell(e["grid"]), probes, ratio, wrong))
+    print_level_tables(results, args.engines)
+    print_summary(results, args.engines)
 
 
 if __name__ == "__main__":
