@@ -272,7 +272,8 @@ void chooseProbeEntries(EnginePresetChoice& choice, const Scene& scene,
       e.eevee.reset();
   }
   const EngineModel model = engineModel(engine, optionPresets, options.blend);
-  // The model holds the options with an entry for the engine; each its probe, box and priority.
+  // The model holds the options with an entry for the engine; each names its probe and how it
+  // is made.
   std::vector<int> probeOf, start(builds.size(), -1);
   for (std::size_t j = 0; j < model.probes.size(); ++j) {
     const EntryOption& o = entryOptions[static_cast<std::size_t>(model.probes[j].sceneProbe)];

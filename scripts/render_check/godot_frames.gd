@@ -98,6 +98,21 @@ func instance(mesh, material, layers):
 	return node
 
 
+func see_the_whole_level(camera, vertices, width, height):
+	# An orthographic camera over the level's bounds, looking down, its frame holding them all.
+	var lo = v3(vertices[0])
+	var hi = lo
+	for v in vertices:
+		var p = v3(v)
+		lo = Vector3(min(lo.x, p.x), min(lo.y, p.y), min(lo.z, p.z))
+		hi = Vector3(max(hi.x, p.x), max(hi.y, p.y), max(hi.z, p.z))
+	var middle = 0.5 * (lo + hi)
+	var span = max(hi.x - lo.x, (hi.z - lo.z) * float(width) / float(height)) * 1.1 + 1.0
+	var above = hi.y - lo.y + 10.0
+	camera.set_orthogonal(span, 0.05, above + 10.0)
+	camera.look_at_from_position(Vector3(middle.x, hi.y + 10.0, middle.z), middle, Vector3(0, 0, -1))
+
+
 func _init():
 	var args = OS.get_cmdline_args()
 	var spec = read_json(args[args.size() - 1])
@@ -131,10 +146,13 @@ func _init():
 	var probe_count = 0
 	if probed:
 		probe_count = root.get_node("probeproxy_probes").get_child_count()
+	# Godot 3 queues a probe for its update only while the camera's frustum holds it
+	# (VisualServerScene::_prepare_scene), so the probes are made looking down on the whole level.
+	see_the_whole_level(camera, spec["level"]["vertices"], spec["width"], spec["height"])
 	for i in range(SETTLE_FRAMES + FRAMES_PER_PROBE * probe_count):
 		yield(self, "idle_frame")
 	for c in spec["cameras"]:
-		camera.fov = c["hfov_deg"]
+		camera.set_perspective(c["hfov_deg"], camera.near, spec["far"])
 		camera.look_at_from_position(v3(c["eye"]), v3(c["target"]), Vector3.UP)
 		for i in range(3):
 			yield(self, "idle_frame")
