@@ -274,11 +274,16 @@ def set_pixels(module, args, proxies, views, meta):
 
 
 def figures(errors):
-    valid = errors[~np.isnan(errors)]
+    """Median, p95 and share over 5 deg of the pixels a probe reaches; and of all mirror pixels
+    the share not right: over 5 deg, or showing no probe (the world where the level stands)."""
+    shown = ~np.isnan(errors)
+    valid = errors[shown]
+    not_right = float(np.mean(~shown | (np.where(shown, errors, 0.0) > OVER_DEG)))
     if valid.size == 0:
-        return {"median_deg": None, "p95_deg": None, "over_5_share": None}
+        return {"median_deg": None, "p95_deg": None, "over_5_share": None,
+                "not_right_share": not_right}
     return {"median_deg": float(np.median(valid)), "p95_deg": float(np.percentile(valid, 95)),
-            "over_5_share": float(np.mean(valid > OVER_DEG))}
+            "over_5_share": float(np.mean(valid > OVER_DEG)), "not_right_share": not_right}
 
 
 def level_survey(out, name):
@@ -332,10 +337,12 @@ def picture(module, path, camera, rows, width, height, engine):
             ax.imshow(np.ma.masked_invalid(image), cmap=cmap, norm=norm,
                       interpolation="nearest")
             over = figs["over_5_share"]
-            ax.set_title("%s, %s by %s: median %s deg, %s over 5 deg" % (
+            unseen = float(np.mean(np.isnan(pixels[kind])))
+            ax.set_title("%s, %s by %s: median %s deg, %s over 5 deg%s" % (
                 name, kind, RENDERER_NAMES[engine] if kind == "rendered" else "the model",
                 "-" if figs["median_deg"] is None else "%.2f" % figs["median_deg"],
-                "-" if over is None else "%.0f%%" % (100 * over)), fontsize=9)
+                "-" if over is None else "%.0f%%" % (100 * over),
+                ", %.0f%% no probe" % (100 * unseen) if unseen > 0 else ""), fontsize=9)
             ax.set_xticks([]), ax.set_yticks([])
     bar = fig.colorbar(plt.cm.ScalarMappable(norm=norm, cmap=cmap), ax=axes, orientation=
                        "horizontal", fraction=0.04, pad=0.03, ticks=edges[:-1])
@@ -407,10 +414,11 @@ def main():
         json.dump(report, f, indent=1)
     for name, s in report["sets"].items():
         r, p = s["rendered"], s["predicted"]
-        print("%-8s rendered: median %s p95 %s over 5 %s uncovered %.0f%% | predicted: over 5 %s "
-              "uncovered %.0f%% | median |diff| %s deg" % (
+        print("%-8s rendered: median %s p95 %s over 5 %s uncovered %.0f%% not right %s | "
+              "predicted: over 5 %s uncovered %.0f%% not right %s | median |diff| %s deg" % (
                   name, fmt(r["median_deg"]), fmt(r["p95_deg"]), pct(r["over_5_share"]),
-                  100 * r["uncovered_share"], pct(p["over_5_share"]), 100 * p["uncovered_share"],
+                  100 * r["uncovered_share"], pct(r["not_right_share"]), pct(p["over_5_share"]),
+                  100 * p["uncovered_share"], pct(p["not_right_share"]),
                   fmt(s["median_abs_difference_deg"])))
     if args.require_agreement:
         disagree = [name for name, s in report["sets"].items() if not agrees(s)]
@@ -424,7 +432,9 @@ def main():
 
 def agrees(s):
     d, share = s["median_abs_difference_deg"], s["over_5_share_difference"]
-    return d is not None and d < AGREE_DEG and share is not None and abs(share) <= AGREE_SHARE
+    wrong = s["rendered"]["not_right_share"] - s["predicted"]["not_right_share"]
+    return (d is not None and d < AGREE_DEG and share is not None and abs(share) <= AGREE_SHARE
+            and abs(wrong) <= AGREE_SHARE)
 
 
 def fmt(v):
