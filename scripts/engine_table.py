@@ -54,11 +54,11 @@ def level_figures(probeproxy, scene, work, engines, generic=True):
     tuned = run_json(probeproxy, "layout", scene, "--out", engine, "--json", "--engine", names)
     baseline = run_json(probeproxy, "layout", scene, "--out", grid, "--json", "--baseline",
                         "grid", "--max-probes", str(tuned["probes"]), "--engine", names)
+    # The same probes as `layout` alone writes them: the engine stage changes only the presets
+    # (and with one engine named, its survey is that engine's, so the generic one comes from here).
+    layout = run_json(probeproxy, "layout", scene, "--out", plain, "--json") if generic else None
     out = {"probes": tuned["probes"], "grid_probes": baseline["probes"],
-           "generic": figures(tuned["survey"]), "engines": {}}
-    # The same probes as `layout` alone writes them: the engine stage changes only the presets.
-    if generic:
-        run_json(probeproxy, "layout", scene, "--out", plain, "--json")
+           "generic": layout and figures(layout["survey"]), "engines": {}}
     for engine in engines:
         today = run_json(probeproxy, "survey", os.path.join(plain, "layout.scene.json"),
                          "--engine", engine, "--proxies", os.path.join(plain, "proxies.json"),
