@@ -64,7 +64,7 @@ std::vector<int> enginePriorities(Engine engine);
 // first.
 std::vector<EnginePresetPolicy> enginePresetPolicies(Engine engine);
 
-// Whether, after the policy, each probe's entry is chosen (its box and priority, or none:
+// Whether, after the policy, each probe's entry is chosen (its box, priority and capture point, or none:
 // engine_preset_options.h). A baseline keeps every probe's default box; a layout chooses, but
 // never leaves out its first `keptProbes` (the artist's probes `--keep-authored` kept).
 struct ProbeEntries {
