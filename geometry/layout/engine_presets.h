@@ -64,9 +64,10 @@ std::vector<int> enginePriorities(Engine engine);
 // first.
 std::vector<EnginePresetPolicy> enginePresetPolicies(Engine engine);
 
-// Whether, after the policy, each probe's entry is chosen (its box, priority and capture point, or none:
-// engine_preset_options.h). A baseline keeps every probe's default box; a layout chooses, but
-// never leaves out its first `keptProbes` (the artist's probes `--keep-authored` kept).
+// Whether, after the policy, each probe's entry is chosen (its box, priority and capture point,
+// or none: engine_preset_options.h). A baseline keeps every probe's default box; a layout
+// chooses, but never leaves out its first `keptProbes` (the artist's probes `--keep-authored`
+// kept).
 struct ProbeEntries {
   bool choose = true;
   std::size_t keptProbes = 0;
