@@ -49,11 +49,13 @@ def main():
         info = run_json([args.probeproxy, "level-info", pk3, "--map", level["map"]])
         rows = {}
         for proxy, _ in rows_wanted:
+            pictures = args.maps and name in args.pictures and proxy != "infinite"
             with tempfile.TemporaryDirectory() as out:
+                # Without --out the survey draws no error map: only the figures are wanted.
                 rows[proxy] = run_json([args.probeproxy, "survey", scene_file, "--json",
-                                        "--proxy", proxy, "--tolerance-deg", args.tolerance_deg,
-                                        "--out", out])
-                if args.maps and name in args.pictures and proxy != "infinite":
+                                        "--proxy", proxy, "--tolerance-deg", args.tolerance_deg]
+                                       + (["--out", out] if pictures else []))
+                if pictures:
                     for png in sorted(glob.glob(os.path.join(out, "*.png"))):
                         target = os.path.join(args.maps, "corpus_%s_%s_%s" % (
                             name, proxy if proxy != "scene" else "kept",

@@ -34,6 +34,8 @@ rm -rf "$target"
 mkdir -p "$target"
 cp "$here"/plugin/blender/probeproxy_addon/*.py "$target/"
 cp "$module" "$target/"
+# OpenImageIO's module, which the Python module loads from beside itself for its first image.
+cp "$build/core/libprobeproxy_image_codec.so" "$target/"
 "$blender" -b --python-expr "import addon_utils, bpy
 m = addon_utils.enable('probeproxy_addon', default_set=True, handle_error=None)
 from probeproxy_addon import native

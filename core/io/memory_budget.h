@@ -12,8 +12,8 @@ namespace probeproxy {
 
 std::uint64_t usableMemoryBytes();
 
-// The program and its libraries, resident before a level is read (139 MB measured: OpenImageIO
-// brings in some 260 shared libraries).
+// The program and its libraries (139 MB measured with OpenImageIO's 260 shared libraries, which
+// load with the first picture a job writes or the first image it reads; 19 MB without).
 inline constexpr std::uint64_t kProcessBytes = 160ull << 20;
 
 // Throws InputError(what, ...) when `neededBytes` exceed the budget: `budgetBytes`, or

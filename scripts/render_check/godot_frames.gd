@@ -1,15 +1,16 @@
 # Godot 3's side of the render check (scripts/render_check.py runs it with godot3-runner under
-# xvfb-run, GLES3 on Mesa's llvmpipe, one process per pass): the level with position-coded walls,
-# a mirror floor, the ReflectionProbes the shipped importer makes from a proxies.json, and one
-# frame per camera, saved as raw half floats (RGBA, rows top down) for the check to decode.
+# xvfb-run, GLES3 on Mesa's llvmpipe, one process per set of probes): per pass, the level with
+# position-coded walls, a mirror floor, the ReflectionProbes the shipped importer makes from a
+# proxies.json, and one frame per camera, saved as raw half floats (RGBA, rows top down) for
+# the check to decode.
 #
 #   godot3-runner --path DIR -s godot_frames.gd --args SPEC.json
 #
 # SPEC (written by render_check.py; the level and cameras in Godot's axes, metres): level
-# {vertices, triangles}, cameras [{name, eye, target, hfov_deg}], width, height, far, name, pass
-# ("position", "normal", "white" or "code"), lo and size (the coded box, world axes), code
-# {axis, period} for "code" (a world axis), proxies (the proxies.json, absent for the passes
-# without probes), importer (plugin/engines/godot), out. Colours are in the world's axes (Z up:
+# {vertices, triangles}, cameras [{name, eye, target, hfov_deg}], width, height, far, lo and
+# size (the coded box, world axes), importer (plugin/engines/godot), out, and passes, each
+# {name, pass ("position", "normal", "white" or "code"), code {axis, period} for "code" (a
+# world axis), proxies (the proxies.json, absent for the passes without probes)}. Colours are in the world's axes (Z up:
 # world (x, y, z) = Godot (x, -z, y)), as EEVEE's frames are, so one decoder reads both.
 #
 # The probes see the walls and a copy of the floor coded like them (layer 2); the camera sees
@@ -61,15 +62,15 @@ func level_meshes(level):
 	return [walls.commit(), floor_.commit()]
 
 
-func coded_material(spec):
+func coded_material(spec, step):
 	var colour = "vec3(1.0)"
-	if spec["pass"] == "position":
+	if step["pass"] == "position":
 		colour = "w - LO"
-	elif spec["pass"] == "normal":
+	elif step["pass"] == "normal":
 		colour = "0.5 + 0.5 * vec3(wn.x, -wn.z, wn.y)"
-	elif spec["pass"] == "code":
-		var a = spec["code"]["axis"]
-		var period = spec["code"]["period"]
+	elif step["pass"] == "code":
+		var a = step["code"]["axis"]
+		var period = step["code"]["period"]
 		colour = ("vec3(1.0 + (w[%d] - LO[%d]) / SIZE[%d], 0.5 + 0.5 * cos(6.283185307 * w[%d] / %.9f), 0.5 + 0.5 * sin(6.283185307 * w[%d] / %.9f))"
 			% [a, a, a, a, period, a, period])
 	var lo = spec["lo"]
@@ -113,26 +114,30 @@ func see_the_whole_level(camera, vertices, width, height):
 	camera.look_at_from_position(Vector3(middle.x, hi.y + 10.0, middle.z), middle, Vector3(0, 0, -1))
 
 
-func _init():
-	var args = OS.get_cmdline_args()
-	var spec = read_json(args[args.size() - 1])
+func probed_scene(spec, step, meshes, importer):
+	# The walls coded for this pass; with probes, the mirror floor the camera sees and the coded
+	# floor the probes see.
 	var root = Spatial.new()
-	get_root().add_child(root)
-	var meshes = level_meshes(spec["level"])
-	var coded = coded_material(spec)
-	var probed = spec.has("proxies")
+	var coded = coded_material(spec, step)
 	root.add_child(instance(meshes[0], coded, 1 | 2))
-	if probed:
+	if step.has("proxies"):
 		root.add_child(instance(meshes[1], mirror_material(), 1))
 		root.add_child(instance(meshes[1], coded, 2))
-		var importer = load(spec["importer"] + "/probeproxy_import.gd")
-		var probes = importer.import_probes(spec["proxies"])
+		var probes = importer.import_probes(step["proxies"])
 		for p in probes.get_children():
 			p.cull_mask = 2
 			p.update_mode = ReflectionProbe.UPDATE_ONCE
 		root.add_child(probes)
 	else:
 		root.add_child(instance(meshes[1], coded, 1))
+	return root
+
+
+func _init():
+	var args = OS.get_cmdline_args()
+	var spec = read_json(args[args.size() - 1])
+	var meshes = level_meshes(spec["level"])
+	var importer = load(spec["importer"] + "/probeproxy_import.gd")
 	get_root().hdr = true
 	get_root().keep_3d_linear = true  # the codes as written, no sRGB curve
 	get_root().size = Vector2(spec["width"], spec["height"])
@@ -141,26 +146,34 @@ func _init():
 	camera.keep_aspect = Camera.KEEP_WIDTH
 	camera.near = 0.05
 	camera.far = spec["far"]
-	root.add_child(camera)
+	get_root().add_child(camera)
 	camera.current = true
-	var probe_count = 0
-	if probed:
-		probe_count = root.get_node("probeproxy_probes").get_child_count()
-	# Godot 3 queues a probe for its update only while the camera's frustum holds it
-	# (VisualServerScene::_prepare_scene), so the probes are made looking down on the whole level.
-	see_the_whole_level(camera, spec["level"]["vertices"], spec["width"], spec["height"])
-	for i in range(SETTLE_FRAMES + FRAMES_PER_PROBE * probe_count):
-		yield(self, "idle_frame")
-	for c in spec["cameras"]:
-		camera.set_perspective(c["hfov_deg"], camera.near, spec["far"])
-		camera.look_at_from_position(v3(c["eye"]), v3(c["target"]), Vector3.UP)
-		for i in range(3):
+	# One process for every pass: each gets a scene of its own, and its probes, made anew, are
+	# captured anew.
+	for step in spec["passes"]:
+		var scene = probed_scene(spec, step, meshes, importer)
+		get_root().add_child(scene)
+		var probe_count = 0
+		if step.has("proxies"):
+			probe_count = scene.get_node("probeproxy_probes").get_child_count()
+		# Godot 3 queues a probe for its update only while the camera's frustum holds it
+		# (VisualServerScene::_prepare_scene), so the probes are made looking down on the whole
+		# level.
+		see_the_whole_level(camera, spec["level"]["vertices"], spec["width"], spec["height"])
+		for i in range(SETTLE_FRAMES + FRAMES_PER_PROBE * probe_count):
 			yield(self, "idle_frame")
-		var image = get_root().get_texture().get_data()
-		image.flip_y()
-		image.convert(Image.FORMAT_RGBAH)
-		var file = File.new()
-		file.open("%s/%s_%s.rgbah" % [spec["out"], c["name"], spec["name"]], File.WRITE)
-		file.store_buffer(image.get_data())
-		file.close()
+		for c in spec["cameras"]:
+			camera.set_perspective(c["hfov_deg"], camera.near, spec["far"])
+			camera.look_at_from_position(v3(c["eye"]), v3(c["target"]), Vector3.UP)
+			for i in range(3):
+				yield(self, "idle_frame")
+			var image = get_root().get_texture().get_data()
+			image.flip_y()
+			image.convert(Image.FORMAT_RGBAH)
+			var file = File.new()
+			file.open("%s/%s_%s.rgbah" % [spec["out"], c["name"], step["name"]], File.WRITE)
+			file.store_buffer(image.get_data())
+			file.close()
+		get_root().remove_child(scene)
+		scene.free()
 	quit()

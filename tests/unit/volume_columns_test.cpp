@@ -34,7 +34,9 @@ TEST(VolumeColumns, NearHoldsEveryVolumeMeetingTheSquareOnceInOrder) {
     EXPECT_EQ(std::adjacent_find(near.begin(), near.end()), near.end());
     for (std::uint32_t v = 0; v < lo.size(); ++v) {
       const bool meets = lo[v].x <= b.x && a.x <= hi[v].x && lo[v].y <= b.y && a.y <= hi[v].y;
-      if (meets) EXPECT_TRUE(std::binary_search(near.begin(), near.end(), v)) << q << " " << v;
+      if (meets) {
+        EXPECT_TRUE(std::binary_search(near.begin(), near.end(), v)) << q << " " << v;
+      }
     }
   }
 }
