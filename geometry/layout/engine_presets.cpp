@@ -335,13 +335,15 @@ EnginePresetChoice choose(Engine engine, PresetsByPolicy& presetsOf, const Level
 std::vector<EnginePresetChoice> choosePresetsForEngines(
     std::span<const Engine> engines, const Scene& scene, const std::vector<ProbeProxyBuild>& builds,
     const LevelRayCaster& level, const SurveyFloor& floor, const SurveyFloor& trialFloor,
-    const SurveyOptions& survey, ProbeEntries entries) {
+    const SurveyOptions& survey, ProbeEntries entries,
+    const std::function<void(Engine)>& onEngineDone) {
   PresetsByPolicy presetsOf(scene, builds);  // most policies are tried by every engine
   std::vector<EnginePresetChoice> choices;
   for (const Engine engine : engines) {
     if (engine == Engine::Generic) continue;
     choices.push_back(choose(engine, presetsOf, level, floor, trialFloor, survey,
                              enginePresetPolicies(engine), entries));
+    if (onEngineDone) onEngineDone(engine);
   }
   return choices;
 }

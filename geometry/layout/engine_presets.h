@@ -17,6 +17,7 @@
 #include "geometry/survey/survey_options.h"
 #include "geometry/survey/survey_result.h"
 
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -77,11 +78,12 @@ struct ProbeEntries {
 // enginePresetPolicies(). `floor` is the layout's prepared survey floor, `trialFloor` the same
 // floor with fewer samples per cell, on which the policies are compared and each probe's entry
 // under the kept one chosen as `entries` says; the kept presets are then surveyed on `floor` with
-// the options `survey`.
+// the options `survey`. `onEngineDone`, when given, is told each engine as its choice is made.
 std::vector<EnginePresetChoice> choosePresetsForEngines(
     std::span<const Engine> engines, const Scene& scene, const std::vector<ProbeProxyBuild>& builds,
     const LevelRayCaster& level, const SurveyFloor& floor, const SurveyFloor& trialFloor,
-    const SurveyOptions& survey, ProbeEntries entries);
+    const SurveyOptions& survey, ProbeEntries entries,
+    const std::function<void(Engine)>& onEngineDone = {});
 
 // The export with each chosen engine's entries made by its kept policy (Unreal's box and
 // sphere captures both by Unreal's) from the boxes it chose, every other entry by the default

@@ -320,7 +320,7 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
   r.layout = runLayout(rayCaster, seeds, layout, progress, kept);
   // The job's own stages after the layout's, told the same way.
   auto lapStart = std::chrono::steady_clock::now();
-  const auto stageDone = [&](const char* stage) {
+  const auto stageDone = [&](std::string_view stage) {
     const auto now = std::chrono::steady_clock::now();
     if (layout.onStageDone)
       layout.onStageDone(stage, std::chrono::duration<double>(now - lapStart).count());
@@ -385,10 +385,11 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
     // The artist's probes come first in the scene and stay in every engine.
     const ProbeEntries entries{o.layout.baseline == LayoutBaseline::None,
                                o.layout.keepAuthored ? input.probes.size() : 0};
-    r.engines = choosePresetsForEngines(o.engines, r.scene, r.builds, rayCaster, floor, trialFloor,
-                                        survey, entries);
+    // A stage an engine: one engine's option search can take most of a run.
+    r.engines = choosePresetsForEngines(
+        o.engines, r.scene, r.builds, rayCaster, floor, trialFloor, survey, entries,
+        [&](Engine engine) { stageDone("engine " + std::string(engineName(engine))); });
     if (o.engines.size() == 1 && !r.engines.empty()) r.survey = r.engines.front().survey;
-    stageDone("engines");
   }
   r.survey.scene = baselineName(o.layout.baseline);
   r.json = layoutReportJson(o, r);
