@@ -1,11 +1,14 @@
 #include "geometry/layout/engine_preset_options.h"
 
+#include "geometry/evaluation/reflection_samples.h"
 #include "geometry/survey/blended_error.h"
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <utility>
@@ -88,18 +91,35 @@ class OptionSearch {
       optionsOf_.at(static_cast<std::size_t>(probeOf_[j])).push_back(static_cast<int>(j));
     for (const int c : chosen_)
       if (c >= 0) active_.at(static_cast<std::size_t>(c)) = 1;
-    tbb::parallel_for(std::size_t{0}, reach_.size(), [&](std::size_t i) {
-      const ReflectionSample& s = floor.samples[i].sample;
-      for (const ProbeFade& f : model_.fades(s.xMeters, s.eyeMeters)) {
-        const EngineProbe& option = model_.probes[static_cast<std::size_t>(f.probe)];
-        reach_[i].options.push_back({f.probe, f.fade, engineProbeSight(level, option, s)});
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, reach_.size()), [&](const auto& range) {
+      // The options of one probe share its capture point (but EEVEE's captured at their box's
+      // centre): per sample, the ray from a probe's capture point to the true hit is cast once.
+      struct Cast {
+        std::size_t sample = SIZE_MAX;
+        glm::dvec3 captureMeters{};
+        bool hidden = false;
+      };
+      std::vector<Cast> castFrom(chosen_.size());  // per probe, its latest cast
+      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+        const ReflectionSample& s = floor.samples[i].sample;
+        for (const ProbeFade& f : model_.fades(s.xMeters, s.eyeMeters)) {
+          const auto option = static_cast<std::size_t>(f.probe);
+          Cast& cast = castFrom[static_cast<std::size_t>(probeOf_[option])];
+          const auto hiddenFrom = [&](const glm::dvec3& captureMeters) {
+            if (cast.sample != i || cast.captureMeters != captureMeters)
+              cast = {i, captureMeters, trueHitHiddenFrom(level, captureMeters, s)};
+            return cast.hidden;
+          };
+          reach_[i].options.push_back(
+              {f.probe, f.fade, engineProbeSight(model_.probes[option], s, hiddenFrom)});
+        }
+        reach_[i].areaSquareMeters = floor.samples[i].areaSquareMeters;
+        for (std::size_t k = 0; k < reach_[i].options.size(); ++k)
+          if (active_[static_cast<std::size_t>(reach_[i].options[k].option)])
+            reach_[i].active.push_back(static_cast<int>(k));
+        settle(reach_[i]);
+        bad_[i] = badAreaWith(i, -1, -1);
       }
-      reach_[i].areaSquareMeters = floor.samples[i].areaSquareMeters;
-      for (std::size_t k = 0; k < reach_[i].options.size(); ++k)
-        if (active_[static_cast<std::size_t>(reach_[i].options[k].option)])
-          reach_[i].active.push_back(static_cast<int>(k));
-      settle(reach_[i]);
-      bad_[i] = badAreaWith(i, -1, -1);
     });
     for (std::size_t i = 0; i < reach_.size(); ++i) {
       floorArea_ += reach_[i].areaSquareMeters;

@@ -20,14 +20,21 @@ SurveySampleError blendedSampleError(const LevelRayCaster& level,
   });
 }
 
-ProbeSight engineProbeSight(const LevelRayCaster& level, const EngineProbe& probe,
-                            const ReflectionSample& sample) {
+ProbeSight engineProbeSight(const EngineProbe& probe, const ReflectionSample& sample,
+                            const std::function<bool(const glm::dvec3&)>& hiddenFrom) {
   ProbeSight sight;
   sight.captured = sample.hitsSky || capturedAt(probe, sample.trueHitMeters);
   if (!sight.captured) return sight;
-  sight.hidden = trueHitHiddenFrom(level, probe.captureMeters, sample);
+  sight.hidden = hiddenFrom(probe.captureMeters);
   if (!sight.hidden) sight.errorDeg = engineLookupErrorDeg(probe, sample);
   return sight;
+}
+
+ProbeSight engineProbeSight(const LevelRayCaster& level, const EngineProbe& probe,
+                            const ReflectionSample& sample) {
+  return engineProbeSight(probe, sample, [&](const glm::dvec3& captureMeters) {
+    return trueHitHiddenFrom(level, captureMeters, sample);
+  });
 }
 
 SurveySampleError blendedSampleError(const LevelRayCaster& level, const EngineModel& model,

@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <span>
 
@@ -121,6 +122,12 @@ struct FadeSums {
 // What probe `probe` of the model shows at the sample, computed as far as it is read.
 ProbeSight engineProbeSight(const LevelRayCaster& level, const EngineProbe& probe,
                             const ReflectionSample& sample);
+
+// The same, with `hiddenFrom(captureMeters)` saying whether the sample's true hit is hidden from
+// the probe's capture point (trueHitHiddenFrom: one ray): a caller that judges many probes
+// sharing capture points at one sample casts each ray once.
+ProbeSight engineProbeSight(const EngineProbe& probe, const ReflectionSample& sample,
+                            const std::function<bool(const glm::dvec3&)>& hiddenFrom);
 
 // The generic model (Lagarde or Enlighten over the probes' influence volumes, kBlendLiftMeters
 // above the floor point). `volumes[i]` is `probes[i].influence` (passed apart so blendWeights
