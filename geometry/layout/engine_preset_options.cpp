@@ -1,14 +1,12 @@
 #include "geometry/layout/engine_preset_options.h"
 
-#include "geometry/evaluation/reflection_samples.h"
 #include "geometry/survey/blended_error.h"
+#include "geometry/survey/capture_sights.h"
 
-#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <utility>
@@ -73,8 +71,8 @@ struct Move {
 class OptionSearch {
  public:
   OptionSearch(const EngineModel& model, std::span<const int> probeOf, std::vector<int> start,
-               const SurveyFloor& floor, const LevelRayCaster& level, double toleranceDeg,
-               std::size_t keptProbes)
+               const SurveyFloor& floor, const LevelRayCaster& level, CaptureSights& sights,
+               double toleranceDeg, std::size_t keptProbes)
       : model_(model),
         probeOf_(probeOf),
         toleranceDeg_(toleranceDeg),
@@ -91,35 +89,24 @@ class OptionSearch {
       optionsOf_.at(static_cast<std::size_t>(probeOf_[j])).push_back(static_cast<int>(j));
     for (const int c : chosen_)
       if (c >= 0) active_.at(static_cast<std::size_t>(c)) = 1;
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, reach_.size()), [&](const auto& range) {
-      // The options of one probe share its capture point (but EEVEE's captured at their box's
-      // centre): per sample, the ray from a probe's capture point to the true hit is cast once.
-      struct Cast {
-        std::size_t sample = SIZE_MAX;
-        glm::dvec3 captureMeters{};
-        bool hidden = false;
-      };
-      std::vector<Cast> castFrom(chosen_.size());  // per probe, its latest cast
-      for (std::size_t i = range.begin(); i != range.end(); ++i) {
-        const ReflectionSample& s = floor.samples[i].sample;
-        for (const ProbeFade& f : model_.fades(s.xMeters, s.eyeMeters)) {
-          const auto option = static_cast<std::size_t>(f.probe);
-          Cast& cast = castFrom[static_cast<std::size_t>(probeOf_[option])];
-          const auto hiddenFrom = [&](const glm::dvec3& captureMeters) {
-            if (cast.sample != i || cast.captureMeters != captureMeters)
-              cast = {i, captureMeters, trueHitHiddenFrom(level, captureMeters, s)};
-            return cast.hidden;
-          };
-          reach_[i].options.push_back(
-              {f.probe, f.fade, engineProbeSight(model_.probes[option], s, hiddenFrom)});
-        }
-        reach_[i].areaSquareMeters = floor.samples[i].areaSquareMeters;
-        for (std::size_t k = 0; k < reach_[i].options.size(); ++k)
-          if (active_[static_cast<std::size_t>(reach_[i].options[k].option)])
-            reach_[i].active.push_back(static_cast<int>(k));
-        settle(reach_[i]);
-        bad_[i] = badAreaWith(i, -1, -1);
+    // The options of one probe share its capture point (but EEVEE's captured at their box's
+    // centre): the ray from it to a sample's true hit is cast once, here and in the surveys
+    // that share `sights`.
+    const std::vector<std::uint32_t> captureOf = sights.idsOf(model_.probes);
+    tbb::parallel_for(std::size_t{0}, reach_.size(), [&](std::size_t i) {
+      const ReflectionSample& s = floor.samples[i].sample;
+      for (const ProbeFade& f : model_.fades(s.xMeters, s.eyeMeters)) {
+        const auto option = static_cast<std::size_t>(f.probe);
+        const ProbeSight sight = engineProbeSight(
+            model_.probes[option], s, [&] { return sights.hidden(level, i, captureOf[option]); });
+        reach_[i].options.push_back({f.probe, f.fade, sight});
       }
+      reach_[i].areaSquareMeters = floor.samples[i].areaSquareMeters;
+      for (std::size_t k = 0; k < reach_[i].options.size(); ++k)
+        if (active_[static_cast<std::size_t>(reach_[i].options[k].option)])
+          reach_[i].active.push_back(static_cast<int>(k));
+      settle(reach_[i]);
+      bad_[i] = badAreaWith(i, -1, -1);
     });
     for (std::size_t i = 0; i < reach_.size(); ++i) {
       floorArea_ += reach_[i].areaSquareMeters;
@@ -298,11 +285,13 @@ class OptionSearch {
 std::vector<int> chooseEngineOptions(const EngineModel& model, std::span<const int> probeOf,
                                      std::vector<int> start, const SurveyFloor& floor,
                                      const LevelRayCaster& level, double toleranceDeg,
-                                     std::size_t keptProbes) {
+                                     std::size_t keptProbes, CaptureSights* sights) {
   if (probeOf.size() != model.probes.size())
     throw std::invalid_argument("chooseEngineOptions: one probe per option");
   if (!model.fades || !model.compose) return start;
-  return OptionSearch(model, probeOf, std::move(start), floor, level, toleranceDeg, keptProbes)
+  CaptureSights own(floor);
+  return OptionSearch(model, probeOf, std::move(start), floor, level, sights ? *sights : own,
+                      toleranceDeg, keptProbes)
       .run();
 }
 

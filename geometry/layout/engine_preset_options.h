@@ -36,10 +36,11 @@ inline constexpr double kLeastOptionGain = 0.0005;
 // starts with, -1 for none. Returns, per probe, the option kept, -1 where the engine is better
 // without the probe. A model without a separable blend (the generic one) keeps `start`.
 // `floor` is the floor the choice is made on (a layout's trial floor). Probes below
-// `keptProbes` may take another option but are never left out.
+// `keptProbes` may take another option but are never left out. `sights`, made for `floor`, keeps
+// the rays cast from capture points for other searches and surveys of it.
 std::vector<int> chooseEngineOptions(const EngineModel& model, std::span<const int> probeOf,
                                      std::vector<int> start, const SurveyFloor& floor,
                                      const LevelRayCaster& level, double toleranceDeg,
-                                     std::size_t keptProbes = 0);
+                                     std::size_t keptProbes = 0, CaptureSights* sights = nullptr);
 
 }  // namespace probeproxy

@@ -5,6 +5,7 @@
 #include "geometry/layout/layout_candidates.h"
 #include "geometry/probe_proxies/build_scene_proxies.h"
 #include "geometry/raycast/open_space.h"
+#include "geometry/survey/capture_sights.h"
 
 #include <glm/geometric.hpp>
 
@@ -220,7 +221,8 @@ struct EntryOption {
 void chooseProbeEntries(EnginePresetChoice& choice, const Scene& scene,
                         const std::vector<ProbeProxyBuild>& builds, const RuntimeExport& defaults,
                         const LevelRayCaster& level, const SurveyFloor& trialFloor,
-                        const SurveyOptions& options, std::size_t keptProbes) {
+                        CaptureSights& trialSights, const SurveyOptions& options,
+                        std::size_t keptProbes) {
   const Engine engine = choice.engine;
   std::vector<int> priorities = enginePriorities(engine);
   const bool prioritised = !priorities.empty();
@@ -281,8 +283,8 @@ void chooseProbeEntries(EnginePresetChoice& choice, const Scene& scene,
     if (o.box == kDefaultBox && o.priority == priorities.front() && !o.atBoxCentre)
       start[static_cast<std::size_t>(o.probe)] = static_cast<int>(j);
   }
-  const std::vector<int> chosen = chooseEngineOptions(model, probeOf, start, trialFloor, level,
-                                                      options.toleranceDeg, keptProbes);
+  const std::vector<int> chosen = chooseEngineOptions(
+      model, probeOf, start, trialFloor, level, options.toleranceDeg, keptProbes, &trialSights);
   choice.boxFrom.assign(builds.size(), kDefaultBox);
   if (prioritised) choice.priority.assign(builds.size(), priorities.front());
   choice.atBoxCentre.assign(builds.size(), false);
@@ -304,8 +306,8 @@ void chooseProbeEntries(EnginePresetChoice& choice, const Scene& scene,
 // under it as `entries` says, and the kept presets surveyed on `floor`.
 EnginePresetChoice choose(Engine engine, PresetsByPolicy& presetsOf, const LevelRayCaster& level,
                           const SurveyFloor& floor, const SurveyFloor& trialFloor,
-                          const SurveyOptions& survey, std::span<const EnginePresetPolicy> policies,
-                          ProbeEntries entries) {
+                          CaptureSights& trialSights, const SurveyOptions& survey,
+                          std::span<const EnginePresetPolicy> policies, ProbeEntries entries) {
   SurveyOptions options = survey;
   options.engine = engine;
   EnginePresetChoice best;
@@ -313,7 +315,7 @@ EnginePresetChoice choose(Engine engine, PresetsByPolicy& presetsOf, const Level
   SurveyFigures bestTrial;
   for (const EnginePresetPolicy& policy : policies) {
     const SurveyResult trial = surveyModel(engineModel(engine, presetsOf(policy), options.blend),
-                                           trialFloor, level, options);
+                                           trialFloor, level, options, &trialSights);
     best.trials.push_back({policy, trial.figures});
     if (best.trials.size() == 1 || better(trial.figures, bestTrial)) {
       best.policy = policy;
@@ -322,7 +324,7 @@ EnginePresetChoice choose(Engine engine, PresetsByPolicy& presetsOf, const Level
   }
   if (entries.choose)
     chooseProbeEntries(best, presetsOf.scene(), presetsOf.builds(), presetsOf(best.policy), level,
-                       trialFloor, options, entries.keptProbes);
+                       trialFloor, trialSights, options, entries.keptProbes);
   const RuntimeExport kept =
       entries.choose ? asWritten(enginePresets(best, presetsOf.scene(), presetsOf.builds()))
                      : presetsOf(best.policy);
@@ -338,10 +340,13 @@ std::vector<EnginePresetChoice> choosePresetsForEngines(
     const SurveyOptions& survey, ProbeEntries entries,
     const std::function<void(Engine)>& onEngineDone) {
   PresetsByPolicy presetsOf(scene, builds);  // most policies are tried by every engine
+  // Every engine's trials and option searches look from the same capture points at the same
+  // trial floor: each ray is cast once for all of them.
+  CaptureSights trialSights(trialFloor);
   std::vector<EnginePresetChoice> choices;
   for (const Engine engine : engines) {
     if (engine == Engine::Generic) continue;
-    choices.push_back(choose(engine, presetsOf, level, floor, trialFloor, survey,
+    choices.push_back(choose(engine, presetsOf, level, floor, trialFloor, trialSights, survey,
                              enginePresetPolicies(engine), entries));
     if (onEngineDone) onEngineDone(engine);
   }

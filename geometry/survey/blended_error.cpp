@@ -21,27 +21,35 @@ SurveySampleError blendedSampleError(const LevelRayCaster& level,
 }
 
 ProbeSight engineProbeSight(const EngineProbe& probe, const ReflectionSample& sample,
-                            const std::function<bool(const glm::dvec3&)>& hiddenFrom) {
+                            const std::function<bool()>& hidden) {
   ProbeSight sight;
   sight.captured = sample.hitsSky || capturedAt(probe, sample.trueHitMeters);
   if (!sight.captured) return sight;
-  sight.hidden = hiddenFrom(probe.captureMeters);
+  sight.hidden = hidden();
   if (!sight.hidden) sight.errorDeg = engineLookupErrorDeg(probe, sample);
   return sight;
 }
 
 ProbeSight engineProbeSight(const LevelRayCaster& level, const EngineProbe& probe,
                             const ReflectionSample& sample) {
-  return engineProbeSight(probe, sample, [&](const glm::dvec3& captureMeters) {
-    return trueHitHiddenFrom(level, captureMeters, sample);
+  return engineProbeSight(probe, sample,
+                          [&] { return trueHitHiddenFrom(level, probe.captureMeters, sample); });
+}
+
+SurveySampleError blendedSampleError(const EngineModel& model, const ReflectionSample& sample,
+                                     const std::function<bool(int)>& hiddenFrom) {
+  const EngineBlend blend = model.blend(sample.xMeters, sample.eyeMeters);
+  return sampleErrorOfBlend(blend.weights, blend.fallbackWeight, [&](int i) {
+    return engineProbeSight(model.probes[static_cast<std::size_t>(i)], sample,
+                            [&] { return hiddenFrom(i); });
   });
 }
 
 SurveySampleError blendedSampleError(const LevelRayCaster& level, const EngineModel& model,
                                      const ReflectionSample& sample) {
-  const EngineBlend blend = model.blend(sample.xMeters, sample.eyeMeters);
-  return sampleErrorOfBlend(blend.weights, blend.fallbackWeight, [&](int i) {
-    return engineProbeSight(level, model.probes[static_cast<std::size_t>(i)], sample);
+  return blendedSampleError(model, sample, [&](int i) {
+    return trueHitHiddenFrom(level, model.probes[static_cast<std::size_t>(i)].captureMeters,
+                             sample);
   });
 }
 

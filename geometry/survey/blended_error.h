@@ -123,11 +123,11 @@ struct FadeSums {
 ProbeSight engineProbeSight(const LevelRayCaster& level, const EngineProbe& probe,
                             const ReflectionSample& sample);
 
-// The same, with `hiddenFrom(captureMeters)` saying whether the sample's true hit is hidden from
-// the probe's capture point (trueHitHiddenFrom: one ray): a caller that judges many probes
-// sharing capture points at one sample casts each ray once.
+// The same, with `hidden()` saying whether the sample's true hit is hidden from the probe's
+// capture point (trueHitHiddenFrom: one ray), asked only where it is read: a caller that judges
+// many probes sharing capture points casts each ray once (geometry/survey/capture_sights.h).
 ProbeSight engineProbeSight(const EngineProbe& probe, const ReflectionSample& sample,
-                            const std::function<bool(const glm::dvec3&)>& hiddenFrom);
+                            const std::function<bool()>& hidden);
 
 // The generic model (Lagarde or Enlighten over the probes' influence volumes, kBlendLiftMeters
 // above the floor point). `volumes[i]` is `probes[i].influence` (passed apart so blendWeights
@@ -140,5 +140,10 @@ SurveySampleError blendedSampleError(const LevelRayCaster& level,
 // Any engine's model (geometry/engines/engine_model.h).
 SurveySampleError blendedSampleError(const LevelRayCaster& level, const EngineModel& model,
                                      const ReflectionSample& sample);
+
+// The same, with `hiddenFrom(probe)` saying whether the sample's true hit is hidden from the
+// capture point of the model's probe `probe` (geometry/survey/capture_sights.h keeps them).
+SurveySampleError blendedSampleError(const EngineModel& model, const ReflectionSample& sample,
+                                     const std::function<bool(int)>& hiddenFrom);
 
 }  // namespace probeproxy

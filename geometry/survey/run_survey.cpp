@@ -3,6 +3,7 @@
 #include "core/errors/input_error.h"
 #include "core/io/memory_budget.h"
 #include "geometry/survey/area_percentile.h"
+#include "geometry/survey/capture_sights.h"
 #include "geometry/survey/floor_samples.h"
 #include "geometry/survey/survey_proxies.h"
 
@@ -76,7 +77,7 @@ SurveyFigures figures(std::span<const SurveySampleError> errors, double toleranc
   return f;
 }
 
-// The survey of the prepared floor, each sample's error from `errorOf`.
+// The survey of the prepared floor, each sample's error from `errorOf(index, sample)`.
 template <typename SampleError>
 SurveyResult surveyOn(const SurveyFloor& prepared, std::size_t probes, const SurveyOptions& o,
                       const SampleError& errorOf) {
@@ -88,7 +89,7 @@ SurveyResult surveyOn(const SurveyFloor& prepared, std::size_t probes, const Sur
   const std::vector<FloorSample>& samples = prepared.samples;
   std::vector<SurveySampleError> errors(samples.size());
   tbb::parallel_for(std::size_t{0}, samples.size(), [&](std::size_t i) {
-    errors[i] = errorOf(samples[i].sample);
+    errors[i] = errorOf(i, samples[i].sample);
     errors[i].areaSquareMeters = samples[i].areaSquareMeters;
   });
 
@@ -161,15 +162,24 @@ SurveyResult surveyProbes(std::span<const SurveyProbe> probes, const LevelRayCas
     volumes.push_back(p.influence);
   }
   return surveyOn(prepareSurveyFloor(captures, level, o), probes.size(), o,
-                  [&](const ReflectionSample& sample) {
+                  [&](std::size_t, const ReflectionSample& sample) {
                     return blendedSampleError(level, probes, volumes, sample, o.blend);
                   });
 }
 
 SurveyResult surveyModel(const EngineModel& model, const SurveyFloor& prepared,
-                         const LevelRayCaster& level, const SurveyOptions& o) {
-  return surveyOn(prepared, model.probes.size(), o, [&](const ReflectionSample& sample) {
-    return blendedSampleError(level, model, sample);
+                         const LevelRayCaster& level, const SurveyOptions& o,
+                         CaptureSights* sights) {
+  if (!sights) {
+    return surveyOn(prepared, model.probes.size(), o, [&](std::size_t, const ReflectionSample& s) {
+      return blendedSampleError(level, model, s);
+    });
+  }
+  const std::vector<std::uint32_t> ids = sights->idsOf(model.probes);
+  return surveyOn(prepared, model.probes.size(), o, [&](std::size_t i, const ReflectionSample& s) {
+    return blendedSampleError(model, s, [&](int probe) {
+      return sights->hidden(level, i, ids[static_cast<std::size_t>(probe)]);
+    });
   });
 }
 

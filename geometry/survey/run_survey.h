@@ -52,8 +52,12 @@ struct SurveyFloor {
 SurveyFloor prepareSurveyFloor(std::span<const glm::dvec3> seedPointsMeters,
                                const LevelRayCaster& level, const SurveyOptions& options);
 
-// The survey of a prepared floor under an engine's model.
+class CaptureSights;
+
+// The survey of a prepared floor under an engine's model; with `sights` (made for `floor`), each
+// ray from a capture point to a sample's true hit is cast once over every survey sharing it.
 SurveyResult surveyModel(const EngineModel& model, const SurveyFloor& floor,
-                         const LevelRayCaster& level, const SurveyOptions& options);
+                         const LevelRayCaster& level, const SurveyOptions& options,
+                         CaptureSights* sights = nullptr);
 
 }  // namespace probeproxy
