@@ -16,14 +16,6 @@ namespace {
 
 constexpr glm::dquat kUnturned{1, 0, 0, 0};
 
-RuntimeProbe boxProbe(const std::string& name, const BoxShape& box, glm::dvec3 capture) {
-  BoxInfluence influence;
-  influence.centerMeters = box.centerMeters;
-  influence.halfExtentsMeters = box.halfExtentsMeters;
-  influence.innerHalfExtentsMeters = box.halfExtentsMeters - 0.5;
-  return probeWithPresets(name, box, capture, influence);
-}
-
 TEST(CaptureSights, KeepTheRaysAnswersOnceAPointAndSurveyAsTheRaysDo) {
   const LevelRayCaster level(lRoom({}));  // corner [0, 4]^2, arms to x 10 and to y 10, 3 m high
   SurveyOptions options;
@@ -37,9 +29,9 @@ TEST(CaptureSights, KeepTheRaysAnswersOnceAPointAndSurveyAsTheRaysDo) {
   const BoxShape xArm{{5.0, 2.0, 1.5}, {5.0, 2.0, 1.5}, kUnturned};
   const BoxShape yArm{{2.0, 5.0, 1.5}, {2.0, 5.0, 1.5}, kUnturned};
   const BoxShape corner{{2.0, 2.0, 1.5}, {2.0, 2.0, 1.5}, kUnturned};
-  const RuntimeExport presets =
-      exportOf({boxProbe("x arm", xArm, xArmEnd), boxProbe("x arm, corner box", corner, xArmEnd),
-                boxProbe("y arm", yArm, yArmEnd)});
+  const RuntimeExport presets = exportOf({boxProbe("x arm", xArm, xArmEnd, 0.5),
+                                          boxProbe("x arm, corner box", corner, xArmEnd, 0.5),
+                                          boxProbe("y arm", yArm, yArmEnd, 0.5)});
   const EngineModel model = unityModel(presets);
 
   CaptureSights sights(floor);

@@ -24,11 +24,7 @@ const BoxShape kEastHalf{{8.0, 2.0, 1.5}, {2.0, 2.0, 1.5}, kUnturned};  // cuts 
 // A probe whose influence is its box with a 1 cm fade, so that Unity's fade outside the box
 // leaves no floor to the sky.
 RuntimeProbe unityProbe(const std::string& name, const BoxShape& box, glm::dvec3 capture) {
-  BoxInfluence influence;
-  influence.centerMeters = box.centerMeters;
-  influence.halfExtentsMeters = box.halfExtentsMeters;
-  influence.innerHalfExtentsMeters = box.halfExtentsMeters - 0.01;
-  return probeWithPresets(name, box, capture, influence);
+  return boxProbe(name, box, capture, 0.01);
 }
 
 struct Room {

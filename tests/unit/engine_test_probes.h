@@ -27,6 +27,16 @@ inline RuntimeProbe probeWithPresets(const std::string& name, const BoxShape& bo
   return p;
 }
 
+// A probe whose influence is its box, fading over the last `fadeMeters` inside it.
+inline RuntimeProbe boxProbe(const std::string& name, const BoxShape& box, glm::dvec3 capture,
+                             double fadeMeters) {
+  BoxInfluence influence;
+  influence.centerMeters = box.centerMeters;
+  influence.halfExtentsMeters = box.halfExtentsMeters;
+  influence.innerHalfExtentsMeters = box.halfExtentsMeters - fadeMeters;
+  return probeWithPresets(name, box, capture, influence);
+}
+
 inline RuntimeExport exportOf(std::vector<RuntimeProbe> probes) {
   RuntimeExport e;
   e.probes = std::move(probes);
