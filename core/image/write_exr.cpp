@@ -1,8 +1,6 @@
 #include "core/image/write_exr.h"
 
-#include "core/errors/input_error.h"
 #include "core/image/image_codec.h"
-#include "core/io/atomic_write.h"
 
 #include <stdexcept>
 

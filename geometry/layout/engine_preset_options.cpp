@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -289,9 +290,10 @@ std::vector<int> chooseEngineOptions(const EngineModel& model, std::span<const i
   if (probeOf.size() != model.probes.size())
     throw std::invalid_argument("chooseEngineOptions: one probe per option");
   if (!model.fades || !model.compose) return start;
-  CaptureSights own(floor);
-  return OptionSearch(model, probeOf, std::move(start), floor, level, sights ? *sights : own,
-                      toleranceDeg, keptProbes)
+  std::optional<CaptureSights> own;  // a table of its own only when none is shared
+  if (!sights) sights = &own.emplace(floor);
+  return OptionSearch(model, probeOf, std::move(start), floor, level, *sights, toleranceDeg,
+                      keptProbes)
       .run();
 }
 
