@@ -47,6 +47,7 @@ OVER_DEG = 5.0
 PRESETS = {"eevee": "eevee_reflection_cubemap", "godot3": "godot_reflection_probe"}
 DEFAULTS = {"eevee": ("parallax_distance", 1.0),   # no custom parallax: parallax = influence
             "godot3": ("box_projection", False)}   # a ReflectionProbe's box projection is off
+FLOOR_TILE = 1.0    # metres: the mirror floor's objects in Godot (split_floor)
 AGREE_DEG = 1.0     # the model against the pixels: median |rendered - predicted| per pixel
 AGREE_SHARE = 0.05  # and the shares of mirror pixels over 5 deg
 
@@ -123,15 +124,60 @@ def godot_point(p):
     return [p[0], p[2], -p[1]]
 
 
+def godot3_reflection_atlas(probe_count):
+    """(atlas_size, atlas_subdiv) for Godot 3's project settings, so that every probe is drawn.
+    The atlas has a slot per probe it draws, atlas_subdiv rounded up to a power of 4
+    (RasterizerSceneGLES3::reflection_atlas_set_subdivision): the default 8 gives 16 slots, and
+    a probe that finds none is not drawn. Each slot keeps the default's 512 px, up to Godot's
+    8192 px atlas."""
+    slots = 16
+    while slots < probe_count:
+        slots *= 4
+    return min(8192, 512 * math.isqrt(slots)), slots
+
+
+def split_floor(vertices, triangles, tile):
+    """The level with its mirror floor cut into triangles no longer than `tile` a side.
+    Godot 3 gives an object the first 8 probes paired with it (RasterizerSceneGLES3::
+    _setup_light: `reflection_count < maxobj`), so one floor mesh under a hundred boxes
+    shows eight of them; godot_frames.gd makes an object of each tile's pieces, as a real
+    level's floor is many meshes. Longest edges are halved: the pieces keep the plane."""
+    vertices = [tuple(v) for v in vertices]
+    out = []
+    todo = [tuple(t) for t in triangles]
+    while todo:
+        t = todo.pop()
+        a, b, c = (np.array(vertices[i]) for i in t)
+        n = np.cross(b - a, c - a)
+        length = np.linalg.norm(n)
+        edges = [np.linalg.norm(b - a), np.linalg.norm(c - b), np.linalg.norm(a - c)]
+        if length == 0.0 or n[2] / length <= MIRROR_NORMAL_Z or max(edges) <= tile:
+            out.append(list(t))
+            continue
+        k = int(np.argmax(edges))  # the edge from t[k] to t[k + 1]
+        i, j, o = t[k], t[(k + 1) % 3], t[(k + 2) % 3]
+        vertices.append(tuple(0.5 * (np.array(vertices[i]) + np.array(vertices[j]))))
+        m = len(vertices) - 1
+        todo += [(i, m, o), (m, j, o)]
+    return [list(v) for v in vertices], out
+
+
 def render_godot(args, proxies, out, geometry):
     """Godot 3 (godot3-runner, GLES3 under xvfb-run): one process for every pass, frames as
     EEVEE's; the position and normal passes only with `geometry`."""
     import probeproxy_py  # main() put its folder on the path
     os.makedirs(out, exist_ok=True)
+    with open(proxies) as f:
+        probe_count = sum(1 for p in json.load(f)["probes"]
+                          if p.get("engines", {}).get(PRESETS["godot3"]) is not None)
+    atlas_size, atlas_slots = godot3_reflection_atlas(probe_count)
     with open(os.path.join(out, "project.godot"), "w") as f:
         f.write('config_version=4\n[application]\nconfig/name="render_check"\n'
-                '[rendering]\nquality/driver/driver_name="GLES3"\n')
+                '[rendering]\nquality/driver/driver_name="GLES3"\n'
+                'quality/reflections/atlas_size=%d\nquality/reflections/atlas_subdiv=%d\n'
+                % (atlas_size, atlas_slots))
     vertices, triangles = probeproxy_py.level_triangles(args.scene)
+    vertices, triangles = split_floor(np.array(vertices, dtype=float), triangles, FLOOR_TILE)
     lo, size = position_code.bounds(vertices)
     with open(args.cameras) as f:
         cameras = json.load(f)["cameras"]
@@ -141,7 +187,7 @@ def render_godot(args, proxies, out, geometry):
                         for c in cameras],
             "width": WIDTH, "height": HEIGHT, "far": float(np.linalg.norm(size)), "lo": lo,
             "size": size, "importer": os.path.join(ROOT, "plugin", "engines", "godot"),
-            "out": out}
+            "floor_tile": FLOOR_TILE, "out": out}
     coded = position_code.codes(size)
     passes = [("position", {}), ("normal", {})] if geometry else []
     passes += [("white", {"proxies": proxies})] + [

@@ -14,10 +14,13 @@
 # world (x, y, z) = Godot (x, -z, y)), as EEVEE's frames are, so one decoder reads both.
 #
 # The probes see the walls and a copy of the floor coded like them (layer 2); the camera sees
-# the walls and the mirror floor (layer 1). No environment: the sky and ambient are black.
+# the walls (layer 1) and the mirror floor, an object per metre square (MIRROR_LAYER). No
+# environment: the sky and ambient are black. project.godot (render_check.py) gives the
+# reflection atlas a slot for every probe.
 extends SceneTree
 
 const MIRROR_NORMAL_Y = 0.7
+const MIRROR_LAYER = 8  # the mirror floor's tiles: the camera's frames only
 # Godot 3 updates one UPDATE_ONCE probe at a time, one step a frame (VisualServerScene::
 # render_probes: six faces, then a filter step per roughness level), so the frames waited for
 # grow with the probes: a third probe was not ready after 40 frames and its floor went black.
@@ -37,10 +40,13 @@ func v3(a):
 	return Vector3(a[0], a[1], a[2])
 
 
-func level_meshes(level):
-	# (walls, floor): the triangles facing up are the floor.
+func level_meshes(level, tile):
+	# [walls, floor, floor tiles]: the triangles facing up are the floor; the tiles are the
+	# floor again, an object per `tile` metres square (by the triangles' centres), for the
+	# mirror: Godot 3 shows an object at most 8 of the probes paired with it.
 	var walls = SurfaceTool.new()
 	var floor_ = SurfaceTool.new()
+	var tiles = {}
 	walls.begin(Mesh.PRIMITIVE_TRIANGLES)
 	floor_.begin(Mesh.PRIMITIVE_TRIANGLES)
 	var vs = level["vertices"]
@@ -51,15 +57,26 @@ func level_meshes(level):
 		var n = (b - a).cross(c - a)
 		if n.length() == 0.0:
 			continue
-		var st = floor_ if n.normalized().y > MIRROR_NORMAL_Y else walls
-		# Godot winds front faces clockwise: the level's counter-clockwise triangles reversed.
-		st.add_normal(n.normalized())
-		st.add_vertex(a)
-		st.add_normal(n.normalized())
-		st.add_vertex(c)
-		st.add_normal(n.normalized())
-		st.add_vertex(b)
-	return [walls.commit(), floor_.commit()]
+		var targets = [walls]
+		if n.normalized().y > MIRROR_NORMAL_Y:
+			var centre = (a + b + c) / 3.0
+			var key = Vector2(floor(centre.x / tile), floor(centre.z / tile))
+			if not tiles.has(key):
+				tiles[key] = SurfaceTool.new()
+				tiles[key].begin(Mesh.PRIMITIVE_TRIANGLES)
+			targets = [floor_, tiles[key]]
+		for st in targets:
+			# Godot winds front faces clockwise: the level's counter-clockwise triangles reversed.
+			st.add_normal(n.normalized())
+			st.add_vertex(a)
+			st.add_normal(n.normalized())
+			st.add_vertex(c)
+			st.add_normal(n.normalized())
+			st.add_vertex(b)
+	var tile_meshes = []
+	for key in tiles.keys():
+		tile_meshes.append(tiles[key].commit())
+	return [walls.commit(), floor_.commit(), tile_meshes]
 
 
 func coded_material(spec, step):
@@ -121,7 +138,9 @@ func probed_scene(spec, step, meshes, importer):
 	var coded = coded_material(spec, step)
 	root.add_child(instance(meshes[0], coded, 1 | 2))
 	if step.has("proxies"):
-		root.add_child(instance(meshes[1], mirror_material(), 1))
+		var mirror = mirror_material()
+		for tile in meshes[2]:
+			root.add_child(instance(tile, mirror, MIRROR_LAYER))
 		root.add_child(instance(meshes[1], coded, 2))
 		var probes = importer.import_probes(step["proxies"])
 		for p in probes.get_children():
@@ -136,7 +155,7 @@ func probed_scene(spec, step, meshes, importer):
 func _init():
 	var args = OS.get_cmdline_args()
 	var spec = read_json(args[args.size() - 1])
-	var meshes = level_meshes(spec["level"])
+	var meshes = level_meshes(spec["level"], spec["floor_tile"])
 	var importer = load(spec["importer"] + "/probeproxy_import.gd")
 	get_root().hdr = true
 	get_root().keep_3d_linear = true  # the codes as written, no sRGB curve
@@ -159,9 +178,12 @@ func _init():
 		# Godot 3 queues a probe for its update only while the camera's frustum holds it
 		# (VisualServerScene::_prepare_scene), so the probes are made looking down on the whole
 		# level.
+		# The mirror's thousands of tiles are left out of the frames that only wait.
 		see_the_whole_level(camera, spec["level"]["vertices"], spec["width"], spec["height"])
+		camera.cull_mask = 1
 		for i in range(SETTLE_FRAMES + FRAMES_PER_PROBE * probe_count):
 			yield(self, "idle_frame")
+		camera.cull_mask = 1 | MIRROR_LAYER
 		for c in spec["cameras"]:
 			camera.set_perspective(c["hfov_deg"], camera.near, spec["far"])
 			camera.look_at_from_position(v3(c["eye"]), v3(c["target"]), Vector3.UP)

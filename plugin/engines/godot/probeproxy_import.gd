@@ -59,8 +59,33 @@ static func make_probe(name, entry, interior = true):
 	return probe
 
 
+# The reflection atlas's slots for an atlas_subdiv setting, as Godot 3 rounds it
+# (RasterizerSceneGLES3::reflection_atlas_set_subdivision: up to a power of 2, then of 4): the
+# default 8 gives 16. Godot 3 draws at most that many probes; the others show nothing.
+static func atlas_slots(subdiv):
+	var slots = 1
+	while slots < subdiv:
+		slots *= 2
+	if slots & 0xaaaaaaaa:
+		slots *= 2
+	return slots
+
+
+# "" when the project's reflection atlas has a slot for each of `count` probes, else what to set.
+static func atlas_warning(count):
+	var subdiv = ProjectSettings.get_setting("rendering/quality/reflections/atlas_subdiv")
+	if count <= atlas_slots(subdiv):
+		return ""
+	var needed = 16
+	while needed < count:
+		needed *= 4
+	return ("probeproxy: %d probes, but Godot 3 draws only %d with rendering/quality/reflections/atlas_subdiv = %d: set it to %d (and atlas_size to %d for the default 512 px a probe)"
+		% [count, atlas_slots(subdiv), subdiv, needed, min(8192, 512 * int(sqrt(needed)))])
+
+
 # A Spatial named "probeproxy_probes" holding one ReflectionProbe per probe with a Godot entry,
 # in the file's order, each owned by the root (so PackedScene.pack keeps them). null on error.
+# Warns when the project's reflection atlas cannot hold them all (atlas_warning).
 static func import_probes(path, interior = true):
 	var data = read_json(path)
 	if data == null:
@@ -74,4 +99,7 @@ static func import_probes(path, interior = true):
 		var probe = make_probe(p["name"], entry, interior)
 		root.add_child(probe)
 		probe.owner = root
+	var warning = atlas_warning(root.get_child_count())
+	if warning != "":
+		push_warning(warning)
 	return root
