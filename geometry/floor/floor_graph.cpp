@@ -30,7 +30,10 @@ void placeGrid(const LevelRayCaster& level, const WalkableFloorOptions& o, Floor
 
 // Every upward-facing surface under the column with head room over it, lowest first. Either
 // winding counts (real levels are not consistently wound); the flood fill, not the normal,
-// tells a floor from the top of the map's shell.
+// tells a floor from the top of the map's shell. Where the level's faces are one-sided (a
+// BSP), the back of a ceiling is not a floor: it lies in the void over the map, and a flood
+// fill that steps onto it there (final_rage: 15 m^2 over two ceilings, reached over their
+// rims) walks where no player stands.
 std::vector<FloorLayer> columnLayers(const LevelRayCaster& level, glm::dvec2 xy, double topZ,
                                      const WalkableFloorOptions& o) {
   std::vector<FloorLayer> layers;
@@ -44,7 +47,7 @@ std::vector<FloorLayer> columnLayers(const LevelRayCaster& level, glm::dvec2 xy,
     down.originMeters = at;
     down.tMin = static_cast<float>(kOffsetMeters);
     const glm::dvec3 n(hit.geometricNormal);
-    if (std::abs(n.z) < o.upwardCosine) continue;
+    if (std::abs(n.z) < o.upwardCosine || (level.facesOneSided() && n.z < 0.0)) continue;
     if (!layers.empty() && layers.back().zMeters - at.z < kSameSurfaceMeters) continue;
     Ray up;
     up.originMeters = at + glm::dvec3(0.0, 0.0, kOffsetMeters);

@@ -29,6 +29,10 @@ namespace {
 // keeps the steepest turn of the weights under validate's limit.
 constexpr double kFarBandShare = 0.67;
 
+// Rounds of fills over floor the fills before them left uncovered (each a fill cut back by a
+// range beside it); one has been enough on every corpus map.
+constexpr std::size_t kMaxCoverRounds = 4;
+
 // Where a camera stands over a floor cell: its eye, and the top of validate's camera space
 // (head room, 2.5 m: eye height and a jump), just under it.
 constexpr std::array<double, 2> kCameraLiftsMeters{1.6, kInfluenceHeadRoomMeters - 0.05};
@@ -90,16 +94,12 @@ struct FillContext {
   bool aboveRanges;  // as fillGroups'
 };
 
-enum class FillOutcome {
-  Made,
-  NoRoom,    // no capture point clear of the level and of the inner ranges beside
-  Declined,  // an optional fill whose band needs pulling, or one too near a range beside
-};
-
 // The fill of one group of cells (its first cell's height is its storey's floor), kept clear
-// of `others` and then added to them.
-FillOutcome fillGroup(const FillContext& c, std::span<const std::size_t> members,
-                      std::vector<InfluenceVolume>& others, std::vector<FloorFill>& fills) {
+// of `others` and then added to them. None where no capture point stands clear of the level
+// and of the inner ranges beside, nor for an optional fill whose band needs pulling or one too
+// near a range beside.
+void fillGroup(const FillContext& c, std::span<const std::size_t> members,
+               std::vector<InfluenceVolume>& others, std::vector<FloorFill>& fills) {
   const WalkableFloor& floor = c.floor;
   const double half = 0.5 * floor.spacingMeters;
   const double storeyFloor = floor.cells[members.front()].pointMeters.z;
@@ -125,20 +125,19 @@ FillOutcome fillGroup(const FillContext& c, std::span<const std::size_t> members
   glm::dvec3 capture = clear.captureMeters;
   if (clear.clearanceMeters < kMinCaptureClearanceMeters ||
       capture.z < innerLo.z + kCaptureMarginMeters)
-    return FillOutcome::NoRoom;
+    return;
   glm::dvec3 innerHi(hi.x + half, hi.y + half, hi.z + kInfluenceHeadRoomMeters);
   innerLo = glm::min(innerLo, capture - glm::dvec3(kCaptureMarginMeters));
   innerHi = glm::max(innerHi, capture + glm::dvec3(kCaptureMarginMeters));
   const glm::dvec3 chosen = capture;
   keepClearOfInnerRanges(innerLo, innerHi, capture, storeyFloor, others, c.gapMeters);
-  if (!clearMovedCapture(c.level, chosen, capture, storeyFloor, innerHi.z))
-    return FillOutcome::NoRoom;
+  if (!clearMovedCapture(c.level, chosen, capture, storeyFloor, innerHi.z)) return;
   // A range above came down to the fill's bottom (over a range's top) or under its capture
   // point: nothing left to fill (stormkeep: 0 m and -1 mm tall).
   if (!glm::all(glm::lessThan(innerLo, innerHi)) ||
       !glm::all(glm::lessThanEqual(innerLo, capture)) ||
       !glm::all(glm::lessThanEqual(capture, innerHi)))
-    return FillOutcome::NoRoom;
+    return;
   const glm::dvec3 clearLo = innerLo, clearHi = innerHi;
   pullBandsIntoSight(c.level, floor, capture, c.gapMeters, innerLo, innerHi);
   const BoxInfluence fill = influenceOfBounds(innerLo, innerHi, c.gapMeters);
@@ -147,32 +146,10 @@ FillOutcome fillGroup(const FillContext& c, std::span<const std::size_t> members
   // of bands the trim cannot free (run_layout drops it then).
   const bool optional =
       std::all_of(members.begin(), members.end(), [&](std::size_t m) { return c.covered[m] != 0; });
-  if (optional && (innerLo != clearLo || innerHi != clearHi)) return FillOutcome::Declined;
-  if (c.aboveRanges && !keepsTheGapBeside({innerLo, innerHi}, others, c.gapMeters))
-    return FillOutcome::Declined;
+  if (optional && (innerLo != clearLo || innerHi != clearHi)) return;
+  if (c.aboveRanges && !keepsTheGapBeside({innerLo, innerHi}, others, c.gapMeters)) return;
   fills.push_back({capture, fill, optional});
   others.push_back(fills.back().influence);
-  return FillOutcome::Made;
-}
-
-// A group with floor no volume covers that has no room for one fill gets one for each half,
-// split across its longer side, down to halves two gaps long: one capture point in the middle
-// of a wide uncovered floor can lie where the ranges beside leave it no room while each half's
-// has (final_rage: a 155 m^2 storey and a 25 m^2 strip left uncovered).
-void fillOrSplit(const FillContext& c, std::vector<std::size_t> members,
-                 std::vector<InfluenceVolume>& others, std::vector<FloorFill>& fills) {
-  if (fillGroup(c, members, others, fills) != FillOutcome::NoRoom) return;
-  if (std::all_of(members.begin(), members.end(), [&](std::size_t m) { return c.covered[m]; }))
-    return;
-  const auto [lo, hi] = cellBounds(c.floor, members);
-  const int axis = hi.x - lo.x >= hi.y - lo.y ? 0 : 1;
-  if (hi[axis] - lo[axis] < 2.0 * c.gapMeters) return;
-  const double middle = 0.5 * (lo[axis] + hi[axis]);
-  std::vector<std::size_t> below, above;  // each in the group's order
-  for (std::size_t m : members)
-    (c.floor.cells[m].pointMeters[axis] <= middle ? below : above).push_back(m);
-  fillOrSplit(c, std::move(below), others, fills);
-  fillOrSplit(c, std::move(above), others, fills);
 }
 
 // One fill per group of `toFill` (cells within a gap of one another on one storey), each kept
@@ -205,7 +182,7 @@ void fillGroups(const LevelRayCaster& level, const WalkableFloor& floor,
         lo = glm::min(lo, p), hi = glm::max(hi, p);
       }
     }
-    fillOrSplit(context, std::move(members), others, fills);
+    fillGroup(context, members, others, fills);
   }
 }
 
@@ -226,6 +203,21 @@ std::vector<FloorFill> fillsForUncoveredFloor(const LevelRayCaster& level,
   std::vector<InfluenceVolume> others(volumes.begin(), volumes.end());
   std::vector<FloorFill> fills;
   fillGroups(level, floor, toFill, covered, gapMeters, captureHeightMeters, false, others, fills);
+  // A fill cut back to keep clear of a range beside it (keepClearOfInnerRanges) serves part of
+  // its group: what no volume covers yet is grouped and filled again, until a round makes no
+  // fill (desertfactory: a 30 m strip under an overhang, 0.11% of its floor, beside the one
+  // fill its group got).
+  for (std::size_t made = fills.size(), round = 0; round < kMaxCoverRounds; ++round) {
+    toFill.clear();
+    for (std::size_t i = 0; i < floor.cells.size(); ++i)
+      if (nearestBand(others,
+                      floor.cells[i].pointMeters + glm::dvec3(0.0, 0.0, kBlendLiftMeters)) >= 1.0)
+        toFill.push_back(i);
+    if (toFill.empty()) break;
+    fillGroups(level, floor, toFill, covered, gapMeters, captureHeightMeters, false, others, fills);
+    if (fills.size() == made) break;
+    made = fills.size();
+  }
   // Then where a camera's eye over the floor is reached only by the far ends of bands (over a
   // ramp whose range stops under a range above it: warfare, stormkeep, bloodprison), where
   // the eye is open space over that floor.

@@ -32,6 +32,8 @@ LevelMeshStats measureLevelMesh(const LevelMesh& level) {
 }
 
 void appendLevelMesh(LevelMesh& level, const LevelMesh& part) {
+  level.facesOneSided =
+      level.triangles.empty() ? part.facesOneSided : level.facesOneSided && part.facesOneSided;
   const auto vertexOffset = static_cast<std::uint32_t>(level.positionsMeters.size());
   const auto triangleOffset = static_cast<std::uint32_t>(level.triangles.size());
   level.positionsMeters.insert(level.positionsMeters.end(), part.positionsMeters.begin(),

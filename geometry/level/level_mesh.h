@@ -36,6 +36,10 @@ struct LevelMesh {
   // The game's own player, where the level comes from a game (a Quake 3 BSP: kQuake3Player):
   // its step, height and eyes define the floor it walks. Unset for a plain mesh.
   MeasureSettings gamePlayer;
+  // Whether each face is seen from its front only (BSP levels: the compiler keeps a brush's
+  // faces toward the playable space, counter-clockwise from it, so behind a face is solid or
+  // the void outside the map). A plain mesh's winding is not trusted.
+  bool facesOneSided = false;
 };
 
 struct LevelMeshStats {

@@ -122,7 +122,8 @@ constexpr std::size_t kBatch = 256;
 
 }  // namespace
 
-LevelRayCaster::LevelRayCaster(const LevelMesh& level) : embree_(std::make_unique<Embree>()) {
+LevelRayCaster::LevelRayCaster(const LevelMesh& level)
+    : embree_(std::make_unique<Embree>()), facesOneSided_(level.facesOneSided) {
   glm::dvec3 lo(std::numeric_limits<double>::infinity()),
       hi(-std::numeric_limits<double>::infinity());
   for (const glm::vec3& p : level.positionsMeters)

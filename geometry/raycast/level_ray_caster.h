@@ -29,6 +29,9 @@ class LevelRayCaster {
   glm::dvec3 boundsMinMeters() const;
   glm::dvec3 boundsMaxMeters() const;
 
+  // LevelMesh::facesOneSided: a hit on a face's back is a hit from inside solid or the void.
+  bool facesOneSided() const { return facesOneSided_; }
+
   // hits[i] answers rays[i]; the batch is split over all cores (TBB). Results do not depend
   // on the number of threads. `coherent` tells Embree the rays share an origin (depth cubes).
   void firstHits(std::span<const Ray> rays, std::span<RayHit> hits, bool coherent = false) const;
@@ -39,6 +42,7 @@ class LevelRayCaster {
  private:
   struct Embree;
   std::unique_ptr<Embree> embree_;
+  bool facesOneSided_ = false;
 };
 
 }  // namespace probeproxy

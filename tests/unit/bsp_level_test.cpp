@@ -99,6 +99,7 @@ TEST(BspLevel, ItsFloorIsWalkedByQuake3sPlayer) {
   EXPECT_EQ(*mesh.gamePlayer.headClearanceMeters, 56.0 / 32.0);
   EXPECT_EQ(*mesh.gamePlayer.eyeHeightMeters, 50.0 / 32.0);
   EXPECT_FALSE(mesh.gamePlayer.gridSpacingMeters) << "the grid is the survey's, not the game's";
+  EXPECT_TRUE(mesh.facesOneSided) << "a BSP keeps each face toward the playable space";
 }
 
 TEST(BspLevel, PatchIsWatertightWithinItsOwnGrid) {

@@ -98,6 +98,22 @@ TEST(WalkableFloor, AWallWithADoorConnectsOnlyThroughTheDoor) {
   }
 }
 
+TEST(WalkableFloor, TheBackOfACeilingIsFloorOnlyWhereWindingIsNotTrusted) {
+  // A roof terrace at the height of a room's ceiling: the terrace's top faces up, the room's
+  // ceiling down. Where faces are one-sided (a BSP), the ceiling's back is the void over the
+  // map and the walk stays on the terrace; a plain mesh's winding is not trusted, so there the
+  // walk steps onto the roof as well.
+  for (const bool oneSided : {true, false}) {
+    LevelMesh mesh = boxRoom({0, 0, 0}, {10, 4, 3});
+    appendLevelMesh(mesh, block({10, 0, 2.9f}, {14, 4, 3}));
+    mesh.facesOneSided = oneSided;
+    const LevelRayCaster level(mesh);
+    const glm::dvec3 seed{12.0, 2.0, 4.6};
+    const WalkableFloor floor = walkableFloor(level, std::span(&seed, 1));
+    EXPECT_NEAR(floor.areaSquareMeters(), oneSided ? 16.0 : 56.0, 1e-9) << oneSided;
+  }
+}
+
 // layout fills one level-wide graph for each candidate instead of casting a walkable floor per
 // region: where the region starts at the level's corner the two grids coincide, and the fill
 // must give the region's own walkable floor cell for cell. A region that cuts the room in two

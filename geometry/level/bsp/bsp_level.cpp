@@ -289,6 +289,7 @@ BspLevel parseBspLevel(std::span<const std::byte> bytes, const std::filesystem::
   level.spawnPoints = bspSpawnPoints(level.entities, options.metersPerUnit, file);
   level.lights = bspLights(level.entities, options.metersPerUnit, file);
   level.mesh.gamePlayer = quake3Player(options.metersPerUnit);
+  level.mesh.facesOneSided = true;
   return level;
 }
 
