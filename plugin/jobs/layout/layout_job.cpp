@@ -36,6 +36,12 @@ namespace {
 // Samples per floor cell on which an engine's preset policies are compared: a quarter of the
 // survey's 8, enough to rank them (the kept one is surveyed in full).
 constexpr int kEngineTrialSamplesPerCell = 2;
+// And at most this many in all: a larger floor is walked on a coarser grid for the trials
+// (each step doubling the spacing). An option search re-weighs a probe's samples each time a
+// move near it stales it; on silvercity's open 35,000 m^2, 1.1 million samples at 0.25 m kept
+// Godot 3's (every box that holds a point averaged in) running past 15 minutes. Every other
+// corpus map's trial floor holds fewer (dieselpower's 373,000 the most).
+constexpr double kMaxEngineTrialSamples = 400'000;
 
 namespace fs = std::filesystem;
 
@@ -381,6 +387,10 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
     const SurveyFloor floor = prepareSurveyFloor(seeds, rayCaster, survey);
     SurveyOptions trial = survey;
     trial.samplesPerCell = std::min(survey.samplesPerCell, kEngineTrialSamplesPerCell);
+    const double cells = double(floor.samples.size()) / std::max(1, floor.samplesPerCell);
+    double scale = 1.0;
+    while (cells / (scale * scale) * trial.samplesPerCell > kMaxEngineTrialSamples) scale *= 2.0;
+    trial.floor.gridSpacingMeters = survey.floor.gridSpacingMeters * scale;
     const SurveyFloor trialFloor = prepareSurveyFloor(seeds, rayCaster, trial);
     // The artist's probes come first in the scene and stay in every engine.
     const ProbeEntries entries{o.layout.baseline == LayoutBaseline::None,
