@@ -283,6 +283,28 @@ void expectEveryCellCovered(const WalkableFloor& floor, std::span<const Influenc
   }
 }
 
+TEST(FillsForUncoveredFloor, FloorAFillsCutLeavesIsFilledAgain) {
+  // A 10 x 10 m room with one range over its corner x, y 0..6 and one over the whole room from
+  // 1.5 m up, where the cameras' eyes are (a storey's range over a low passage): the floor
+  // beyond the corner is an L, one group, under the range above. Its fill, kept a gap from the
+  // corner's range, can hold one arm only; the other arm, left uncovered, gets a fill of its
+  // own.
+  const LevelRayCaster level(boxRoom({0, 0, 0}, {10, 10, 3.5f}));
+  const glm::dvec3 seed{2.0, 2.0, 1.6};
+  const WalkableFloor floor = walkableFloor(level, std::span(&seed, 1));
+  std::vector<InfluenceVolume> volumes{influenceOfBounds({0, 0, -0.5}, {6, 6, 1.5}, 1.0),
+                                       influenceOfBounds({0, 0, 1.5}, {10, 10, 4.0}, 1.0)};
+  const std::vector<FloorFill> fills = fillsForUncoveredFloor(level, floor, volumes, 1.0, 1.6);
+  EXPECT_EQ(fills.size(), 2u) << "one fill per arm";
+  for (const FloorFill& f : fills) {
+    EXPECT_FALSE(innerRangesOverlap(volumes[0], f.influence));
+    EXPECT_FALSE(innerRangesOverlap(volumes[1], f.influence));
+    volumes.push_back(f.influence);
+  }
+  if (volumes.size() == 4) EXPECT_FALSE(innerRangesOverlap(volumes[2], volumes[3]));
+  expectEveryCellCovered(floor, volumes);
+}
+
 struct RangesInARoom {
   LevelRayCaster level{boxRoom({0, 0, 0}, {10, 6, 3.5f})};
   WalkableFloor floor;
