@@ -32,8 +32,8 @@ void placeGrid(const LevelRayCaster& level, const WalkableFloorOptions& o, Floor
 // winding counts (real levels are not consistently wound); the flood fill, not the normal,
 // tells a floor from the top of the map's shell. Where the level's faces are one-sided (a
 // BSP), the back of a ceiling is not a floor: it lies in the void over the map, and a flood
-// fill that steps onto it there (final_rage: 15 m^2 over two ceilings, reached over their
-// rims) walks where no player stands.
+// fill that steps onto it there (final_rage: 256 m^2 over two ceilings, where layout placed
+// probes) walks where no player stands.
 std::vector<FloorLayer> columnLayers(const LevelRayCaster& level, glm::dvec2 xy, double topZ,
                                      const WalkableFloorOptions& o) {
   std::vector<FloorLayer> layers;

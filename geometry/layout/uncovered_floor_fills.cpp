@@ -30,7 +30,7 @@ namespace {
 constexpr double kFarBandShare = 0.67;
 
 // Rounds of fills over floor the fills before them left uncovered (each a fill cut back by a
-// range beside it); one has been enough on every corpus map.
+// range beside it), at most: a round that makes no fill ends them.
 constexpr std::size_t kMaxCoverRounds = 4;
 
 // Where a camera stands over a floor cell: its eye, and the top of validate's camera space

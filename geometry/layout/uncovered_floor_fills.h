@@ -10,9 +10,9 @@
 // Each group of such cells gets a probe of its own: the cells within a gap of one another on
 // one storey, its inner range over them, its band as every range's (kept to the floor in its
 // probe's sight, bands_in_sight.h); floor a fill's cut left uncovered is grouped and filled
-// again. A fill over floor a volume covers already is optional: it is not made when its band must be pulled into
-// sight, and run_layout drops it when it is in a crowd of bands the trim cannot free
-// (overlap_trim.h).
+// again. A fill over floor a volume covers already is optional: it is not made when its band
+// must be pulled into sight, and run_layout drops it when it is in a crowd of bands the trim
+// cannot free (overlap_trim.h).
 
 #include "core/scene/influence_volume.h"
 #include "geometry/floor/walkable_floor.h"
