@@ -66,6 +66,11 @@ double nearestBand(std::span<const InfluenceVolume> volumes, glm::dvec3 p) {
   return nearest;
 }
 
+// The same where the blend weighs a floor cell: kBlendLiftMeters over it, as the survey does.
+double nearestBandOver(std::span<const InfluenceVolume> volumes, const FloorCell& cell) {
+  return nearestBand(volumes, cell.pointMeters + glm::dvec3(0.0, 0.0, kBlendLiftMeters));
+}
+
 // The highest top of the inner ranges holding `p`; -inf when none does.
 double topOfRangesHolding(std::span<const InfluenceVolume> volumes, glm::dvec3 p) {
   double top = -INFINITY;
@@ -195,8 +200,7 @@ std::vector<FloorFill> fillsForUncoveredFloor(const LevelRayCaster& level,
   std::vector<std::size_t> toFill;
   std::vector<char> covered(floor.cells.size(), 0);
   for (std::size_t i = 0; i < floor.cells.size(); ++i) {
-    const double nearest =
-        nearestBand(volumes, floor.cells[i].pointMeters + glm::dvec3(0.0, 0.0, kBlendLiftMeters));
+    const double nearest = nearestBandOver(volumes, floor.cells[i]);
     covered[i] = nearest < 1.0;
     if (nearest > kFarBandShare) toFill.push_back(i);
   }
@@ -210,9 +214,7 @@ std::vector<FloorFill> fillsForUncoveredFloor(const LevelRayCaster& level,
   for (std::size_t made = fills.size(), round = 0; round < kMaxCoverRounds; ++round) {
     toFill.clear();
     for (std::size_t i = 0; i < floor.cells.size(); ++i)
-      if (nearestBand(others,
-                      floor.cells[i].pointMeters + glm::dvec3(0.0, 0.0, kBlendLiftMeters)) >= 1.0)
-        toFill.push_back(i);
+      if (nearestBandOver(others, floor.cells[i]) >= 1.0) toFill.push_back(i);
     if (toFill.empty()) break;
     fillGroups(level, floor, toFill, covered, gapMeters, captureHeightMeters, false, others, fills);
     if (fills.size() == made) break;
