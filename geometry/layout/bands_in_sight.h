@@ -7,7 +7,9 @@
 // centre), until the share of its influence on such floor is under kLeakShareTarget. Its own
 // floor by the wall is then in its band, where no other probe reaches through the wall either:
 // the normalised weight is still its own, whole. Only as far as needed: a band pulled in
-// blends less with the neighbours on that side.
+// blends less with the neighbours on that side. Where a strip narrower than the gap is still
+// over the target so (floor out of sight along it, not past its end), an end comes in further,
+// its floor left to the neighbours' bands or the uncovered floor's fills.
 
 #include "geometry/floor/walkable_floor.h"
 #include "geometry/raycast/level_ray_caster.h"
@@ -22,7 +24,7 @@ inline constexpr double kLeakShareTarget = 0.04;
 
 // innerLo/innerHi: an axis-aligned inner range (floorRectBounds) whose outer range reaches
 // kOuterBandOverGap x gapMeters past it across the floor (influenceOfBounds); its x and y sides
-// move in by at most that much, keeping the capture point kCaptureMarginMeters inside.
+// move in, keeping the capture point kCaptureMarginMeters inside.
 void pullBandsIntoSight(const LevelRayCaster& level, const WalkableFloor& floor,
                         glm::dvec3 captureMeters, double gapMeters, glm::dvec3& innerLo,
                         glm::dvec3& innerHi);

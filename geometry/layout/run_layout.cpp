@@ -452,20 +452,21 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
   lap("uncovered_floor");
   // Where more bands cross than the blend takes (overlap_trim.h), to validate's defaults. An
   // optional fill in a crowd the trim could not free, its faces moved or not, goes, and the rest
-  // rise and are trimmed again without it.
-  const std::vector<LayoutProbe> untrimmed = r.probes;
-  std::set<std::size_t> dropped;
-  for (const OverlapPoint& p : trimBandsOverOverlapLimit(
-           level, walked, o.blendBandMeters, ValidateOptions{}, keptVolumes, r.probes, optional))
-    for (int v : p.volumes)
-      if (static_cast<std::size_t>(v) >= kept.size() && optional.count(v - kept.size()))
-        dropped.insert(v - kept.size());
-  if (!dropped.empty()) {
-    r.probes = untrimmed;
+  // rise and are trimmed again without it: until no such fill is left in a crowd (downer: a
+  // second fill in the crowd the first one's going left).
+  std::vector<LayoutProbe> untrimmed = r.probes;
+  for (;;) {
+    std::set<std::size_t> dropped;
+    for (const OverlapPoint& p : trimBandsOverOverlapLimit(
+             level, walked, o.blendBandMeters, ValidateOptions{}, keptVolumes, r.probes, optional))
+      for (int v : p.volumes)
+        if (static_cast<std::size_t>(v) >= kept.size() && optional.count(v - kept.size()))
+          dropped.insert(v - kept.size());
+    if (dropped.empty()) break;
+    r.probes = std::move(untrimmed);
     dropProbes(dropped, r.probes, optional);
     raiseRangesOverRaisedFloor(walked, o.blendBandMeters, keptVolumes, r.probes);
-    trimBandsOverOverlapLimit(level, walked, o.blendBandMeters, ValidateOptions{}, keptVolumes,
-                              r.probes, optional);
+    untrimmed = r.probes;
   }
   lap("overlap_trim");
   // Where the blend still pops, a fade widens (widen_fades.h).

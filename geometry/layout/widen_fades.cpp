@@ -358,7 +358,8 @@ Region boundsOf(const InfluenceVolume& v) {
 class AwayFromSpot {
  public:
   struct Limits {
-    double perCentimeter = 0.0;
+    double perCentimeter = 0.0;  // the target: a share of validate's limit
+    double ruleLimitPerCentimeter = 0.0;
     int overlap = 0;
   };
   AwayFromSpot(const WalkableFloor& walked, double headRoom, std::span<const double> heights,
@@ -422,8 +423,14 @@ class AwayFromSpot {
         const glm::dvec3 at(a.floorMeters.x, a.floorMeters.y, a.zMeters);
         const glm::dvec3 half(halfCell, halfCell, 0.0);
         if (meets(spot_, at - half, at + half)) continue;
-        if (a.pop.perCentimeter > std::max(limits_.perCentimeter, b.pop.perCentimeter))
-          return false;
+        // A cell the target already passed may turn a little steeper, up to validate's own
+        // limit: a pop over the limit at the spot traded for a cell still under it (downer: a
+        // grown band ends a 0.024 per cm pop, and a cell by it turns at 0.0182 for 0.0181).
+        const double before = b.pop.perCentimeter;
+        const double allowed = before > limits_.perCentimeter
+                                   ? std::max(before, limits_.ruleLimitPerCentimeter)
+                                   : limits_.perCentimeter;
+        if (a.pop.perCentimeter > allowed) return false;
       }
     }
     return true;
@@ -567,7 +574,9 @@ std::size_t widenFadesWhereWeightsJump(const LevelRayCaster& level, const Walkab
             }
             if (!away)
               away.emplace(walked, headRoom, heights, boundsOf(widest), spot,
-                           AwayFromSpot::Limits{target, limits.maxOverlap}, volumes, cameraSpace);
+                           AwayFromSpot::Limits{target, limits.maxWeightJumpPerCentimeter,
+                                                limits.maxOverlap},
+                           volumes, cameraSpace);
             if (!away->noWorse(v, wider)) continue;
             if (spotAfter <= target) {
               chosen = {v, wider};

@@ -14,28 +14,17 @@
 # turned at 0.021 per cm (weight_jump) and, with the proxy choice before its float
 # merge, a proxy mesh with an edge bent inwards by 1.2 deg (proxy_concave_edge).
 # Laid out for the player the layout's volume steps were tuned with (0.45 m step, 1.8 m head
-# room, eyes at 1.7 m), not the BSP's Quake 3 player: on the floor that player reaches, the
-# layout of downer still leaves one point under five bands, one weight jump and three leaking
-# volumes (docs/layout.md, "Known limits"). Since a BSP's floor is the front of an upward face
-# only, downer's layout for this player has two findings, listed here until the volume steps
-# clear them (docs/layout.md, "Known limits"): any other finding, or these on other probes,
-# fails.
+# room, eyes at 1.7 m), not the BSP's Quake 3 player: there downer has a 0.3 m strip beside a
+# stair it does not see (a band pulled in past its own width clears it), a crowd of five bands
+# two fills left (each dropped in turn), and a pop a grown band ends by turning a neighbouring
+# cell a little steeper, still under the limit.
 set -eu
 probeproxy=$1 scene=$2 work=$3
 rm -rf "$work" && mkdir -p "$work"
 "$probeproxy" layout "$scene" --out "$work/layout" --json \
   --step-height 0.45 --head-clearance 1.8 --eye-height 1.7 >/dev/null
 "$probeproxy" validate "$work/layout/layout.scene.json" --tolerance-deg 5 \
-  --rules capture_outside_level,influence_leak,reflected_camera_outside_proxy,too_many_overlaps,inner_ranges_overlap,weight_jump,floor_not_covered \
-  --json >"$work/validate.json" || true  # exit 1 on findings: listed below
-python3 - "$work/validate.json" <<'PY'
-import json, sys
-findings = json.load(open(sys.argv[1]))["findings"]
-known = {("influence_leak", "probe_112"), ("weight_jump", "probe_113")}
-found = {(f["rule"], f["probe"]) for f in findings}
-assert found <= known, ["%s %s: %s" % (f["rule"], f["probe"], f["message"]) for f in findings
-                        if (f["rule"], f["probe"]) not in known]
-PY
+  --rules capture_outside_level,influence_leak,reflected_camera_outside_proxy,too_many_overlaps,inner_ranges_overlap,weight_jump,floor_not_covered
 "$probeproxy" survey "$work/layout/layout.scene.json" --json >"$work/survey.json"
 python3 - "$work/layout/layout.scene.json" "$work/layout/layout.json" "$work/survey.json" <<'PY'
 import json, sys

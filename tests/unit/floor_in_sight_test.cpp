@@ -122,5 +122,25 @@ TEST(PullBandsIntoSight, ABandThroughAWallComesBackAndTheOtherSidesStay) {
   EXPECT_EQ(hi.z, 2.5);
 }
 
+// A strip of a range along a corridor, its capture point near one end, and for the other half
+// of its length a room behind the corridor's wall: the strip's band reaches into the room
+// along its side, which no pull by the band's width clears and the capture point keeps from
+// coming in. Its far end comes in past its band instead, as far as the leak needs.
+TEST(PullBandsIntoSight, AStripBesideARoomAlongHalfItsLengthComesInPastItsBand) {
+  LevelMesh mesh = boxRoom({0, 0, 0}, {1.2f, 20, 3}, "corridor");
+  appendLevelMesh(mesh, boxRoom({1.4f, 0, 0}, {4, 9, 3}, "room"));
+  const LevelRayCaster level(mesh);
+  const std::vector<glm::dvec3> seeds{{0.6, 10, 0.5}, {2.5, 4, 0.5}};
+  const WalkableFloor floor = walkableFloor(level, seeds);
+  const glm::dvec3 capture(0.6, 18, 1.6);
+  glm::dvec3 lo(0.35, 1, -0.5), hi(0.85, 19, 2.5);
+  ASSERT_EQ(leaks(level, floor, capture, lo, hi).size(), 1u);
+  pullBandsIntoSight(level, floor, capture, 1.0, lo, hi);
+  EXPECT_TRUE(leaks(level, floor, capture, lo, hi).empty());
+  EXPECT_GT(lo.y, 1.0 + 1.5);  // past the band's width
+  EXPECT_LT(lo.y, 9.0);        // not past the room: the leak is under the limit sooner
+  EXPECT_EQ(hi.y, 19.0);
+}
+
 }  // namespace
 }  // namespace probeproxy
