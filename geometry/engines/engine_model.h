@@ -104,6 +104,10 @@ struct EngineModel {
   // `compose` is normalizedFades (Godot 3): each probe's weight its fade over the sum of the
   // fades. A search may then keep a sample's sums and weigh one probe more or less in one step.
   bool averagesFades = false;
+  // The most probes one shaded point gets, the first in the engine's order (0: no limit): Godot
+  // 3 gives an object the first 8 probes paired with it. `compose` takes the first that many of
+  // the list it is given.
+  std::size_t mostProbes = 0;
 };
 
 // Sets the model's fades and composition (full at `fullFade`), and its blend as the two in turn.

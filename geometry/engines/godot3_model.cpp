@@ -6,8 +6,11 @@
 // and the result is reflection_accum.rgb / reflection_accum.a, or the environment's radiance
 // where reflection_accum.a is 0. Godot 3 has no blend distance: the weight is that fixed curve,
 // 1 at the box centre and 0 on its faces. Probes are listed per object (reflection_indices[],
-// at most MAX_FORWARD_LIGHTS, 8, per object): this model lets every probe reach every point,
-// which holds while no object is lit by more than 8.
+// at most max_forward_lights_per_object, 8, per object, the first paired with it:
+// rasterizer_scene_gles3.cpp, _setup_light): this model gives a point the first 8 boxes holding
+// it, in the scene's order. It is the engine's exactly where no object meets more than 8 boxes;
+// where more hold a point, which 8 the engine takes depends on how the level's meshes are cut
+// and on the order Godot pairs them, which no export fixes (the layout keeps to 8).
 
 #include "geometry/engines/blend_composition.h"
 #include "geometry/engines/godot_probes.h"
@@ -15,8 +18,15 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <span>
 
 namespace probeproxy {
+
+namespace {
+
+constexpr std::size_t kGodot3ProbesPerObject = 8;  // max_forward_lights_per_object
+
+}  // namespace
 
 EngineModel godot3Model(const RuntimeExport& presets) {
   GodotProbes held = godotProbes(presets, /*godot4=*/false);
@@ -40,8 +50,11 @@ EngineModel godot3Model(const RuntimeExport& presets) {
         }
         return fades;
       },
-      normalizedFades);
+      [](std::span<const ProbeFade> ordered) {
+        return normalizedFades(ordered.first(std::min(ordered.size(), kGodot3ProbesPerObject)));
+      });
   model.averagesFades = true;
+  model.mostProbes = kGodot3ProbesPerObject;
   return model;
 }
 

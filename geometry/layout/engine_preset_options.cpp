@@ -157,28 +157,51 @@ class OptionSearch {
     });
   }
 
-  // The sample's full option and sums, from its active options.
+  // The sample's full option and sums, from its active options (the first mostProbes).
   void settle(SampleReach& s) const {
     s.full = std::numeric_limits<int>::max();
     s.sums = {};
     for (const int k : s.active) {
       const Reach& r = s.options[static_cast<std::size_t>(k)];
       if (r.fade >= model_.fullFade) s.full = std::min(s.full, k);  // active is ascending
-      s.sums.add(r.fade, r.sight, +1);
+      if (model_.mostProbes == 0 || s.sums.count < static_cast<int>(model_.mostProbes))
+        s.sums.add(r.fade, r.sight, +1);
     }
   }
 
   // The sample's bad floor with the options now active, the one at place `off` given up and
-  // the one at place `on` taken (-1: none).
+  // the one at place `on` taken (-1: none). Where the engine takes only the first few probes
+  // at a point (Godot 3's 8 an object), a sample more boxes hold counts its floor once more for
+  // each box too many: which of them the engine takes there depends on how the level's meshes
+  // are cut, which the export does not fix, and a box given up anywhere in the crowd counts.
   double badAreaWith(std::size_t sample, int off, int on) const {
     const SampleReach& s = reach_[sample];
+    double crowd = 0.0;
+    const std::size_t most = model_.mostProbes;
+    const std::size_t count = s.active.size() - (off >= 0 ? 1 : 0) + (on >= 0 ? 1 : 0);
+    if (most > 0 && count > most) crowd = static_cast<double>(count - most) * s.areaSquareMeters;
     if (model_.averagesFades) {
       FadeSums sums = s.sums;
+      if (most > 0 && s.active.size() + (on >= 0 ? 1 : 0) > most) {
+        // The first `most` may change with the move: summed again.
+        sums = {};
+        const auto add = [&](int k) {
+          if (sums.count < static_cast<int>(most))
+            sums.add(s.options[static_cast<std::size_t>(k)].fade,
+                     s.options[static_cast<std::size_t>(k)].sight, +1);
+        };
+        for (const int k : s.active) {
+          if (on >= 0 && on < k) add(std::exchange(on, -1));
+          if (k != off) add(k);
+        }
+        if (on >= 0) add(on);
+        return crowd + badArea(sums.averaged(), s.areaSquareMeters, toleranceDeg_);
+      }
       for (const auto& [k, sign] : {std::pair{off, -1}, std::pair{on, +1}})
         if (k >= 0)
           sums.add(s.options[static_cast<std::size_t>(k)].fade,
                    s.options[static_cast<std::size_t>(k)].sight, sign);
-      return badArea(sums.averaged(), s.areaSquareMeters, toleranceDeg_);
+      return crowd + badArea(sums.averaged(), s.areaSquareMeters, toleranceDeg_);
     }
     thread_local std::vector<ProbeFade> fades;  // no allocation per call
     fades.clear();
@@ -204,7 +227,7 @@ class OptionSearch {
     const SurveySampleError e = sampleErrorOfBlend(blend.weights, blend.fallbackWeight, [&](int k) {
       return s.options[static_cast<std::size_t>(k)].sight;
     });
-    return badArea(e, s.areaSquareMeters, toleranceDeg_);
+    return crowd + badArea(e, s.areaSquareMeters, toleranceDeg_);
   }
 
   // The samples either option reaches, ascending, with each one's place there.

@@ -254,6 +254,30 @@ TEST(Godot3Model, TheRoundedCurveNormalizedOverEveryBoxHoldingThePoint) {
   EXPECT_EQ(model.blend({0.0, 2, 1.5}, kEye).fallbackWeight, 1.0);
 }
 
+// _setup_light takes an object's first max_forward_lights_per_object (8) paired probes: nine
+// boxes over a point, the ninth, centred on it, gets nothing, and the first eight share the
+// whole weight.
+TEST(Godot3Model, APointGetsTheFirstEightBoxesHoldingIt) {
+  std::vector<RuntimeProbe> probes;
+  for (int i = 0; i < 9; ++i) {
+    // Each 0.2 m further along x: the point x = 3.6 lies in all, at the centre of the last.
+    const BoxShape box{{2.0 + 0.2 * i, 2.0, 1.5}, {2.0, 2.0, 1.5}, kUnturned};
+    probes.push_back(
+        probeWithPresets("p" + std::to_string(i), box, box.centerMeters, fadingInside(box)));
+  }
+  const EngineModel model = godot3Model(exportOf(probes));
+  EXPECT_EQ(model.mostProbes, 8u);
+  const glm::dvec3 x{3.6, 2.0, 1.5};
+  ASSERT_EQ(model.fades(x, kEye).size(), 9u);  // every box holds it
+  const std::map<int, double> w = weightsOf(model.blend(x, kEye));
+  ASSERT_EQ(w.size(), 8u);
+  EXPECT_EQ(w.count(8), 0u);
+  double sum = 0.0;
+  for (const auto& [probe, weight] : w) sum += weight;
+  EXPECT_NEAR(sum, 1.0, 1e-12);
+  EXPECT_GT(w.at(7), w.at(0));  // the nearer centre, the larger weight
+}
+
 TEST(Godot4Model, BlendDistanceSquaredProductAndTheFarthestProbeFirst) {
   const EngineModel model = godot4Model(oneProbe(kBox));  // blend_distance 1 m
   // At x = 3.5: axis x 1 - (1.5 - 2 + 1) / 1 = 0.5, y and z clamped to 1; product squared.

@@ -136,6 +136,48 @@ TEST(EnginePresetOptions, AProbeIsNotLeftOutForOneThatCannotSeeWhatItsFloorRefle
             kept.overToleranceShare + kept.uncoveredShare);
 }
 
+// Godot 3 gives an object its first 8 paired probes; which 8 where more boxes hold a point
+// depends on how the level's meshes are cut. Ten probes along the room, each starting with the
+// room's box (ten over every point) and offered its own tenth: the search keeps at most 8 boxes
+// over any sample (eight room boxes: the other two left out), and its floor is as right as
+// with one room box.
+TEST(EnginePresetOptions, Godot3KeepsAtMostEightBoxesOverAPoint) {
+  Room room;
+  room.options.engine = Engine::Godot3;
+  std::vector<RuntimeProbe> options;
+  std::vector<int> probeOf, start;
+  // Boxes reach 0.5 m under the floor, as the export lowers them: Godot 3's weight is 0 on a
+  // box's faces.
+  const BoxShape roomBox{{5.0, 2.0, 1.25}, {5.0, 2.0, 1.75}, kUnturned};
+  for (int i = 0; i < 10; ++i) {
+    const glm::dvec3 capture{0.5 + i, 2.0, 1.5};
+    const BoxShape tenth{{0.5 + i, 2.0, 1.25}, {0.5, 2.0, 1.75}, kUnturned};
+    start.push_back(static_cast<int>(options.size()));
+    options.push_back(boxProbe("p" + std::to_string(i) + "/room", roomBox, capture, 0.0));
+    options.push_back(boxProbe("p" + std::to_string(i) + "/own", tenth, capture, 0.0));
+    probeOf.insert(probeOf.end(), {i, i});
+  }
+  const std::vector<int> chosen = chooseEngineOptions(godot3Model(exportOf(options)), probeOf,
+                                                      start, room.floor, room.level, 5.0);
+  std::vector<RuntimeProbe> kept;
+  for (const int c : chosen)
+    if (c >= 0) kept.push_back(options[static_cast<std::size_t>(c)]);
+  const RuntimeExport written = exportOf(kept);
+  const EngineModel after = godot3Model(written);
+  std::size_t most = 0;
+  for (const FloorSample& f : room.floor.samples)
+    most = std::max(most, after.fades(f.sample.xMeters, f.sample.eyeMeters).size());
+  EXPECT_EQ(most, 8u);
+  const auto bad = [&](const EngineModel& m) {
+    const SurveyFigures f = surveyModel(m, room.floor, room.level, room.options).figures;
+    return f.overToleranceShare + f.uncoveredShare + f.occludedShare;
+  };
+  EXPECT_LE(
+      bad(after),
+      bad(godot3Model(exportOf(std::vector<RuntimeProbe>(options.begin(), options.begin() + 1)))) +
+          0.01);
+}
+
 TEST(EnginePresetOptions, TheGenericModelKeepsWhatItStartsWith) {
   const Room room;
   const std::vector<glm::dvec3> captures = {kWest, kEast};
