@@ -358,10 +358,7 @@ Region boundsOf(const InfluenceVolume& v) {
 class AwayFromSpot {
  public:
   struct Limits {
-    double perCentimeter = 0.0;  // the target: a share of validate's limit
-    // How steep a cell the target already passed may turn: validate's limit where the spot is
-    // over it, else the target.
-    double passedPerCentimeter = 0.0;
+    double perCentimeter = 0.0;
     int overlap = 0;
   };
   AwayFromSpot(const WalkableFloor& walked, double headRoom, std::span<const double> heights,
@@ -425,16 +422,8 @@ class AwayFromSpot {
         const glm::dvec3 at(a.floorMeters.x, a.floorMeters.y, a.zMeters);
         const glm::dvec3 half(halfCell, halfCell, 0.0);
         if (meets(spot_, at - half, at + half)) continue;
-        // A cell the target already passed may turn a little steeper, up to validate's own
-        // limit, where the spot is over it: a pop validate reports traded for a cell still under
-        // its limit (downer: a grown band ends a 0.024 per cm pop, and a cell by it turns at
-        // 0.0182 for 0.0181). Under the limit, a spot is not worth any cell's turn (dieselpower:
-        // 0.6 deg more p95 from such trades).
-        const double before = b.pop.perCentimeter;
-        const double allowed = before > limits_.perCentimeter
-                                   ? std::max(before, limits_.passedPerCentimeter)
-                                   : limits_.perCentimeter;
-        if (a.pop.perCentimeter > allowed) return false;
+        if (a.pop.perCentimeter > std::max(limits_.perCentimeter, b.pop.perCentimeter))
+          return false;
       }
     }
     return true;
@@ -542,9 +531,6 @@ std::size_t widenFadesWhereWeightsJump(const LevelRayCaster& level, const Walkab
       if (triedInVain.count(reaching)) break;
       const double now = scan(spot, spotHeight, target).steepestPerCentimeter();
       if (now <= target) break;
-      // Only a pop validate would report may make a cell away from it steeper, up to its limit.
-      const double spotOverRule =
-          now > limits.maxWeightJumpPerCentimeter ? limits.maxWeightJumpPerCentimeter : target;
       // The axis the weight turns along first.
       const glm::dvec3 step = glm::abs(pop.to - pop.from);
       const std::array<int, 2> axes = step.x >= step.y ? std::array{0, 1} : std::array{1, 0};
@@ -581,8 +567,7 @@ std::size_t widenFadesWhereWeightsJump(const LevelRayCaster& level, const Walkab
             }
             if (!away)
               away.emplace(walked, headRoom, heights, boundsOf(widest), spot,
-                           AwayFromSpot::Limits{target, spotOverRule, limits.maxOverlap}, volumes,
-                           cameraSpace);
+                           AwayFromSpot::Limits{target, limits.maxOverlap}, volumes, cameraSpace);
             if (!away->noWorse(v, wider)) continue;
             if (spotAfter <= target) {
               chosen = {v, wider};

@@ -16,9 +16,7 @@
 // (where two bands' far ends alone meet, the share turns across the width both reach, and only
 // reaching further widens it). The first (volumes in order, the pop's axis first, the least
 // change first) that brings the spot under 0.9 of the limit is kept, if away from the spot no
-// cell over the box turns steeper than that or than it did (where the spot is over the limit,
-// one that turned steeper than 0.9 of it already may turn up to the limit itself), no more
-// volumes meet over a camera
+// cell over the box turns steeper than that or than it did, no more volumes meet over a camera
 // than the blend takes or than did, and a grown range keeps its influence out of its probe's
 // sight under bands_in_sight.h's target or where it was.
 //
