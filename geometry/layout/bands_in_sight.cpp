@@ -69,12 +69,15 @@ void pullBandsIntoSight(const LevelRayCaster& level, const WalkableFloor& floor,
       h[axis] = std::max(innerHi[axis] - steps * step, capture[axis] + kCaptureMarginMeters);
   };
   std::array<int, 4> steps{};
+  const auto shareIfPulled = [&](int side, int k) {
+    glm::dvec3 l, h;
+    pulled(side, k, l, h);
+    return hiddenShare(inBox, l, h, gapMeters);
+  };
   const auto pullFurthest = [&](int side, int most, int& bestSide, int& bestSteps,
                                 double& bestShare) {
     for (int k = steps[side] + 1; k <= most; ++k) {
-      glm::dvec3 l, h;
-      pulled(side, k, l, h);
-      const double s = hiddenShare(inBox, l, h, gapMeters);
+      const double s = shareIfPulled(side, k);
       if (s < bestShare) bestShare = s, bestSide = side, bestSteps = k;
     }
   };
@@ -108,9 +111,7 @@ void pullBandsIntoSight(const LevelRayCaster& level, const WalkableFloor& floor,
     double bestShare = share;
     for (int side = 0; side < 4; ++side) {
       for (int k = steps[side] + 1; k <= stepsToCapture(side); ++k) {
-        glm::dvec3 l, h;
-        pulled(side, k, l, h);
-        const double s = hiddenShare(inBox, l, h, gapMeters);
+        const double s = shareIfPulled(side, k);
         if (s > kLeakShareTarget) continue;
         if (bestShare > kLeakShareTarget || k - steps[side] < bestSteps - steps[bestSide])
           bestShare = s, bestSide = side, bestSteps = k;
