@@ -20,9 +20,9 @@ namespace probeproxy {
 double smallestHeight(glm::dvec3 a, glm::dvec3 b, glm::dvec3 c);
 
 // `corners` counter-clockwise seen from outside. Of the corners whose fan folds inwards least
-// (not at all, for a planar or convex polygon, up to rounding), the one whose fan's lowest
-// triangle (smallestHeight) is highest; the first such corner on ties, so the fan depends on
-// the polygon only. 0 for a triangle.
+// (not at all, for a planar or convex polygon, up to rounding: of the facet's size, or of its
+// corners written as floats), the one whose fan's lowest triangle (smallestHeight) is highest;
+// the first such corner on ties, so the fan depends on the polygon only. 0 for a triangle.
 std::size_t fanApex(std::span<const glm::dvec3> corners);
 
 }  // namespace probeproxy

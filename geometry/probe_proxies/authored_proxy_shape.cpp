@@ -1,5 +1,6 @@
 #include "geometry/probe_proxies/authored_proxy_shape.h"
 
+#include "geometry/fit/fan_apex.h"
 #include "geometry/level/load_level.h"
 
 #include <glm/common.hpp>
@@ -11,6 +12,13 @@
 #include <tuple>
 
 namespace probeproxy {
+
+namespace {
+
+// validate's proxy_degenerate_face: a triangle lower than this times the mesh's size.
+constexpr double kSliverHeightRelative = 1e-6;
+
+}  // namespace
 
 ConvexProxy convexFromMesh(std::vector<glm::dvec3> vertices, std::vector<glm::uvec3> triangles) {
   // The planes depend on the triangles as points only, not on how a file orders its vertices
@@ -38,9 +46,14 @@ ConvexProxy convexFromMesh(std::vector<glm::dvec3> vertices, std::vector<glm::uv
   });
   ConvexProxy convex;
   const double offsetTolerance = 1e-6 * std::max(glm::length(hi - lo), 1.0);
+  // A sliver's plane is its corners' rounding, pointing anywhere: one cut dieselpower's
+  // written layout proxy through its capture point, and the survey measured that cut. Its edges
+  // belong to wider triangles, whose planes bound the proxy; validate's proxy_degenerate_face
+  // (the same 1e-6 of the size) names it.
+  const double sliverHeight = kSliverHeightRelative * glm::length(hi - lo);
   for (const Corners& c : faces) {
     const glm::dvec3 n = glm::cross(c[1] - c[0], c[2] - c[0]);
-    if (glm::length(n) == 0.0) continue;
+    if (glm::length(n) == 0.0 || !(smallestHeight(c[0], c[1], c[2]) > sliverHeight)) continue;
     const ProxyPlane plane{glm::normalize(n), glm::dot(glm::normalize(n), c[0])};
     const bool known =
         std::any_of(convex.planes.begin(), convex.planes.end(), [&](const ProxyPlane& p) {
