@@ -9,6 +9,7 @@
 #include "geometry/fit/fit_error.h"
 #include "geometry/fit/oriented_box_fit.h"
 #include "geometry/fit/polytope_from_planes.h"
+#include "geometry/probe_proxies/authored_proxy_shape.h"
 #include "geometry/validate/proxy_mesh_checks.h"
 
 #include <gtest/gtest.h>
@@ -664,6 +665,31 @@ TEST(FanApex, FoldsUnderTheFloatsRoundingDoNotChooseACornerInLine) {
               1e-3 * size)
         << "fanned from corner " << apex;
   }
+}
+
+TEST(ConvexFromMesh, ASliverTriangleGivesNoPlane) {
+  // A 10 m cube with one more triangle along its bottom front edge, its third corner 1e-7 m off
+  // that edge: its plane, (0, -1, 1) / sqrt(2) through the edge, is rounding and would cut the
+  // cube through its centre (the written layout proxy validate found its capture point outside).
+  std::vector<ProxyPlane> faces;
+  for (int axis = 0; axis < 3; ++axis) {
+    glm::dvec3 n(0.0);
+    n[axis] = 1.0;
+    faces.push_back({n, 10.0});
+    faces.push_back({-n, 0.0});
+  }
+  const ConvexProxy cube = polytopeFromPlanes(faces, glm::dvec3(5.0));
+  std::vector<glm::dvec3> vertices = cube.verticesMeters;
+  std::vector<glm::uvec3> triangles = cube.triangles;
+  const auto index = [&](glm::dvec3 p) {
+    vertices.push_back(p);
+    return static_cast<unsigned>(vertices.size() - 1);
+  };
+  triangles.emplace_back(index({0, 0, 0}), index({10, 0, 0}), index({5, 1e-7, 1e-7}));
+
+  const ConvexProxy read = convexFromMesh(vertices, triangles);
+  EXPECT_EQ(read.planes.size(), 6u);
+  EXPECT_NEAR(signedDistanceOutside(read.planes, {5, 5, 6}), -4.0, 1e-12);
 }
 
 TEST(FanApex, ANotQuitePlanarFacetIsFannedAcrossTheDiagonalThatFoldsOutwards) {
