@@ -175,6 +175,7 @@ def render_godot(args, proxies, out, geometry):
         f.write('config_version=4\n[application]\nconfig/name="render_check"\n'
                 '[rendering]\nquality/driver/driver_name="GLES3"\n'
                 'quality/reflections/atlas_size=%d\nquality/reflections/atlas_subdiv=%d\n'
+                'environment/default_clear_color=Color( 0, 0, 0, 1 )\n'
                 % (atlas_size, atlas_slots))
     vertices, triangles = probeproxy_py.level_triangles(args.scene)
     vertices, triangles = split_floor(np.array(vertices, dtype=float), triangles, FLOOR_TILE)

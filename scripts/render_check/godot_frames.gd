@@ -15,7 +15,9 @@
 #
 # The probes see the walls and a copy of the floor coded like them (layer 2); the camera sees
 # the walls (layer 1) and the mirror floor, an object per metre square (MIRROR_LAYER). No
-# environment: the sky and ambient are black. project.godot (render_check.py) gives the
+# environment: the sky and ambient are black. An interior probe captures with no environment
+# either, so its cubemap keeps the default clear colour past its far planes: project.godot
+# (render_check.py) sets it black, as Godot's grey would decode as a level point, and gives the
 # reflection atlas a slot for every probe.
 extends SceneTree
 
