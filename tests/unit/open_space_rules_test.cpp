@@ -1,7 +1,8 @@
 // validate's weight_jump and too_many_overlaps count only where a camera can be
 // (geometry/validate/camera_space.h): over the walked floor, within head room, and not inside a
 // solid block, even one whose bottom face the map compiler dropped
-// (geometry/raycast/open_space.h).
+// (geometry/raycast/open_space.h); capture_outside_level holds a capture point over a platform
+// open to the sky inside the level.
 
 #include "geometry/builtin/box_room.h"
 #include "geometry/layout/layout_influence.h"
@@ -100,6 +101,28 @@ TEST(TooManyOverlapsRule, FiveVolumesMeetingInTheOpenAreFoundAndInsideABlockAreN
   EXPECT_EQ(open[0].rule, "too_many_overlaps");
   EXPECT_EQ(open[0].value, 5.0);
   EXPECT_TRUE(overlaps(level, 3.5).empty()) << "they meet at x 4.4..5.4, inside the 2 m block";
+}
+
+std::vector<ValidationFinding> captureOutside(const LevelRayCaster& level, glm::dvec3 capture) {
+  Probe probe = boxProbe("p", capture - glm::dvec3(1), capture + glm::dvec3(1));
+  std::vector<ValidationFinding> out;
+  checkCaptureInsideLevel(level, probe, out);
+  return out;
+}
+
+TEST(CaptureOutsideLevelRule, OverAPlatformInOpenSpaceIsInsideAndBelowOrBesideItIsNot) {
+  // A solid 10 x 10 m platform 0.5 m thick, wound outwards, alone in space: a player stands on
+  // its top; over its centre the sky and the void past its edges fill well over half the view.
+  LevelMesh platform = boxRoom({-5, -5, -0.5}, {5, 5, 0}, "platform");
+  for (glm::uvec3& t : platform.triangles) std::swap(t.y, t.z);
+  const LevelRayCaster level(platform);
+  EXPECT_TRUE(captureOutside(level, {0, 0, 1.6}).empty()) << "standing on the platform";
+  const std::vector<ValidationFinding> below = captureOutside(level, {0, 0, -2.1});
+  ASSERT_EQ(below.size(), 1u) << "under the platform: the void below and round its underside";
+  EXPECT_EQ(below[0].rule, "capture_outside_level");
+  EXPECT_GT(below[0].value, 0.6);
+  EXPECT_EQ(captureOutside(level, {20, 0, 1.6}).size(), 1u) << "beside it, over nothing";
+  EXPECT_EQ(captureOutside(level, {0, 0, -0.25}).size(), 1u) << "inside the platform";
 }
 
 }  // namespace
