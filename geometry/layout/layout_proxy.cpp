@@ -1,6 +1,7 @@
 #include "geometry/layout/layout_proxy.h"
 
 #include "geometry/evaluation/evaluate_shape.h"
+#include "geometry/evaluation/reflection_samples.h"
 #include "geometry/layout/candidate_service.h"
 #include "geometry/layout/layout_influence.h"
 #include "geometry/probe_proxies/authored_proxy_shape.h"
@@ -8,6 +9,9 @@
 #include "geometry/probe_proxies/ieee_float_mode.h"
 #include "geometry/probe_proxies/probe_samples.h"
 #include "geometry/probe_proxies/probe_view.h"
+#include "geometry/survey/served_error.h"
+
+#include <glm/vector_relational.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -85,13 +89,28 @@ bool servesBetter(const FloorScore& a, const FloorScore& b) {
 
 }  // namespace
 
+std::vector<InfluenceVolume> volumesMeeting(std::span<const InfluenceVolume> volumes,
+                                            std::size_t index, int& indexAmong) {
+  glm::dvec3 lo, hi;
+  influenceBounds(volumes[index], lo, hi);
+  std::vector<InfluenceVolume> meeting;
+  for (std::size_t i = 0; i < volumes.size(); ++i) {
+    glm::dvec3 vLo, vHi;
+    influenceBounds(volumes[i], vLo, vHi);
+    if (glm::any(glm::lessThan(vHi, lo)) || glm::any(glm::greaterThan(vLo, hi))) continue;
+    if (i == index) indexAmong = static_cast<int>(meeting.size());
+    meeting.push_back(volumes[i]);
+  }
+  return meeting;
+}
+
 InfluenceVolume majorityRange(const InfluenceVolume& influence) {
   return bandCutTo(influence, kMajorityShareOfBand);
 }
 
 ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe,
                                  ProxyBuildOptions options, double candidateFitMeters,
-                                 double toleranceDeg) {
+                                 double toleranceDeg, const BlendNeighbourhood& blend) {
   // The kept proxy is written into the layout's scene file: it must be one a scene can hold,
   // or `build` and `survey` on that scene would measure another.
   options.sceneShapesOnly = true;
@@ -115,7 +134,11 @@ ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe
   std::vector<InfluenceVolume> fits = {inner.influence, majority.influence};
   if (candidateFitMeters > 0.0)
     fits.push_back(candidateFitProbe(capture, candidateFitMeters).influence);
-  // One depth cube, hull and report for the three: the capture point and the inner range are
+  // The whole box's fit, as `validate` generates one, only for the served floor below: chosen
+  // on the majority range, the band's floor would outweigh the room's (see above).
+  const std::size_t majorityFits = fits.size();
+  if (!blend.volumes.empty()) fits.push_back(probe.influence);
+  // One depth cube, hull and report for every fit: the capture point and the inner range are
   // the same; only the reflections fitted to differ.
   const ProbeView view = seeLevel(level, capture, options.depthFaceSize);
   const ViewHull hull = fitViewHull(view);
@@ -133,8 +156,14 @@ ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe
     const ProbeProxyBuild& b = builds.back();
     keptScores.push_back(scoreOn(b.candidates[b.kept].shape, capture, floor, toleranceDeg));
     // A NaN mean (no visible sample) compares false: the first fit stays.
-    if (fitsBetter(keptScores.back(), keptScores[start])) start = builds.size() - 1;
+    if (builds.size() <= majorityFits && fitsBetter(keptScores.back(), keptScores[start]))
+      start = builds.size() - 1;
   }
+  const auto admissible = [&](std::size_t b, std::size_t c) {
+    const ProxyShape& shape = builds[b].candidates[c].shape;
+    return sceneFileCanHold(shape) &&
+           (c == builds[b].kept || planeCount(shape) <= kMostPlanesToSwitchTo);
+  };
   const FloorScore& startScore = keptScores[start];
   // Every fit's candidates may serve that floor better than the kept ones, each build having
   // kept its own by the inner range's mean. None with a worse tail than the start (by more than
@@ -145,18 +174,39 @@ ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe
   const double p95Limit = 1.02 * startScore.p95WithMissesDeg + 0.05;
   std::size_t keptBuild = start, keptCandidate = builds[start].kept;
   FloorScore keptScore = startScore;
-  for (std::size_t b = 0; b < builds.size(); ++b) {
+  for (std::size_t b = 0; b < majorityFits; ++b) {
     for (std::size_t c = 0; c < builds[b].candidates.size(); ++c) {
-      const ProxyCandidate& candidate = builds[b].candidates[c];
-      if (!sceneFileCanHold(candidate.shape) ||
-          (c != builds[b].kept && planeCount(candidate.shape) > kMostPlanesToSwitchTo))
-        continue;
-      const FloorScore score = c == builds[b].kept
-                                   ? keptScores[b]
-                                   : scoreOn(candidate.shape, capture, floor, toleranceDeg);
+      if (!admissible(b, c)) continue;
+      const FloorScore score =
+          c == builds[b].kept ? keptScores[b]
+                              : scoreOn(builds[b].candidates[c].shape, capture, floor, toleranceDeg);
       if (score.p95WithMissesDeg <= p95Limit && score.meanCostDeg <= startScore.meanCostDeg &&
           servesBetter(score, keptScore))
         keptBuild = b, keptCandidate = c, keptScore = score;
+    }
+  }
+  // Then the floor the probe serves in the blend, on `validate`'s own samples and by its rule:
+  // a candidate that serves it clearly better than the choice above replaces it (the one
+  // leaving the least of it over the tolerance, then the lowest p95), so validate never finds
+  // a generated proxy clearly better than the layout's.
+  if (!blend.volumes.empty()) {
+    const std::vector<ReflectionSample> served =
+        buildReflectionSamples(level, probe, SampleSet::MirrorFloor, options.samples);
+    const std::vector<double> weights = servedWeights(blend.volumes, blend.probeIndex, served);
+    const auto measure = [&](std::size_t b, std::size_t c) {
+      return servedError(builds[b].candidates[c].shape, capture, served, weights, toleranceDeg);
+    };
+    const ServedError chosen = measure(keptBuild, keptCandidate);
+    ServedError best = chosen;
+    for (std::size_t b = 0; b < builds.size(); ++b) {
+      for (std::size_t c = 0; c < builds[b].candidates.size(); ++c) {
+        if (!admissible(b, c)) continue;
+        const ServedError e = measure(b, c);
+        if (servesClearlyBetter(e, chosen) &&
+            (e.overShare < best.overShare ||
+             (e.overShare == best.overShare && e.p95Deg < best.p95Deg)))
+          keptBuild = b, keptCandidate = c, best = e;
+      }
     }
   }
   ProbeProxyBuild kept = std::move(builds[keptBuild]);

@@ -11,12 +11,28 @@
 #include "geometry/probe_proxies/proxy_build_options.h"
 #include "geometry/raycast/level_ray_caster.h"
 
+#include <span>
+#include <vector>
+
 namespace probeproxy {
 
 // The influence down to where its probe weighs at least as much as a neighbour whose inner
 // range stands a gap away (Lagarde's (1 - a) / a is even at half the gap): the inner range
 // widened by a third of the band on every side, the band being kOuterBandOverGap gaps deep.
 InfluenceVolume majorityRange(const InfluenceVolume& influence);
+
+// The volumes the blend weighs a probe against: at least every volume reaching the probe's,
+// the probe's among them, in the scene's order (served_error.h: then the weights are the
+// scene's).
+struct BlendNeighbourhood {
+  std::span<const InfluenceVolume> volumes;  // empty: no served-floor step
+  int probeIndex = -1;                       // the probe's own volume in `volumes`
+};
+
+// The volumes whose outer ranges' bounds meet volumes[index]'s, in order (every one that can
+// reach it), and where volumes[index] lies among them: its BlendNeighbourhood, carried alone.
+std::vector<InfluenceVolume> volumesMeeting(std::span<const InfluenceVolume> volumes,
+                                            std::size_t index, int& indexAmong);
 
 // The probe's proxy, built as `build` builds one and kept by its rule on the floor of the inner
 // range, fitted three times: to the reflections of the inner range, of the majority range, and
@@ -27,10 +43,14 @@ InfluenceVolume majorityRange(const InfluenceVolume& influence);
 // (each miss at 180 degrees), is the start; then of the three builds' candidates (their kept
 // ones, and any else of at most 16 planes) whose p95 is no worse than the start's and whose
 // mean is no higher, the one with the least floor over the tolerance plus floor over 30
-// degrees, then the lowest mean, is kept; the earlier on a tie. The probe's influence is its whole
-// box; the build returned reports on its inner range, as `build` on the layout's scene does.
+// degrees, then the lowest mean, is kept; the earlier on a tie. With a blend neighbourhood, a
+// fourth fit to the whole box follows, and of all four builds' candidates (the same ones) the
+// one serving the probe's blend-weighted floor clearly better than that choice
+// (served_error.h, on `validate`'s samples), with the least of it over the tolerance, then the
+// lowest p95, replaces it. The probe's influence is its whole box; the build returned reports
+// on its inner range, as `build` on the layout's scene does.
 ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe,
                                  ProxyBuildOptions options, double candidateFitMeters,
-                                 double toleranceDeg);
+                                 double toleranceDeg, const BlendNeighbourhood& blend = {});
 
 }  // namespace probeproxy

@@ -12,7 +12,7 @@ namespace {
 
 constexpr std::string_view kTaskMagic = "PPBT";
 constexpr std::string_view kBuildMagic = "PPBB";
-constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kVersion = 2;
 constexpr const char* kWhat = "proxy build wire";
 
 void putQuat(std::string& out, const glm::dquat& q) {
@@ -164,6 +164,9 @@ std::string packProxyBuildTask(const ProxyBuildTask& task) {
   wire::put(out, task.probe.captureMeters);
   putInfluence(out, task.probe.influence);
   wire::put(out, task.candidateFitMeters);
+  wire::put<std::uint64_t>(out, task.blendVolumes.size());
+  for (const InfluenceVolume& v : task.blendVolumes) putInfluence(out, v);
+  wire::put<std::int64_t>(out, task.blendIndex);
   return out;
 }
 
@@ -175,6 +178,14 @@ ProxyBuildTask unpackProxyBuildTask(std::string_view bytes) {
   task.probe.captureMeters = in.get<glm::dvec3>();
   task.probe.influence = getInfluence(in);
   task.candidateFitMeters = in.get<double>();
+  // The smallest volume: its kind and a sphere's centre and two radii.
+  task.blendVolumes.resize(in.getCount(1 + 5 * sizeof(double)));
+  for (InfluenceVolume& v : task.blendVolumes) v = getInfluence(in);
+  task.blendIndex = in.get<std::int64_t>();
+  if (!task.blendVolumes.empty() &&
+      (task.blendIndex < 0 || task.blendIndex >= std::ssize(task.blendVolumes)))
+    throw InputError(kWhat, "the probe's volume is " + std::to_string(task.blendIndex) + " of " +
+                                std::to_string(task.blendVolumes.size()));
   in.expectEnd("the task");
   return task;
 }

@@ -2,55 +2,23 @@
 // serves in the blend, with the proxy probeproxy would generate beside it, so the artist sees
 // whether a better one exists.
 //
-// Each mirror_floor sample of the probe's outer range counts by the probe's blend weight there
-// (Lagarde's, over every volume of the scene): floor a neighbour carries counts for little or
-// nothing. Counted whole instead, a probe was judged on band floor its neighbour serves, and
-// every layout probe failed (97-132 warnings on a corpus layout) with the hint to use the
-// generated proxy, the one the layout had chosen. The value is the weighted p95, a miss at 180
-// degrees as the survey counts it. A proxy is worse than the generated one when the generated
-// leaves less of that weighted floor over the tolerance (a miss counts as over): the layout's
-// own rule, by at least kClearlyLessFloor, as the build fits on samples of its own. Where none
-// is clearly better, the finding is information: what the floor gets, and that a second probe
-// (split_probe) or accepting it is what is left.
+// The proxy is judged on the floor it serves in the blend (geometry/survey/served_error.h).
+// Counted whole instead, a probe was judged on band floor its neighbour serves, and every
+// layout probe failed (97-132 warnings on a corpus layout) with the hint to use the generated
+// proxy, the one the layout had chosen. The value is the weighted p95, a miss at 180 degrees as
+// the survey counts it. A proxy is worse than the generated one when the generated serves that
+// floor clearly better (servesClearlyBetter: less of it over the tolerance, the tail no worse),
+// the rule the layout keeps its own proxy by. Where none is clearly better, the finding is
+// information: what the floor gets, and that a second probe (split_probe) or accepting it is
+// what is left.
 
-#include "core/blend/blend_weights.h"
-#include "geometry/evaluation/evaluate_shape.h"
 #include "geometry/probe_proxies/build_probe_proxy.h"
-#include "geometry/survey/area_percentile.h"
-#include "geometry/survey/blended_error.h"
+#include "geometry/survey/served_error.h"
 #include "geometry/validate/validation_rules.h"
 
-#include <cmath>
 #include <cstdio>
 
 namespace probeproxy {
-
-namespace {
-
-constexpr double kClearlyLessFloor = 0.02;  // share of the served floor's weight
-
-struct ServedError {
-  double p95Deg = 0.0;     // weighted, a miss at 180 degrees; NaN: no weighted visible sample
-  double overShare = 0.0;  // weighted share over the tolerance, misses included
-};
-
-ServedError servedError(const ProxyShape& shape, glm::dvec3 capture,
-                        const std::vector<ReflectionSample>& samples,
-                        const std::vector<double>& weights, double toleranceDeg) {
-  std::vector<AreaValue> weighted;
-  double total = 0.0, over = 0.0;
-  for (std::size_t i = 0; i < samples.size(); ++i) {
-    if (samples[i].occluded || weights[i] <= 0.0) continue;
-    const double e = angularErrorDeg(shape, capture, samples[i]);
-    const double cost = std::isnan(e) ? kMissErrorDeg : e;
-    weighted.push_back({cost, weights[i]});
-    total += weights[i];
-    if (!(e <= toleranceDeg)) over += weights[i];
-  }
-  return {areaPercentile(weighted, 0.95), total > 0.0 ? over / total : 0.0};
-}
-
-}  // namespace
 
 void checkProxyError(const LevelRayCaster& level, const Probe& probe,
                      std::span<const InfluenceVolume> volumes, int probeIndex,
@@ -59,10 +27,7 @@ void checkProxyError(const LevelRayCaster& level, const Probe& probe,
   if (std::holds_alternative<InfiniteShape>(authored)) return;  // chose no correction
   const std::vector<ReflectionSample> samples =
       buildReflectionSamples(level, probe, SampleSet::MirrorFloor, options.samples);
-  std::vector<double> weights(samples.size(), 0.0);
-  for (std::size_t i = 0; i < samples.size(); ++i)
-    for (const ProbeWeight& w : blendWeights(volumes, samples[i].xMeters))
-      if (w.probe == probeIndex) weights[i] = w.weight;
+  const std::vector<double> weights = servedWeights(volumes, probeIndex, samples);
   const double tolerance = options.toleranceDeg;
   const ServedError error = servedError(authored, probe.captureMeters, samples, weights, tolerance);
   // No weighted visible sample: nothing to measure (the floor is hidden, or another's).
@@ -76,7 +41,7 @@ void checkProxyError(const LevelRayCaster& level, const Probe& probe,
   const ProxyCandidate& kept = generated.candidates[generated.kept];
   const ServedError generatedError =
       servedError(kept.shape, probe.captureMeters, samples, weights, tolerance);
-  const bool generatedBetter = generatedError.overShare + kClearlyLessFloor < error.overShare;
+  const bool generatedBetter = servesClearlyBetter(generatedError, error);
 
   char text[320];
   std::snprintf(text, sizeof text,

@@ -8,8 +8,9 @@
 # 21.32% over 5 deg, where layout.json said 23.765 and 21.45%.
 #
 # And a layout passes validate ("every layout validates clean"): every rule but those
-# that measure a proxy's accuracy probe by probe (proxy_error_over_tolerance and split_probe,
-# over each probe's whole outer range alone: the survey is the layout's measure of that), the
+# that measure a proxy's accuracy probe by probe (proxy_error_over_tolerance and split_probe
+# build every probe's proxy again, tens of minutes on a corpus map; the layout keeps its proxies
+# by the proxy rule's own test, layout_proxy.h, and layout_checks.sh runs them on the suite), the
 # mesh and capture checks included. On downer, an earlier layout had a blend weight that
 # turned at 0.021 per cm (weight_jump) and, with the proxy choice before its float
 # merge, a proxy mesh with an edge bent inwards by 1.2 deg (proxy_concave_edge).

@@ -66,11 +66,16 @@ TEST(ProxyBuildWire, ABuildReadsBackWithEveryCandidateAndFigure) {
 }
 
 TEST(ProxyBuildWire, ATaskReadsBackAsTheProbeTheBuildReads) {
-  ProxyBuildTask box{probeAt({1.25, -0.5, 1.6}, {-4, -2, 0}, {6, 3, 3}), 12.5};
+  ProxyBuildTask box;
+  box.probe = probeAt({1.25, -0.5, 1.6}, {-4, -2, 0}, {6, 3, 3});
+  box.candidateFitMeters = 12.5;
   box.probe.name = "probe_017";
   std::get<BoxInfluence>(box.probe.influence).worldFromBox = glm::dquat(0.8, 0, 0, 0.6);
-  ProxyBuildTask sphere{box.probe, 0.0};
+  ProxyBuildTask sphere = box;
+  sphere.candidateFitMeters = 0.0;
   sphere.probe.influence = SphereInfluence{{3, 2, 1.5}, 7.25, 6.0};
+  box.blendVolumes = {sphere.probe.influence, box.probe.influence};
+  box.blendIndex = 1;
   for (const ProxyBuildTask& sent : {box, sphere}) {
     const std::string wire = packProxyBuildTask(sent);
     const ProxyBuildTask got = unpackProxyBuildTask(wire);
@@ -78,6 +83,10 @@ TEST(ProxyBuildWire, ATaskReadsBackAsTheProbeTheBuildReads) {
     EXPECT_EQ(got.probe.captureMeters, sent.probe.captureMeters);
     EXPECT_EQ(got.candidateFitMeters, sent.candidateFitMeters);
     ASSERT_EQ(got.probe.influence.index(), sent.probe.influence.index());
+    ASSERT_EQ(got.blendVolumes.size(), sent.blendVolumes.size());
+    for (std::size_t i = 0; i < got.blendVolumes.size(); ++i)
+      EXPECT_EQ(got.blendVolumes[i].index(), sent.blendVolumes[i].index());
+    EXPECT_EQ(got.blendIndex, sent.blendIndex);
     EXPECT_EQ(packProxyBuildTask(got), wire);
   }
   const ProxyBuildTask got = unpackProxyBuildTask(packProxyBuildTask(box));
@@ -103,9 +112,13 @@ TEST(ProxyBuildWire, RefusesBytesItDidNotWrite) {
   const std::string wire = packProxyBuild(small);
   expectRefused(readBuild, "PPBT", "proxy build wire: not a proxy build (no PPBB header)");
   expectRefused(readTask, wire, "proxy build wire: not a proxy build task (no PPBT header)");
+  ProxyBuildTask lost;
+  lost.blendVolumes = {SphereInfluence{{0, 0, 0}, 2.0, 1.0}};
+  lost.blendIndex = 1;
+  expectRefused(readTask, packProxyBuildTask(lost), "proxy build wire: the probe's volume is 1 of 1");
   std::string future = wire;
-  future[4] = 2;
-  expectRefused(readBuild, future, "proxy build wire: version 2, this program reads 1");
+  future[4] = 3;
+  expectRefused(readBuild, future, "proxy build wire: version 3, this program reads 2");
   expectRefused(readBuild, wire.substr(0, 20),
                 "proxy build wire: 20 bytes end at 17, 8 more expected");
   expectRefused(readBuild, wire + "x", "proxy build wire: 1 bytes after the build");

@@ -265,20 +265,31 @@ std::string layoutReportJson(const LayoutJobOptions& o, const LayoutJobResult& r
 // are the same wherever it ran.
 void buildAddedProxies(const LevelRayCaster& rayCaster, const LayoutJobOptions& o,
                        double toleranceDeg, LayoutJobResult& r, std::size_t first) {
+  std::vector<InfluenceVolume> volumes;
+  for (const Probe& probe : r.scene.probes) volumes.push_back(probe.influence);
+  std::vector<ProxyBuildTask> tasks(r.builds.size() - first);
+  for (std::size_t i = first; i < r.builds.size(); ++i) {
+    ProxyBuildTask& t = tasks[i - first];
+    t.probe = r.scene.probes[i];
+    t.candidateFitMeters = r.layout.probes[i - first].fitMeters;
+    int among = -1;
+    t.blendVolumes = volumesMeeting(volumes, i, among);
+    t.blendIndex = among;
+  }
   if (!o.buildProxies) {
     tbb::parallel_for(first, r.builds.size(), [&](std::size_t i) {
-      r.builds[i] = buildLayoutProxy(rayCaster, r.scene.probes[i], o.layout.finalProxy,
-                                     r.layout.probes[i - first].fitMeters, toleranceDeg);
+      const ProxyBuildTask& t = tasks[i - first];
+      r.builds[i] = buildLayoutProxy(rayCaster, t.probe, o.layout.finalProxy, t.candidateFitMeters,
+                                     toleranceDeg, {t.blendVolumes, static_cast<int>(t.blendIndex)});
     });
     return;
   }
-  std::vector<std::string> tasks;
-  for (std::size_t i = first; i < r.builds.size(); ++i)
-    tasks.push_back(packProxyBuildTask({r.scene.probes[i], r.layout.probes[i - first].fitMeters}));
-  const std::vector<std::string> wires = o.buildProxies(tasks);
-  if (wires.size() != tasks.size())
+  std::vector<std::string> packed;
+  for (const ProxyBuildTask& t : tasks) packed.push_back(packProxyBuildTask(t));
+  const std::vector<std::string> wires = o.buildProxies(packed);
+  if (wires.size() != packed.size())
     throw InputError("proxy build wire", std::to_string(wires.size()) + " builds came back for " +
-                                             std::to_string(tasks.size()) + " probes");
+                                             std::to_string(packed.size()) + " probes");
   for (std::size_t i = first; i < r.builds.size(); ++i) {
     r.builds[i] = unpackProxyBuild(wires[i - first]);
     if (r.builds[i].probe != r.scene.probes[i].name)

@@ -22,7 +22,8 @@ std::string LayoutWorker::buildProxy(std::string_view task) const {
   const ProxyBuildTask t = unpackProxyBuildTask(task);
   const ThreadLimit threads(threads_);
   return packProxyBuild(buildLayoutProxy(*setup_.rayCaster, t.probe, setup_.layout.finalProxy,
-                                         t.candidateFitMeters, setup_.layout.toleranceDeg));
+                                         t.candidateFitMeters, setup_.layout.toleranceDeg,
+                                         {t.blendVolumes, static_cast<int>(t.blendIndex)}));
 }
 
 }  // namespace probeproxy::jobs
