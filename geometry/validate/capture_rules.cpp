@@ -106,10 +106,13 @@ void checkCaptureInsideLevel(const LevelRayCaster& level, const Probe& probe,
   // A capture point inside the level sees the front of the level's surfaces (wound towards the
   // side a player sees) nearly everywhere; outside the level, or inside a wall, it sees the
   // void or the backs of surfaces. More than half of the directions so: the build's own
-  // threshold for "sees no level" (build_probe_proxy.cpp), unless most of the lower half sees
-  // the front of a floor (below).
+  // threshold for "sees no level" (build_probe_proxy.cpp), unless most of what lies right under
+  // it is the front of a floor (below).
   constexpr int kFaceSize = 32;  // 6 x 32 x 32 rays: shares to 0.02%
   constexpr double kLimit = 0.5;
+  // Right under: within 30 degrees of straight down, 0.9 m across from 1.6 m up, so a
+  // walkway's width (half the lower half was too wide: the void beside a 2 m walkway filled it).
+  constexpr double kCosFloorCone = 0.8660254037844386;
   const std::vector<Ray> rays = depthCubeRays(probe.captureMeters, kFaceSize);
   const std::vector<RayHit> hits = castDepthCubeRays(level, probe.captureMeters, kFaceSize);
   std::size_t unseen = 0, backs = 0, downward = 0, floorBelow = 0;
@@ -118,17 +121,17 @@ void checkCaptureInsideLevel(const LevelRayCaster& level, const Probe& probe,
                                                 glm::dvec3(rays[i].direction)) > 0.0;
     if (!hits[i].hit() || back) ++unseen;
     if (back) ++backs;
-    if (rays[i].direction.z < 0.0) {
+    if (glm::normalize(glm::dvec3(rays[i].direction)).z < -kCosFloorCone) {
       ++downward;
       if (hits[i].hit() && !back) ++floorBelow;
     }
   }
   const double share = static_cast<double>(unseen) / static_cast<double>(hits.size());
   // Over a platform open to the sky, the whole upper half and the void past the platform's
-  // edges see no level (evilspace's platforms in space: 55% of a capture point's directions),
-  // yet the point is where a player stands. What tells it from a point outside the level or
-  // inside a wall is the lower half: there it sees the front of the floor it stands over, and
-  // outside, the void or the backs of the level's faces.
+  // edges see no level (evilspace's platforms and walkways in space: 55-73% of a capture
+  // point's directions), yet the point is where a player stands. What tells it from a point
+  // outside the level or inside a wall is what lies right under it: the front of the floor it
+  // stands over, and outside, the void or the backs of the level's faces.
   if (share <= kLimit || 2 * floorBelow > downward) return;
   ValidationFinding f;
   f.probe = probe.name;

@@ -125,5 +125,15 @@ TEST(CaptureOutsideLevelRule, OverAPlatformInOpenSpaceIsInsideAndBelowOrBesideIt
   EXPECT_EQ(captureOutside(level, {0, 0, -0.25}).size(), 1u) << "inside the platform";
 }
 
+TEST(CaptureOutsideLevelRule, OverANarrowWalkwayIsInsideAndBesideItIsNot) {
+  // A walkway 2 m wide and 40 m long in space: under a point 1.6 m over it, the void on either
+  // side fills most of the lower half too; right under it is the walkway.
+  LevelMesh walkway = boxRoom({-20, -1, -0.5}, {20, 1, 0}, "walkway");
+  for (glm::uvec3& t : walkway.triangles) std::swap(t.y, t.z);
+  const LevelRayCaster level(walkway);
+  EXPECT_TRUE(captureOutside(level, {0, 0, 1.6}).empty()) << "standing on the walkway";
+  EXPECT_EQ(captureOutside(level, {0, 3, 1.6}).size(), 1u) << "beside it, over the void";
+}
+
 }  // namespace
 }  // namespace probeproxy
