@@ -177,9 +177,9 @@ ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe
   for (std::size_t b = 0; b < majorityFits; ++b) {
     for (std::size_t c = 0; c < builds[b].candidates.size(); ++c) {
       if (!admissible(b, c)) continue;
-      const FloorScore score =
-          c == builds[b].kept ? keptScores[b]
-                              : scoreOn(builds[b].candidates[c].shape, capture, floor, toleranceDeg);
+      const FloorScore score = c == builds[b].kept ? keptScores[b]
+                                                   : scoreOn(builds[b].candidates[c].shape, capture,
+                                                             floor, toleranceDeg);
       if (score.p95WithMissesDeg <= p95Limit && score.meanCostDeg <= startScore.meanCostDeg &&
           servesBetter(score, keptScore))
         keptBuild = b, keptCandidate = c, keptScore = score;

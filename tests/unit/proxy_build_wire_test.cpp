@@ -115,7 +115,8 @@ TEST(ProxyBuildWire, RefusesBytesItDidNotWrite) {
   ProxyBuildTask lost;
   lost.blendVolumes = {SphereInfluence{{0, 0, 0}, 2.0, 1.0}};
   lost.blendIndex = 1;
-  expectRefused(readTask, packProxyBuildTask(lost), "proxy build wire: the probe's volume is 1 of 1");
+  expectRefused(readTask, packProxyBuildTask(lost),
+                "proxy build wire: the probe's volume is 1 of 1");
   std::string future = wire;
   future[4] = 3;
   expectRefused(readBuild, future, "proxy build wire: version 3, this program reads 2");

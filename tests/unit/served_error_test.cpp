@@ -1,9 +1,9 @@
 // A proxy judged on the floor its probe serves in the blend (geometry/survey/served_error.h),
 // the one test validate's proxy rule and the layout's proxy choice share.
 
+#include "geometry/survey/served_error.h"
 #include "geometry/builtin/box_room.h"
 #include "geometry/evaluation/reflection_samples.h"
-#include "geometry/survey/served_error.h"
 
 #include <gtest/gtest.h>
 
@@ -32,10 +32,9 @@ class ServedFloor : public ::testing::Test {
     Probe p;
     p.name = "room";
     p.captureMeters = {-1.5, 0.5, 1.6};
-    p.influence = boxVolume(kRoom.centerMeters - kRoom.halfExtentsMeters,
-                            kRoom.centerMeters + kRoom.halfExtentsMeters,
-                            kRoom.centerMeters - kRoom.halfExtentsMeters,
-                            kRoom.centerMeters + kRoom.halfExtentsMeters);
+    p.influence = boxVolume(
+        kRoom.centerMeters - kRoom.halfExtentsMeters, kRoom.centerMeters + kRoom.halfExtentsMeters,
+        kRoom.centerMeters - kRoom.halfExtentsMeters, kRoom.centerMeters + kRoom.halfExtentsMeters);
     return p;
   }();
   std::vector<ReflectionSample> samples =

@@ -279,8 +279,9 @@ void buildAddedProxies(const LevelRayCaster& rayCaster, const LayoutJobOptions& 
   if (!o.buildProxies) {
     tbb::parallel_for(first, r.builds.size(), [&](std::size_t i) {
       const ProxyBuildTask& t = tasks[i - first];
-      r.builds[i] = buildLayoutProxy(rayCaster, t.probe, o.layout.finalProxy, t.candidateFitMeters,
-                                     toleranceDeg, {t.blendVolumes, static_cast<int>(t.blendIndex)});
+      r.builds[i] =
+          buildLayoutProxy(rayCaster, t.probe, o.layout.finalProxy, t.candidateFitMeters,
+                           toleranceDeg, {t.blendVolumes, static_cast<int>(t.blendIndex)});
     });
     return;
   }
