@@ -181,11 +181,11 @@ ProxyBuildTask unpackProxyBuildTask(std::string_view bytes) {
   // The smallest volume: its kind and a sphere's centre and two radii.
   task.blendVolumes.resize(in.getCount(1 + 5 * sizeof(double)));
   for (InfluenceVolume& v : task.blendVolumes) v = getInfluence(in);
-  task.blendIndex = in.get<std::int64_t>();
-  if (!task.blendVolumes.empty() &&
-      (task.blendIndex < 0 || task.blendIndex >= std::ssize(task.blendVolumes)))
-    throw InputError(kWhat, "the probe's volume is " + std::to_string(task.blendIndex) + " of " +
+  const auto index = in.get<std::int64_t>();
+  if (!task.blendVolumes.empty() && (index < 0 || index >= std::ssize(task.blendVolumes)))
+    throw InputError(kWhat, "the probe's volume is " + std::to_string(index) + " of " +
                                 std::to_string(task.blendVolumes.size()));
+  task.blendIndex = static_cast<int>(index);
   in.expectEnd("the task");
   return task;
 }

@@ -24,7 +24,7 @@ struct ProxyBuildTask {
   // Its BlendNeighbourhood (layout_proxy.h): the volumes reaching the probe's, its own at
   // blendIndex.
   std::vector<InfluenceVolume> blendVolumes;
-  std::int64_t blendIndex = -1;
+  int blendIndex = -1;
 };
 
 std::string packProxyBuildTask(const ProxyBuildTask& task);

@@ -272,16 +272,13 @@ void buildAddedProxies(const LevelRayCaster& rayCaster, const LayoutJobOptions& 
     ProxyBuildTask& t = tasks[i - first];
     t.probe = r.scene.probes[i];
     t.candidateFitMeters = r.layout.probes[i - first].fitMeters;
-    int among = -1;
-    t.blendVolumes = volumesMeeting(volumes, i, among);
-    t.blendIndex = among;
+    t.blendVolumes = volumesMeeting(volumes, i, t.blendIndex);
   }
   if (!o.buildProxies) {
     tbb::parallel_for(first, r.builds.size(), [&](std::size_t i) {
       const ProxyBuildTask& t = tasks[i - first];
-      r.builds[i] =
-          buildLayoutProxy(rayCaster, t.probe, o.layout.finalProxy, t.candidateFitMeters,
-                           toleranceDeg, {t.blendVolumes, static_cast<int>(t.blendIndex)});
+      r.builds[i] = buildLayoutProxy(rayCaster, t.probe, o.layout.finalProxy, t.candidateFitMeters,
+                                     toleranceDeg, {t.blendVolumes, t.blendIndex});
     });
     return;
   }

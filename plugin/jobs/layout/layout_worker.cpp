@@ -23,7 +23,7 @@ std::string LayoutWorker::buildProxy(std::string_view task) const {
   const ThreadLimit threads(threads_);
   return packProxyBuild(buildLayoutProxy(*setup_.rayCaster, t.probe, setup_.layout.finalProxy,
                                          t.candidateFitMeters, setup_.layout.toleranceDeg,
-                                         {t.blendVolumes, static_cast<int>(t.blendIndex)}));
+                                         {t.blendVolumes, t.blendIndex}));
 }
 
 }  // namespace probeproxy::jobs
