@@ -159,6 +159,15 @@ ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe
     if (builds.size() <= majorityFits && fitsBetter(keptScores.back(), keptScores[start]))
       start = builds.size() - 1;
   }
+  // The whole box's fit once more, simplified as `validate` generates its proxy (not holding
+  // the floor: other planes drop, other candidates): the served-floor step below must have the
+  // very proxy validate would hint at (soylent's probe_113 was warned of with it, 36% of its
+  // served floor over 5 deg against the layout's 41%). samples.fit is still the whole box's.
+  if (!blend.volumes.empty()) {
+    ProxyBuildOptions asValidate = options;
+    asValidate.simplifyHoldingFloor = false;
+    builds.push_back(buildProbeProxy(inner, view, hull, samples, std::nullopt, asValidate));
+  }
   const auto admissible = [&](std::size_t b, std::size_t c) {
     const ProxyShape& shape = builds[b].candidates[c].shape;
     return sceneFileCanHold(shape) &&
