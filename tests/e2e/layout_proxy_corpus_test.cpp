@@ -105,17 +105,17 @@ TEST(BuildLayoutProxy, OnSoylentValidateFindsNoGeneratedProxyClearlyBetter) {
   // generates one simplified without, which served the probe's blend-weighted floor clearly
   // better (36% of it over 5 deg against 41%), and warned "use the generated proxy".
   const LevelRayCaster level(corpusLevel("soylent", PROBEPROXY_CORPUS_VALIDATION));
-  const auto volume = [](const Probe& p) { return p.influence; };
-  const std::vector<InfluenceVolume> meeting = {
-      volume(layoutProbe("probe_020", {35.25, -12.75, 13.6}, {34.25, -11.75, 13.000001907},
-                         {3.25, 4.75, 1.750001907}, {1.75, 3.25, 1.500001907})),
-      volume(layoutProbe("probe_033", {33.25, -16.75, 13.600000715}, {32.5, -16.75, 13.000002265},
-                         {5.0, 2.25, 1.75000155}, {3.5, 0.75, 1.50000155})),
-      volume(layoutProbe("probe_113", {31.25, -12.75, 13.599999762}, {30.25, -12.0, 13.000001788},
-                         {2.75, 4.5, 1.750002027}, {1.25, 3.0, 1.500002027}))};
   const Probe probe =
       layoutProbe("probe_113", {31.25, -12.75, 13.599999762}, {30.25, -12.0, 13.000001788},
                   {2.75, 4.5, 1.750002027}, {1.25, 3.0, 1.500002027});
+  const std::vector<InfluenceVolume> meeting = {
+      layoutProbe("probe_020", {35.25, -12.75, 13.6}, {34.25, -11.75, 13.000001907},
+                  {3.25, 4.75, 1.750001907}, {1.75, 3.25, 1.500001907})
+          .influence,
+      layoutProbe("probe_033", {33.25, -16.75, 13.600000715}, {32.5, -16.75, 13.000002265},
+                  {5.0, 2.25, 1.75000155}, {3.5, 0.75, 1.50000155})
+          .influence,
+      probe.influence};
   constexpr double kToleranceDeg = 5.0;  // the layout's, recorded in its scene
   constexpr int kProbeIndex = 2;
   constexpr double kCandidateFitMeters = 4.0;  // the selection's for this probe
