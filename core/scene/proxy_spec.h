@@ -1,6 +1,6 @@
 #pragma once
 // What the scene file says a probe's proxy should be: generated (`auto`), none (`infinite`),
-// or one an artist authored. World frame (Z up), metres.
+// or one an artist (or `layout`) authored. World frame (Z up), metres.
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
@@ -29,12 +29,17 @@ struct AuthoredSphere {
   double radiusMeters = 1.0;
 };
 
+// Lagarde & Zanuttini's approximation, no shape: lookup = normalize(k * (x - C) + r).
+struct AuthoredCheapK {
+  double kPerMeter = 0.0;
+};
+
 struct AuthoredConvexMesh {
   std::filesystem::path mesh;           // absolute, resolved against the scene file's folder
   std::filesystem::path meshAsWritten;  // as the scene file spells it, for writing back
 };
 
 using ProxySpec = std::variant<AutoProxy, InfiniteProxy, AuthoredBox, AuthoredObb, AuthoredSphere,
-                               AuthoredConvexMesh>;
+                               AuthoredCheapK, AuthoredConvexMesh>;
 
 }  // namespace probeproxy

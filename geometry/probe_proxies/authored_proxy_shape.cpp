@@ -87,13 +87,14 @@ std::optional<ProxyShape> authoredProxyShape(const ProxySpec& spec, const Scene&
     return SphereShape{sphere->centerMeters, glm::dvec3(sphere->radiusMeters),
                        glm::dquat(1, 0, 0, 0)};
   }
+  if (const auto* cheapK = std::get_if<AuthoredCheapK>(&spec))
+    return CheapKShape{cheapK->kPerMeter};
   const LevelMesh loaded = loadAuthoredProxyMesh(std::get<AuthoredConvexMesh>(spec), scene);
   std::vector<glm::dvec3> vertices(loaded.positionsMeters.begin(), loaded.positionsMeters.end());
   return convexFromMesh(std::move(vertices), loaded.triangles);
 }
 
 bool sceneFileCanHold(const ProxyShape& shape) {
-  if (std::holds_alternative<CheapKShape>(shape)) return false;
   if (const auto* sphere = std::get_if<SphereShape>(&shape)) {
     const glm::dvec3 r = sphere->radiiMeters;
     return r.x == r.y && r.y == r.z;

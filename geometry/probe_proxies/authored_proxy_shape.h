@@ -14,8 +14,8 @@ namespace probeproxy {
 // really is convex and closed is for the proxy mesh checks to say.
 std::optional<ProxyShape> authoredProxyShape(const ProxySpec& spec, const Scene& scene);
 
-// Whether a scene file can author `shape` (DESIGN.md's proxy kinds: infinite, box/obb, sphere,
-// convex mesh): not cheap_k, not an ellipsoid. What layout writes into its scene must be one,
+// Whether a scene file can author `shape` (infinite, cheap_k, box/obb, sphere, convex mesh):
+// not an ellipsoid. What layout writes into its scene must be one,
 // or `build` and `survey` on that scene would make and measure another.
 bool sceneFileCanHold(const ProxyShape& shape);
 

@@ -197,6 +197,19 @@ JsonLayoutValue jsonExactNumber(double value) {
       value, fixedReadsWell ? std::chars_format::fixed : std::chars_format::scientific));
 }
 
+double jsonRoundedFactor(double value) {
+  if (value == 0.0) return 0.0;  // no "-0.0"
+  if (!std::isfinite(value)) return value;
+  char buffer[64];
+  const auto printed =
+      std::to_chars(buffer, buffer + sizeof(buffer), value, std::chars_format::scientific, 11);
+  double rounded = value;
+  std::from_chars(buffer, printed.ptr, rounded, std::chars_format::scientific);
+  return rounded;
+}
+
+JsonLayoutValue jsonFactor(double value) { return jsonExactNumber(jsonRoundedFactor(value)); }
+
 JsonLayoutValue jsonArray(std::vector<JsonLayoutValue> elements, bool oneItemPerLine) {
   JsonLayoutValue value;
   value.kind = Kind::Array;

@@ -51,6 +51,10 @@ double jsonRoundedCoordinate(double value);  // the number jsonCoordinate spells
 // A number printed as the shortest decimal that reads back to exactly `value` (no rounding):
 // for scale factors such as meters_per_unit, where 1e-12 is a legitimate value.
 JsonLayoutValue jsonExactNumber(double value);
+// A factor whose size depends on the file's unit (cheap_k's k, per unit length), rounded to 12
+// significant digits so that unit-conversion noise never shows, then spelled as above.
+JsonLayoutValue jsonFactor(double value);
+double jsonRoundedFactor(double value);  // the number jsonFactor spells
 
 // Containers.
 JsonLayoutValue jsonArray(std::vector<JsonLayoutValue> elements, bool oneItemPerLine = false);

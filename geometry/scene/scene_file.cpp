@@ -368,8 +368,8 @@ ProxySpec readProxy(const Json& value, const std::string& path, const FileFrame&
   if (value == "infinite") return InfiniteProxy{};
   if (!value.is_object()) failJsonExpected(path, "\"auto\", \"infinite\" or an object", value);
 
-  const std::string kind = kindOf(value, path, {"box", "obb", "sphere", "convex"},
-                                  "\"box\", \"obb\", \"sphere\" or \"convex\"");
+  const std::string kind = kindOf(value, path, {"box", "obb", "sphere", "cheap_k", "convex"},
+                                  "\"box\", \"obb\", \"sphere\", \"cheap_k\" or \"convex\"");
   if (kind == "box") {
     rejectUnknownMembers(value, path, {"kind", "center", "half_extents"});
     return AuthoredBox{pointMember(value, path, "center", frame),
@@ -388,6 +388,15 @@ ProxySpec readProxy(const Json& value, const std::string& path, const FileFrame&
     rejectUnknownMembers(value, path, {"kind", "center", "radius"});
     return AuthoredSphere{pointMember(value, path, "center", frame),
                           lengthMember(value, path, "radius", frame)};
+  }
+  if (kind == "cheap_k") {
+    // k is per file length unit: lookup = normalize(k * (x - C) + r) with x - C in file units.
+    rejectUnknownMembers(value, path, {"kind", "k"});
+    const std::string kPath = jsonMemberPath(path, "k");
+    const double kPerUnit = nonNegativeNumber(requiredMember(value, path, "k"), kPath);
+    const double kPerMeter = kPerUnit / worldLengthFromFile(frame, 1.0);
+    if (!std::isfinite(kPerMeter)) failOverflow(kPath, value.at("k"));
+    return AuthoredCheapK{kPerMeter};
   }
   rejectUnknownMembers(value, path, {"kind", "mesh"});
   AuthoredConvexMesh convex;
@@ -660,6 +669,11 @@ JsonLayoutValue proxyJson(const ProxySpec& proxy, const FileFrame& frame) {
                 {{"kind", jsonString("sphere")},
                  {"center", center(sphere.centerMeters)},
                  {"radius", jsonCoordinate(fileLengthFromWorld(frame, sphere.radiusMeters))}});
+          },
+          [&](const AuthoredCheapK& cheapK) {
+            return jsonObject(
+                {{"kind", jsonString("cheap_k")},
+                 {"k", jsonFactor(cheapK.kPerMeter * worldLengthFromFile(frame, 1.0))}});
           },
           [&](const AuthoredConvexMesh& convex) {
             return jsonObject({{"kind", jsonString("convex")},

@@ -9,6 +9,7 @@
 #     the library gets the same metres, Generate keeps the same proxies with the same figures,
 #     the proxy meshes are the same in metres, Save Scene reads back to the same metres (the
 #     largest difference is printed) and Export writes the metre scene's proxies.json;
+#   - cheap_k's k, a factor per length, is per centimetre in Blender and per metre in the file;
 #   - a probe under a rotated parent: its influence turns with the parent;
 #   - a scaled probe: its influence extents and centre offset scale with it;
 #   - a probe in an Euler rotation mode: the same as its quaternion twin.
@@ -155,6 +156,16 @@ try:
           "%.3g m)" % rdiff)
 finally:
     os.remove(saved)
+
+# cheap_k's k is per length: 0.25 per metre is 0.0025 per centimetre in Blender, and the
+# library gets 0.25 again.
+first = scene_io.probes(scene)[0]
+entry = dict(metres["probes"][0], proxy={"kind": "cheap_k", "k": 0.25})
+scene_io.set_probe_from_dict(first, entry, scene_io.meters_per_bu(scene))
+check(first.probeproxy.proxy_mode == "CHEAP_K" and abs(first.probeproxy.proxy_k - 0.0025) <= 1e-9,
+      "cm: cheap_k's k is per centimetre in Blender: %r" % first.probeproxy.proxy_k)
+back_k = scene_io.probe_dict(first, scene_io.meters_per_bu(scene))["proxy"]
+check(back_k == {"kind": "cheap_k", "k": 0.25}, "cm: cheap_k's k goes back per metre: %r" % back_k)
 
 # ------------------------------------------------------------------------------------------
 # Transforms, in metres: each probe compared with a twin authored without parents.

@@ -420,7 +420,7 @@ TEST_F(SceneFileTest, WrittenFilesAreAFixedPoint) {
     } else {
       probe.influence = SphereInfluence{randomPoint(), outer.x, outer.x * 0.75};
     }
-    switch (i % 6) {
+    switch (i % 7) {
       case 0:
         probe.proxy = AutoProxy{};
         break;
@@ -435,6 +435,9 @@ TEST_F(SceneFileTest, WrittenFilesAreAFixedPoint) {
         break;
       case 4:
         probe.proxy = AuthoredSphere{randomPoint(), size(random)};
+        break;
+      case 5:
+        probe.proxy = AuthoredCheapK{1.0 / size(random)};
         break;
       default:
         probe.proxy = AuthoredConvexMesh{folder_ / "hull.ply", "hull.ply"};
@@ -466,6 +469,17 @@ TEST_F(SceneFileTest, WrittenFilesAreAFixedPoint) {
     expectNear(reread.probes[i].reflectionPlanes[0].normal,
                scene.probes[i].reflectionPlanes[0].normal, 1e-8);
   }
+}
+
+// k is per file unit: the lookup k * (x - C) is the same whatever unit x is written in.
+TEST_F(SceneFileTest, CheapKIsPerFileUnit) {
+  const std::string scene =
+      sceneJson(probeJson({{"proxy", R"({"kind": "cheap_k", "k": 0.0025})"}}),
+                R"("probeproxy_scene": 1, "up": "Z", "meters_per_unit": 0.01, "level": ["a.obj"])");
+  const Scene read = readSceneFile(write("cm.scene.json", scene));
+  EXPECT_NEAR(std::get<AuthoredCheapK>(read.probes[0].proxy).kPerMeter, 0.25, 1e-15);
+  EXPECT_EQ(lineWith(sceneFileJson(read), "\"proxy\""),
+            R"(      "proxy": { "kind": "cheap_k", "k": 0.0025 })");
 }
 
 TEST_F(SceneFileTest, ConversionNoiseNeverShows) {
@@ -619,7 +633,10 @@ std::vector<ErrorCase> errorCases() {
       {"proxy_misspelled", sceneJson(probeJson({{"proxy", R"("aut")"}})),
        R"($.probes[0].proxy: expected "auto", "infinite" or an object, got "aut")"},
       {"proxy_kind", sceneJson(probeJson({{"proxy", R"({"kind": "aabb"})"}})),
-       R"($.probes[0].proxy.kind: expected "box", "obb", "sphere" or "convex", got "aabb")"},
+       R"($.probes[0].proxy.kind: expected "box", "obb", "sphere", "cheap_k" or "convex", got )"
+       R"("aabb")"},
+      {"cheap_k_negative", sceneJson(probeJson({{"proxy", R"({"kind": "cheap_k", "k": -0.5})"}})),
+       "$.probes[0].proxy.k: expected a number >= 0, got -0.5"},
       {"obb_without_rotation",
        sceneJson(probeJson(
            {{"proxy", R"({"kind": "obb", "center": [0, 0, 0], "half_extents": [1, 1, 1]})"}})),

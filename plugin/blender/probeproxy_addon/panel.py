@@ -145,6 +145,8 @@ class PROBEPROXY_PT_probe(_Sidebar, bpy.types.Panel):
             layout.prop(s, "proxy_radius", text="Radius")
         elif s.proxy_mode == "MESH":
             layout.prop(s, "proxy_mesh", text="")
+        elif s.proxy_mode == "CHEAP_K":
+            layout.prop(s, "proxy_k", text="k (per unit)")
 
 
 def _vector(layout, data, name, label):

@@ -15,6 +15,7 @@ PROXY_MODES = [
     ("BOX", "Authored box", "An axis-aligned box, or an oriented one with a rotation"),
     ("SPHERE", "Authored sphere", "A sphere around a centre"),
     ("MESH", "Authored mesh", "A convex mesh file"),
+    ("CHEAP_K", "Cheap k", "No shape: the lookup is normalize(k (x - C) + r)"),
     ("INFINITE", "Infinite", "No parallax correction: plain cubemap lookup"),
 ]
 
@@ -49,6 +50,9 @@ class ProbeSettings(bpy.types.PropertyGroup):
                                         default=(1, 0, 0, 0),
                                         description="w, x, y, z; identity: an axis-aligned box")
     proxy_radius: FloatProperty(name="Proxy radius", unit="LENGTH", default=2.0, min=0.0)
+    proxy_k: FloatProperty(name="Proxy k", default=0.0, min=0.0, precision=6,
+                           description="cheap_k's k, per Blender unit: the lookup is "
+                                       "normalize(k (x - C) + r)")
     proxy_mesh: StringProperty(name="Proxy mesh", subtype="FILE_PATH",
                                description="Convex mesh file (.obj, .ply, .off, .glb)")
 

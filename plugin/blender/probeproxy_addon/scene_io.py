@@ -69,6 +69,12 @@ def to_meters(values, scale):
     return round(values * scale, 9)
 
 
+def per_meter(value, scale):
+    """A per-Blender-unit factor (cheap_k's k) per metre; untouched at scale 1, else rounded
+    to 12 significant digits, as the scene writer rounds it."""
+    return value if scale == 1.0 else float("%.12g" % (value / scale))
+
+
 def to_bu(values, scale):
     """Metres in Blender units."""
     if scale == 1.0:
@@ -177,6 +183,8 @@ def probe_dict(obj, meters_per_unit=1.0, proxy_override=None):
     elif s.proxy_mode == "SPHERE":
         proxy = {"kind": "sphere", "center": to_meters(vec(s.proxy_center), k),
                  "radius": to_meters(f32(s.proxy_radius), k)}
+    elif s.proxy_mode == "CHEAP_K":
+        proxy = {"kind": "cheap_k", "k": per_meter(f32(s.proxy_k), k)}
     else:
         proxy = {"kind": "convex", "mesh": s.proxy_mesh}
     d = {"name": obj.name, "capture": to_meters(capture, k), "influence": influence,
@@ -265,6 +273,9 @@ def set_probe_from_dict(obj, d, meters_per_unit=1.0):
         s.proxy_mode = "SPHERE"
         s.proxy_center = to_bu(proxy["center"], k)
         s.proxy_radius = to_bu(proxy["radius"], k)
+    elif proxy["kind"] == "cheap_k":
+        s.proxy_mode = "CHEAP_K"
+        s.proxy_k = proxy["k"] * k
     else:
         s.proxy_mode = "MESH"
         s.proxy_mesh = proxy["mesh"]

@@ -104,8 +104,8 @@ Scene layoutScene(const Scene& input, const LayoutResult& layout, const fs::path
 }
 
 // The scene file says which proxy each probe has, so `build` on layout.scene.json keeps the
-// same ones: boxes, spheres and none as written, a convex proxy as a mesh beside the scene.
-// A shape no scene can hold stays `auto` (buildLayoutProxy keeps none: sceneShapesOnly). A
+// same ones: boxes, spheres, cheap_k and none as written, a convex proxy as a mesh beside the
+// scene. A shape no scene can hold stays `auto` (buildLayoutProxy keeps none: sceneShapesOnly). A
 // convex shape becomes the one its mesh gives, as `survey` and `build` read it from the file:
 // corners in floats, and those merged in polytopeFromPlanes stand within the merge distance
 // of some of their planes (basement's median moved by 3e-6 deg between the two).
@@ -117,6 +117,8 @@ ProxySpec authoredSpec(ProxyShape& shape, const fs::path& meshFile, const std::s
     return AuthoredObb{box->centerMeters, box->halfExtentsMeters, box->worldFromBox};
   if (const auto* sphere = std::get_if<SphereShape>(&shape))
     return AuthoredSphere{sphere->centerMeters, sphere->radiiMeters.x};
+  if (const auto* cheapK = std::get_if<CheapKShape>(&shape))
+    return AuthoredCheapK{cheapK->kPerMeter};
   if (const auto* convex = std::get_if<ConvexProxy>(&shape)) {
     LevelMesh mesh;
     for (const glm::dvec3& v : convex->verticesMeters) mesh.positionsMeters.emplace_back(v);
