@@ -168,10 +168,15 @@ ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe
     asValidate.simplifyHoldingFloor = false;
     builds.push_back(buildProbeProxy(inner, view, hull, samples, std::nullopt, asValidate));
   }
-  const auto admissible = [&](std::size_t b, std::size_t c) {
+  // The served floor's choice below may keep cheap_k (a scene holds it); the choice by the
+  // majority range may not (proxy_build_options.h: allowed there, the validation maps got worse).
+  const auto admissibleToServe = [&](std::size_t b, std::size_t c) {
     const ProxyShape& shape = builds[b].candidates[c].shape;
     return sceneFileCanHold(shape) &&
            (c == builds[b].kept || planeCount(shape) <= kMostPlanesToSwitchTo);
+  };
+  const auto admissible = [&](std::size_t b, std::size_t c) {
+    return admissibleToServe(b, c) && layoutChoosesAmong(builds[b].candidates[c].shape);
   };
   const FloorScore& startScore = keptScores[start];
   // Every fit's candidates may serve that floor better than the kept ones, each build having
@@ -209,7 +214,7 @@ ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe
     ServedError best = chosen;
     for (std::size_t b = 0; b < builds.size(); ++b) {
       for (std::size_t c = 0; c < builds[b].candidates.size(); ++c) {
-        if (!admissible(b, c)) continue;
+        if (!admissibleToServe(b, c)) continue;
         const ServedError e = measure(b, c);
         if (servesClearlyBetter(e, chosen) &&
             (e.overShare < best.overShare ||

@@ -102,4 +102,8 @@ bool sceneFileCanHold(const ProxyShape& shape) {
   return true;
 }
 
+bool layoutChoosesAmong(const ProxyShape& shape) {
+  return sceneFileCanHold(shape) && !std::holds_alternative<CheapKShape>(shape);
+}
+
 }  // namespace probeproxy

@@ -19,6 +19,10 @@ std::optional<ProxyShape> authoredProxyShape(const ProxySpec& spec, const Scene&
 // or `build` and `survey` on that scene would make and measure another.
 bool sceneFileCanHold(const ProxyShape& shape);
 
+// The shapes layout chooses among when it fits a proxy to a range (ProxyBuildOptions::
+// sceneShapesOnly): those a scene file can hold but cheap_k.
+bool layoutChoosesAmong(const ProxyShape& shape);
+
 // The authored convex mesh as it is in the file, in the world frame: what authoredProxyShape
 // turns into planes and what the proxy mesh checks inspect.
 LevelMesh loadAuthoredProxyMesh(const AuthoredConvexMesh& mesh, const Scene& scene);

@@ -5,6 +5,7 @@
 #include "core/proxy/proxy_candidate.h"
 #include "geometry/evaluation/evaluate_shape.h"
 #include "geometry/evaluation/reflection_samples.h"
+#include "geometry/layout/candidate_service.h"
 #include "geometry/layout/layout_proxy.h"
 #include "geometry/level/load_level.h"
 #include "geometry/probe_proxies/build_probe_proxy.h"
@@ -131,6 +132,82 @@ TEST(BuildLayoutProxy, OnSoylentValidateFindsNoGeneratedProxyClearlyBetter) {
                   findings);
   ASSERT_EQ(findings.size(), 1u);  // its floor is over the tolerance: information, no warning
   EXPECT_EQ(findings[0].rule, "proxy_error_over_tolerance");
+  EXPECT_EQ(findings[0].severity, "info") << findings[0].message;
+}
+
+TEST(BuildLayoutProxy, OnStarshipALongRangeMayKeepCheapK) {
+  // probe_032 of starship's layout (a validation map): a 48 m range with its capture point at
+  // one end, and the ten volumes meeting it, in the scene's order. Every box fitted from that
+  // end leaves its served floor over 5 deg (misses past the box); validate's generated proxy,
+  // cheap_k, serves it clearly better. The layout must keep it, a scene holding cheap_k.
+  const LevelRayCaster level(corpusLevel("starship", PROBEPROXY_CORPUS_VALIDATION));
+  struct Volume {
+    const char* name;
+    glm::dvec3 capture, center, half, innerHalf;
+  };
+  const Volume volumes[] = {
+      {"probe_032",
+       {30.75, -29.25, 3.6},
+       {11.0625, -26.25, 3.0},
+       {23.9375, 5.75, 1.75},
+       {22.4375, 4.25, 1.5}},
+      {"probe_039",
+       {-14.25, -29.25, 1.6},
+       {-14.25, -29.0, 1.0},
+       {4.375, 4.375, 1.75},
+       {1.25, 1.5, 1.5}},
+      {"probe_040",
+       {-14.25, -24.25, 1.6},
+       {-14.25, -24.75, 1.0},
+       {2.375794258, 2.993493392, 1.75},
+       {1.0, 1.75, 1.5}},
+      {"probe_046",
+       {-14.25, -19.25, 1.6},
+       {-14.25, -18.5, 1.0},
+       {2.75, 3.0, 1.75},
+       {1.25, 1.5, 1.5}},
+      {"probe_070", {33.25, -31.75, 3.6}, {32.5, -32.5, 3.0}, {2.5, 2.5, 1.75}, {1.0, 1.0, 1.5}},
+      {"probe_074",
+       {-14.25, -34.25, 0.6},
+       {-13.5, -34.25, 0.375},
+       {5.0, 4.25, 2.125},
+       {3.5, 2.75, 1.875}},
+      {"probe_113", {28.25, -31.75, 3.6}, {29.25, -32.5, 3.0}, {2.75, 2.5, 1.75}, {1.25, 1.0, 1.5}},
+      {"probe_124",
+       {-11.75, -19.25, 1.6},
+       {-10.0, -19.0, 1.0},
+       {3.5, 3.218713656, 1.75},
+       {2.0, 1.5, 1.5}},
+      {"probe_141", {35.75, -31.75, 3.6}, {35.25, -32.0, 3.0}, {2.25, 4.5, 1.75}, {0.75, 3.0, 1.5}},
+      {"probe_142",
+       {-16.75, -21.75, 1.6},
+       {-15.5, -21.5, 1.0},
+       {8.25, 3.125, 1.75},
+       {2.5, 0.5, 1.5}},
+      {"probe_149",
+       {-10.75, -26.75, 0.749500048},
+       {-9.75, -26.75, 0.4995},
+       {2.75, 5.25, 1.2495},
+       {1.25, 3.75, 0.9995}},
+  };
+  std::vector<InfluenceVolume> meeting;
+  for (const Volume& v : volumes)
+    meeting.push_back(layoutProbe(v.name, v.capture, v.center, v.half, v.innerHalf).influence);
+  const Probe probe = layoutProbe(volumes[0].name, volumes[0].capture, volumes[0].center,
+                                  volumes[0].half, volumes[0].innerHalf);
+  constexpr double kToleranceDeg = 5.0;
+  constexpr int kProbeIndex = 0;
+  const ProbeProxyBuild kept = buildLayoutProxy(level, probe, ProxyBuildOptions{}, kRoomsFitMeters,
+                                                kToleranceDeg, {meeting, kProbeIndex});
+  EXPECT_TRUE(std::holds_alternative<CheapKShape>(kept.candidates[kept.kept].shape));
+
+  ValidateOptions v;
+  v.toleranceDeg = kToleranceDeg;
+  v.rules = {"proxy_error_over_tolerance"};
+  std::vector<ValidationFinding> findings;
+  checkProxyError(level, probe, meeting, kProbeIndex, kept.candidates[kept.kept].shape, {}, v,
+                  findings);
+  ASSERT_EQ(findings.size(), 1u);
   EXPECT_EQ(findings[0].severity, "info") << findings[0].message;
 }
 
