@@ -48,10 +48,9 @@ std::vector<InfluenceVolume> volumesMeeting(std::span<const InfluenceVolume> vol
 // are, and not, as `validate` generates its proxy), and of all five builds' candidates (the
 // same ones, and each build's cheap_k, which a scene holds but the choices before may not
 // take: proxy_build_options.h) the one serving the probe's blend-weighted floor clearly better
-// than that choice
-// (served_error.h, on `validate`'s samples), with the least of it over the tolerance, then the
-// lowest p95, replaces it. The probe's influence is its whole box; the build returned reports
-// on its inner range, as `build` on the layout's scene does.
+// than that choice (served_error.h, on `validate`'s samples), with the least of it over the
+// tolerance, then the lowest p95, replaces it. The probe's influence is its whole box; the build
+// returned reports on its inner range, as `build` on the layout's scene does.
 ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe,
                                  ProxyBuildOptions options, double candidateFitMeters,
                                  double toleranceDeg, const BlendNeighbourhood& blend = {});

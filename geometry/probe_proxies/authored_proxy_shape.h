@@ -15,8 +15,8 @@ namespace probeproxy {
 std::optional<ProxyShape> authoredProxyShape(const ProxySpec& spec, const Scene& scene);
 
 // Whether a scene file can author `shape` (infinite, cheap_k, box/obb, sphere, convex mesh):
-// not an ellipsoid. What layout writes into its scene must be one,
-// or `build` and `survey` on that scene would make and measure another.
+// not an ellipsoid. What layout writes into its scene must be one, or `build` and `survey` on
+// that scene would make and measure another.
 bool sceneFileCanHold(const ProxyShape& shape);
 
 // The shapes layout chooses among when it fits a proxy to a range (ProxyBuildOptions::

@@ -197,7 +197,9 @@ JsonLayoutValue jsonExactNumber(double value) {
       value, fixedReadsWell ? std::chars_format::fixed : std::chars_format::scientific));
 }
 
-double jsonRoundedFactor(double value) {
+namespace {
+
+double roundedFactor(double value) {
   if (value == 0.0) return 0.0;  // no "-0.0"
   if (!std::isfinite(value)) return value;
   char buffer[64];
@@ -208,7 +210,9 @@ double jsonRoundedFactor(double value) {
   return rounded;
 }
 
-JsonLayoutValue jsonFactor(double value) { return jsonExactNumber(jsonRoundedFactor(value)); }
+}  // namespace
+
+JsonLayoutValue jsonFactor(double value) { return jsonExactNumber(roundedFactor(value)); }
 
 JsonLayoutValue jsonArray(std::vector<JsonLayoutValue> elements, bool oneItemPerLine) {
   JsonLayoutValue value;

@@ -54,7 +54,6 @@ JsonLayoutValue jsonExactNumber(double value);
 // A factor whose size depends on the file's unit (cheap_k's k, per unit length), rounded to 12
 // significant digits so that unit-conversion noise never shows, then spelled as above.
 JsonLayoutValue jsonFactor(double value);
-double jsonRoundedFactor(double value);  // the number jsonFactor spells
 
 // Containers.
 JsonLayoutValue jsonArray(std::vector<JsonLayoutValue> elements, bool oneItemPerLine = false);
