@@ -12,7 +12,7 @@ ProxyBuildOptions LayoutOptions::coarseCandidateProxyOptions() {
   o.samples.camerasAcross = 4;
   o.maxPlanes = 16;
   o.uprightObb = true;
-  o.sceneShapesOnly = true;  // as the final build's (layout_proxy.h)
+  o.layoutShapesOnly = true;  // as the final build's (layout_proxy.h)
   return o;
 }
 

@@ -113,7 +113,7 @@ ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe
                                  double toleranceDeg, const BlendNeighbourhood& blend) {
   // The kept proxy is written into the layout's scene file: it must be one a scene can hold,
   // or `build` and `survey` on that scene would measure another.
-  options.sceneShapesOnly = true;
+  options.layoutShapesOnly = true;
   // No simplification step misses a lookup from the floor it was fitted to; with the fits
   // chosen by the floor over the tolerance, that took p95 and the floor over 5 deg down
   // together (proxy_build_options.h).

@@ -20,7 +20,7 @@ std::optional<ProxyShape> authoredProxyShape(const ProxySpec& spec, const Scene&
 bool sceneFileCanHold(const ProxyShape& shape);
 
 // The shapes layout chooses among when it fits a proxy to a range (ProxyBuildOptions::
-// sceneShapesOnly): those a scene file can hold but cheap_k.
+// layoutShapesOnly): those a scene file can hold but cheap_k (proxy_build_options.h says why).
 bool layoutChoosesAmong(const ProxyShape& shape);
 
 // The authored convex mesh as it is in the file, in the world frame: what authoredProxyShape

@@ -14,12 +14,12 @@ struct ProxyBuildOptions {
   int depthFaceSize = 128;     // depth cube the candidates are fitted to
   bool regenerate = false;     // build a proxy even where the scene file has an authored one
   bool uprightObb = false;     // the obb candidate stands upright, no optimizer (layout)
-  // Keep only a shape a scene file can author (sceneFileCanHold: layout writes its kept
-  // proxies into one), and not cheap_k: layout's coarse candidates and the proxy it fits to a
-  // range choose among the shapes. Allowed there too, cheap_k moved ranges and the validation
+  // Keep only a shape layout chooses among (layoutChoosesAmong): one a scene file can author
+  // (layout writes its kept proxies into one), and not cheap_k. Allowed in layout's coarse
+  // candidates and its fits to a range's floor too, cheap_k moved ranges and the validation
   // maps got worse (bleach 296 -> 306 probes, p95 38.3 -> 40.6 deg, floor over 5 deg 23.9% ->
   // 24.2%); layout_proxy.h lets it serve a probe's floor in the blend alone.
-  bool sceneShapesOnly = false;
+  bool layoutShapesOnly = false;
   // The simplification starts from planes grown to hold the fit samples' floor
   // (hold_shading_points.h): layout's final fits (layout_proxy.h). Not `build`'s default: on
   // the corpus's spawn-point probes it took p95 down (warfare 55.3 -> 40.9 deg, basement 67.1

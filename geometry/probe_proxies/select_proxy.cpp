@@ -36,7 +36,7 @@ std::size_t selectProxy(const std::vector<ProxyCandidate>& candidates, const Pro
   const auto generated = [&](std::size_t i) {
     return candidates[i].origin != CandidateOrigin::Authored &&
            planeCount(candidates[i].shape) <= o.maxPlanes &&
-           (!o.sceneShapesOnly || layoutChoosesAmong(candidates[i].shape));
+           (!o.layoutShapesOnly || layoutChoosesAmong(candidates[i].shape));
   };
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     if (!generated(i) || !meetsTolerance(candidates[i].error, o)) continue;

@@ -159,14 +159,14 @@ TEST(BuildStages, SelectionKeepsTheFewestPlanesWithinToleranceElseTheMostAccurat
 // Layout writes its kept proxies into a scene file, which holds no cheap_k (DESIGN.md's
 // contract): the best a scene can hold is kept instead, or `build` on that scene would measure
 // another proxy than the layout did.
-TEST(BuildStages, ALayoutKeepsOnlyAShapeItsSceneFileCanHold) {
+TEST(BuildStages, ALayoutsShapesAreOnesASceneHoldsButCheapK) {
   ProxyBuildOptions o;
   o.toleranceDeg = 1.0;
   std::vector<ProxyCandidate> c = {candidate(CandidateOrigin::Infinite, InfiniteShape{}, 50, 20),
                                    candidate(CandidateOrigin::CheapK, CheapKShape{}, 0.5, 0.2),
                                    candidate(CandidateOrigin::Aabb, BoxShape{}, 0.9, 0.3)};
   EXPECT_EQ(selectProxy(c, o), 1u);
-  o.sceneShapesOnly = true;
+  o.layoutShapesOnly = true;
   EXPECT_EQ(selectProxy(c, o), 2u);
   o.toleranceDeg = 0.1;  // none meets it: the most accurate a scene can hold
   EXPECT_EQ(selectProxy(c, o), 2u);

@@ -105,8 +105,8 @@ Scene layoutScene(const Scene& input, const LayoutResult& layout, const fs::path
 
 // The scene file says which proxy each probe has, so `build` on layout.scene.json keeps the
 // same ones: boxes, spheres, cheap_k and none as written, a convex proxy as a mesh beside the
-// scene. A shape no scene can hold stays `auto` (buildLayoutProxy keeps none: sceneShapesOnly). A
-// convex shape becomes the one its mesh gives, as `survey` and `build` read it from the file:
+// scene. A shape no scene can hold stays `auto` (buildLayoutProxy keeps none). A convex shape
+// becomes the one its mesh gives, as `survey` and `build` read it from the file:
 // corners in floats, and those merged in polytopeFromPlanes stand within the merge distance
 // of some of their planes (basement's median moved by 3e-6 deg between the two).
 ProxySpec authoredSpec(ProxyShape& shape, const fs::path& meshFile, const std::string& name,
