@@ -100,6 +100,29 @@ TEST(BuildProbeProxy, OnWarfareTheRoomBoxHoldsTheFloorPastItsWalls) {
   EXPECT_LT(build.candidates[build.kept].error.medianDeg, 2.5);
 }
 
+// The layout's proxy for `probe` among the volumes meeting its own (in the scene's order,
+// `meeting[probeIndex]` its own), and validate's proxy rule on it, at the layout's tolerance
+// (recorded in its scene).
+struct KeptAndJudged {
+  ProbeProxyBuild kept;
+  std::vector<ValidationFinding> findings;
+};
+
+KeptAndJudged keepThenValidate(const LevelRayCaster& level, const Probe& probe,
+                               const std::vector<InfluenceVolume>& meeting, int probeIndex,
+                               double candidateFitMeters) {
+  constexpr double kToleranceDeg = 5.0;
+  KeptAndJudged out;
+  out.kept = buildLayoutProxy(level, probe, ProxyBuildOptions{}, candidateFitMeters, kToleranceDeg,
+                              {meeting, probeIndex});
+  ValidateOptions v;
+  v.toleranceDeg = kToleranceDeg;
+  v.rules = {"proxy_error_over_tolerance"};
+  checkProxyError(level, probe, meeting, probeIndex, out.kept.candidates[out.kept.kept].shape, {},
+                  v, out.findings);
+  return out;
+}
+
 TEST(BuildLayoutProxy, OnSoylentValidateFindsNoGeneratedProxyClearlyBetter) {
   // probe_113 of soylent's layout (a validation map) and the two volumes meeting its own, in
   // the scene's order. Its proxy was chosen among fits simplified holding their floor; validate
@@ -117,19 +140,10 @@ TEST(BuildLayoutProxy, OnSoylentValidateFindsNoGeneratedProxyClearlyBetter) {
                   {5.0, 2.25, 1.75000155}, {3.5, 0.75, 1.50000155})
           .influence,
       probe.influence};
-  constexpr double kToleranceDeg = 5.0;  // the layout's, recorded in its scene
   constexpr int kProbeIndex = 2;
   constexpr double kCandidateFitMeters = 4.0;  // the selection's for this probe
-  const ProbeProxyBuild kept =
-      buildLayoutProxy(level, probe, ProxyBuildOptions{}, kCandidateFitMeters, kToleranceDeg,
-                       {meeting, kProbeIndex});
-
-  ValidateOptions v;
-  v.toleranceDeg = kToleranceDeg;
-  v.rules = {"proxy_error_over_tolerance"};
-  std::vector<ValidationFinding> findings;
-  checkProxyError(level, probe, meeting, kProbeIndex, kept.candidates[kept.kept].shape, {}, v,
-                  findings);
+  const std::vector<ValidationFinding> findings =
+      keepThenValidate(level, probe, meeting, kProbeIndex, kCandidateFitMeters).findings;
   ASSERT_EQ(findings.size(), 1u);  // its floor is over the tolerance: information, no warning
   EXPECT_EQ(findings[0].rule, "proxy_error_over_tolerance");
   EXPECT_EQ(findings[0].severity, "info") << findings[0].message;
@@ -195,18 +209,9 @@ TEST(BuildLayoutProxy, OnStarshipALongRangeMayKeepCheapK) {
     meeting.push_back(layoutProbe(v.name, v.capture, v.center, v.half, v.innerHalf).influence);
   const Probe probe = layoutProbe(volumes[0].name, volumes[0].capture, volumes[0].center,
                                   volumes[0].half, volumes[0].innerHalf);
-  constexpr double kToleranceDeg = 5.0;
-  constexpr int kProbeIndex = 0;
-  const ProbeProxyBuild kept = buildLayoutProxy(level, probe, ProxyBuildOptions{}, kRoomsFitMeters,
-                                                kToleranceDeg, {meeting, kProbeIndex});
-  EXPECT_TRUE(std::holds_alternative<CheapKShape>(kept.candidates[kept.kept].shape));
-
-  ValidateOptions v;
-  v.toleranceDeg = kToleranceDeg;
-  v.rules = {"proxy_error_over_tolerance"};
-  std::vector<ValidationFinding> findings;
-  checkProxyError(level, probe, meeting, kProbeIndex, kept.candidates[kept.kept].shape, {}, v,
-                  findings);
+  const KeptAndJudged judged = keepThenValidate(level, probe, meeting, 0, kRoomsFitMeters);
+  EXPECT_TRUE(std::holds_alternative<CheapKShape>(judged.kept.candidates[judged.kept.kept].shape));
+  const std::vector<ValidationFinding>& findings = judged.findings;
   ASSERT_EQ(findings.size(), 1u);
   EXPECT_EQ(findings[0].severity, "info") << findings[0].message;
 }
