@@ -9,6 +9,17 @@ namespace probeproxy {
 
 namespace {
 
+// to_chars/from_chars, not printf/strtod: the add-on runs us inside Blender, whose locale may
+// spell the decimal point as a comma.
+double roundedToSignificantDigits(double value, int digits) {
+  char buffer[64];
+  const auto printed = std::to_chars(buffer, buffer + sizeof(buffer), value,
+                                     std::chars_format::scientific, digits - 1);
+  double rounded = value;
+  std::from_chars(buffer, printed.ptr, rounded, std::chars_format::scientific);
+  return rounded;
+}
+
 using Kind = JsonLayoutValue::Kind;
 
 std::string shortestDecimal(double value, std::chars_format format) {
@@ -171,12 +182,7 @@ double jsonRoundedCoordinate(double value) {
     // value * 1e9 < 1e15 < 2^53: the rounding is exact integer arithmetic.
     rounded = std::round(value * 1e9) / 1e9;
   } else {
-    // to_chars/from_chars, not printf/strtod: the add-on runs us inside Blender, whose
-    // locale may spell the decimal point as a comma.
-    char buffer[64];
-    const auto printed =
-        std::to_chars(buffer, buffer + sizeof(buffer), value, std::chars_format::scientific, 14);
-    std::from_chars(buffer, printed.ptr, rounded, std::chars_format::scientific);
+    rounded = roundedToSignificantDigits(value, 15);
   }
   return rounded == 0.0 ? 0.0 : rounded;  // no "-0.0" from a conversion such as (x, -z, y)
 }
@@ -197,22 +203,10 @@ JsonLayoutValue jsonExactNumber(double value) {
       value, fixedReadsWell ? std::chars_format::fixed : std::chars_format::scientific));
 }
 
-namespace {
-
-double roundedFactor(double value) {
-  if (value == 0.0) return 0.0;  // no "-0.0"
-  if (!std::isfinite(value)) return value;
-  char buffer[64];
-  const auto printed =
-      std::to_chars(buffer, buffer + sizeof(buffer), value, std::chars_format::scientific, 11);
-  double rounded = value;
-  std::from_chars(buffer, printed.ptr, rounded, std::chars_format::scientific);
-  return rounded;
+JsonLayoutValue jsonFactor(double value) {
+  if (!std::isfinite(value)) return scalar("null");
+  return jsonExactNumber(roundedToSignificantDigits(value, 12));
 }
-
-}  // namespace
-
-JsonLayoutValue jsonFactor(double value) { return jsonExactNumber(roundedFactor(value)); }
 
 JsonLayoutValue jsonArray(std::vector<JsonLayoutValue> elements, bool oneItemPerLine) {
   JsonLayoutValue value;
