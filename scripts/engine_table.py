@@ -16,11 +16,12 @@ engine a row and a level a column (floor over 5 deg, layout / grid and their rat
 not right, layout / grid), with the levels where the layout has at most half the grid's floor
 over 5 deg and under 30%. With --jsonl FILE each level's figures are also appended there as they
 come; --from-jsonl FILE prints the tables of such a file without running anything;
---without-generic skips the first run (and the tables' first column).
+--without-generic skips the first run (and the tables' first column); --resume reads each run
+whose folder under --work already holds its layout.json instead of running it again.
 
   /usr/bin/python3 scripts/engine_table.py build/plugin/cli/probeproxy build/corpus/scenes \
       [--levels downer toxic] [--engines unity godot3] [--work DIR] [--jsonl FILE] \
-      [--without-generic]
+      [--without-generic] [--resume]
   /usr/bin/python3 scripts/engine_table.py - - --from-jsonl FILE
 """
 import argparse
@@ -48,15 +49,25 @@ def not_right(f):
     return f["over"] + f["occluded"] + f["uncovered"]
 
 
-def level_figures(probeproxy, scene, work, engines, generic=True):
+def run_layout(probeproxy, scene, out, resume, *options):
+    """`layout SCENE --out OUT --json OPTIONS`; with resume, the layout.json an earlier run left
+    in OUT (the file is what --json prints), so an interrupted table picks up where it stopped."""
+    written = os.path.join(out, "layout.json")
+    if resume and os.path.exists(written):
+        with open(written) as f:
+            return json.load(f)
+    return run_json(probeproxy, "layout", scene, "--out", out, "--json", *options)
+
+
+def level_figures(probeproxy, scene, work, engines, generic=True, resume=False):
     plain, engine, grid = (os.path.join(work, kind) for kind in ("plain", "engine", "grid"))
     names = ",".join(engines)
-    tuned = run_json(probeproxy, "layout", scene, "--out", engine, "--json", "--engine", names)
-    baseline = run_json(probeproxy, "layout", scene, "--out", grid, "--json", "--baseline",
-                        "grid", "--max-probes", str(tuned["probes"]), "--engine", names)
+    tuned = run_layout(probeproxy, scene, engine, resume, "--engine", names)
+    baseline = run_layout(probeproxy, scene, grid, resume, "--baseline", "grid", "--max-probes",
+                          str(tuned["probes"]), "--engine", names)
     # The same probes as `layout` alone writes them: the engine stage changes only the presets
     # (and with one engine named, its survey is that engine's, so the generic one comes from here).
-    layout = run_json(probeproxy, "layout", scene, "--out", plain, "--json") if generic else None
+    layout = run_layout(probeproxy, scene, plain, resume) if generic else None
     out = {"probes": tuned["probes"], "grid_probes": baseline["probes"],
            "generic": layout and figures(layout["survey"]), "engines": {}}
     for engine in engines:
@@ -144,6 +155,8 @@ def main():
     parser.add_argument("--from-jsonl", help="print the tables of figures a --jsonl run saved")
     parser.add_argument("--without-generic", action="store_true",
                         help="skip the generic layout's presets (one layout run less per level)")
+    parser.add_argument("--resume", action="store_true",
+                        help="read a run whose --work folder holds its layout.json, not run it")
     args = parser.parse_args()
 
     if args.from_jsonl:
@@ -161,7 +174,7 @@ def main():
             level = os.path.basename(os.path.dirname(scene))
             work = os.path.join(args.work or scratch, level)
             results[level] = level_figures(args.probeproxy, scene, work, args.engines,
-                                           not args.without_generic)
+                                           not args.without_generic, args.resume)
             if args.jsonl:
                 with open(args.jsonl, "a") as f:
                     f.write(json.dumps({"level": level, **results[level]}) + "\n")

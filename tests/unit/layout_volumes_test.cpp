@@ -301,7 +301,8 @@ TEST(FillsForUncoveredFloor, FloorAFillsCutLeavesIsFilledAgain) {
     EXPECT_FALSE(innerRangesOverlap(volumes[1], f.influence));
     volumes.push_back(f.influence);
   }
-  if (volumes.size() == 4) EXPECT_FALSE(innerRangesOverlap(volumes[2], volumes[3]));
+  ASSERT_EQ(volumes.size(), 4u);
+  EXPECT_FALSE(innerRangesOverlap(volumes[2], volumes[3]));
   expectEveryCellCovered(floor, volumes);
 }
 
