@@ -87,6 +87,23 @@ bool servesBetter(const FloorScore& a, const FloorScore& b) {
          (a.percentOverOrGross == b.percentOverOrGross && a.meanCostDeg < b.meanCostDeg);
 }
 
+// Which of `build`'s candidates `validate` would keep as the proxy it generates for `probe`
+// (generatedForComparison): its fits are validate's, only kept otherwise, so its candidates are
+// measured again on the whole box's floor and selected as validate selects. A simplification
+// step the build dropped (reaching far from its own kept one) is not among them.
+std::size_t keptAsGenerated(const LevelRayCaster& level, const Probe& probe, ProbeProxyBuild build,
+                            double farthestSeenMeters, double toleranceDeg,
+                            const ReflectionSampleOptions& samples) {
+  const ProxyBuildOptions asValidate = generatedForComparison(toleranceDeg, samples);
+  const std::vector<ReflectionSample> floor =
+      drawReportSamples(level, probe, asValidate, SampleSet::MirrorFloor);
+  for (ProxyCandidate& c : build.candidates)
+    c.error = evaluateShape(c.shape, probe.captureMeters, floor);
+  build.kept = selectProxy(build.candidates, asValidate);
+  dropStepsReachingFar(build, probe.captureMeters, farthestSeenMeters, asValidate);
+  return build.kept;
+}
+
 }  // namespace
 
 std::vector<InfluenceVolume> volumesMeeting(std::span<const InfluenceVolume> volumes,
@@ -163,17 +180,27 @@ ProbeProxyBuild buildLayoutProxy(const LevelRayCaster& level, const Probe& probe
   // the floor: other planes drop, other candidates): the served-floor step below must have the
   // very proxy validate would hint at (soylent's probe_113 was warned of with it, 36% of its
   // served floor over 5 deg against the layout's 41%). samples.fit is still the whole box's.
+  // Of its candidates, the one validate keeps (validateKept) may serve too, whatever its planes:
+  // validate keeps by the whole box's floor at the layout's tolerance, this build by the inner
+  // range's at build's (dieselpower's probe_337 was warned of with validate's convex_18, which
+  // this build had but did not keep). Built to keep as validate does instead, the build moved
+  // other probes' choices too, and three validation maps got worse (docs/layout.md).
+  const std::size_t validateBuild = builds.size();
+  std::size_t validateKept = 0;
   if (!blend.volumes.empty()) {
     ProxyBuildOptions asValidate = options;
     asValidate.simplifyHoldingFloor = false;
     builds.push_back(buildProbeProxy(inner, view, hull, samples, std::nullopt, asValidate));
+    validateKept = keptAsGenerated(level, probe, builds.back(), view.farthestMeters, toleranceDeg,
+                                   options.samples);
   }
   // The served floor's choice below may keep cheap_k (a scene holds it); the choice by the
   // majority range may not (proxy_build_options.h: allowed there, the validation maps got worse).
   const auto admissibleToServe = [&](std::size_t b, std::size_t c) {
     const ProxyShape& shape = builds[b].candidates[c].shape;
     return sceneFileCanHold(shape) &&
-           (c == builds[b].kept || planeCount(shape) <= kMostPlanesToSwitchTo);
+           (c == builds[b].kept || (b == validateBuild && c == validateKept) ||
+            planeCount(shape) <= kMostPlanesToSwitchTo);
   };
   const auto admissible = [&](std::size_t b, std::size_t c) {
     return admissibleToServe(b, c) && layoutChoosesAmong(builds[b].candidates[c].shape);

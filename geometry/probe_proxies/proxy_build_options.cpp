@@ -12,4 +12,13 @@ void ProxyBuildOptions::check() const {
   samples.check();
 }
 
+ProxyBuildOptions generatedForComparison(double toleranceDeg,
+                                         const ReflectionSampleOptions& samples) {
+  ProxyBuildOptions build;
+  build.toleranceDeg = toleranceDeg;
+  build.regenerate = true;
+  build.samples = samples;
+  return build;
+}
+
 }  // namespace probeproxy

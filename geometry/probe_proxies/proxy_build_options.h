@@ -36,4 +36,10 @@ struct ProxyBuildOptions {
   void check() const;
 };
 
+// The proxy `validate` compares a scene's own with (proxy_error_rule.cpp): `build`'s, generated
+// whatever the scene authored, kept by the scene's tolerance. The layout builds the same one so
+// that validate never hints at a proxy the layout did not weigh (layout_proxy.h).
+ProxyBuildOptions generatedForComparison(double toleranceDeg,
+                                         const ReflectionSampleOptions& samples);
+
 }  // namespace probeproxy

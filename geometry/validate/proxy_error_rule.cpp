@@ -33,11 +33,8 @@ void checkProxyError(const LevelRayCaster& level, const Probe& probe,
   // No weighted visible sample: nothing to measure (the floor is hidden, or another's).
   if (!(error.p95Deg > tolerance)) return;
 
-  ProxyBuildOptions build;
-  build.toleranceDeg = tolerance;
-  build.regenerate = true;
-  build.samples = options.samples;
-  const ProbeProxyBuild generated = buildProbeProxy(level, probe, authored, build);
+  const ProbeProxyBuild generated =
+      buildProbeProxy(level, probe, authored, generatedForComparison(tolerance, options.samples));
   const ProxyCandidate& kept = generated.candidates[generated.kept];
   const ServedError generatedError =
       servedError(kept.shape, probe.captureMeters, samples, weights, tolerance);

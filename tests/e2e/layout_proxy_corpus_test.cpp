@@ -216,5 +216,57 @@ TEST(BuildLayoutProxy, OnStarshipALongRangeMayKeepCheapK) {
   EXPECT_EQ(findings[0].severity, "info") << findings[0].message;
 }
 
+TEST(BuildLayoutProxy, OnDieselpowerValidatesOwnProxyOfManyPlanesIsAChoice) {
+  // probe_337 of dieselpower's layout (a validation map), a fill between two rooms, and the four
+  // volumes meeting it, in the scene's order. validate generated convex_18 (49% of the served
+  // floor over 5 deg against the layout's 56%); the layout's build of the whole box, simplified
+  // as validate's, had it but kept another, and the served floor's choice switched to no
+  // candidate of more than 16 planes that a build had not kept.
+  const LevelRayCaster level(corpusLevel("dieselpower", PROBEPROXY_CORPUS_VALIDATION));
+  struct Volume {
+    const char* name;
+    glm::dvec3 capture, center, half, innerHalf;
+  };
+  const Volume volumes[] = {
+      {"probe_019",
+       {62.25, 6.0, -8.4},
+       {32.25, 12.25, -9.0},
+       {38.25, 11.0, 1.75},
+       {36.75, 9.5, 1.5}},
+      {"probe_021",
+       {-13.75, 26.0, -6.4},
+       {-10.25, 28.0, -7.0},
+       {5.25, 6.75, 1.75},
+       {3.75, 5.25, 1.5}},
+      {"probe_064",
+       {-1.75, 30.0, -6.4},
+       {-0.75, 28.75, -6.99999994},
+       {6.25, 6.0, 1.75000006},
+       {4.75, 4.5, 1.50000006}},
+      {"probe_294",
+       {-12.25, 23.0, -3.375499964},
+       {-12.0, 23.0, -3.75},
+       {5.5, 1.75, 1.75},
+       {4.0, 0.25, 1.5}},
+      {"probe_337",
+       {-3.625, 23.125, -6.750499964},
+       {-3.625, 23.125, -7.125000015},
+       {3.375, 1.625, 1.875000015},
+       {1.875, 0.125, 1.625000015}},
+  };
+  std::vector<InfluenceVolume> meeting;
+  for (const Volume& v : volumes)
+    meeting.push_back(layoutProbe(v.name, v.capture, v.center, v.half, v.innerHalf).influence);
+  constexpr int kProbeIndex = 4;
+  const Volume& own = volumes[kProbeIndex];
+  const Probe probe = layoutProbe(own.name, own.capture, own.center, own.half, own.innerHalf);
+  for (const double fitMeters : {0.0, kRoomFitMeters, kRoomsFitMeters}) {
+    const std::vector<ValidationFinding> findings =
+        keepThenValidate(level, probe, meeting, kProbeIndex, fitMeters).findings;
+    ASSERT_EQ(findings.size(), 1u);
+    EXPECT_EQ(findings[0].severity, "info") << fitMeters << " m: " << findings[0].message;
+  }
+}
+
 }  // namespace
 }  // namespace probeproxy
