@@ -46,8 +46,9 @@ std::vector<InfluenceVolume> volumesMeeting(std::span<const InfluenceVolume> vol
 // degrees, then the lowest mean, is kept; the earlier on a tie. With a blend neighbourhood, a
 // fourth fit to the whole box follows, built twice (simplified holding the floor as the three
 // are, and not, as `validate` generates its proxy), and of all five builds' candidates (the
-// same ones, and each build's cheap_k, which a scene holds but the choices before may not
-// take: proxy_build_options.h) the one serving the probe's blend-weighted floor clearly better
+// same ones, each build's cheap_k, which a scene holds but the choices before may not take:
+// proxy_build_options.h, and of the last build the one `validate` keeps, whatever its planes)
+// the one serving the probe's blend-weighted floor clearly better
 // than that choice (served_error.h, on `validate`'s samples), with the least of it over the
 // tolerance, then the lowest p95, replaces it. The probe's influence is its whole box; the build
 // returned reports on its inner range, as `build` on the layout's scene does.

@@ -37,8 +37,9 @@ struct ProxyBuildOptions {
 };
 
 // The proxy `validate` compares a scene's own with (proxy_error_rule.cpp): `build`'s, generated
-// whatever the scene authored, kept by the scene's tolerance. The layout builds the same one so
-// that validate never hints at a proxy the layout did not weigh (layout_proxy.h).
+// whatever the scene authored, kept by the scene's tolerance. The layout finds the same one
+// among its whole box's candidates, so that validate never hints at a proxy the layout did not
+// weigh (layout_proxy.cpp, keptAsGenerated).
 ProxyBuildOptions generatedForComparison(double toleranceDeg,
                                          const ReflectionSampleOptions& samples);
 
