@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <span>
 #include <string>
 
 namespace probeproxy {
@@ -39,6 +40,19 @@ Probe layoutProbe(const std::string& name, glm::dvec3 capture, glm::dvec3 center
   box.innerHalfExtentsMeters = innerHalfExtents;
   probe.influence = box;
   return probe;
+}
+
+// A probe's volume in a corpus layout, as its layout.scene.json gives it.
+struct LayoutVolume {
+  const char* name;
+  glm::dvec3 capture, center, half, innerHalf;
+  Probe probe() const { return layoutProbe(name, capture, center, half, innerHalf); }
+};
+
+std::vector<InfluenceVolume> influencesOf(std::span<const LayoutVolume> volumes) {
+  std::vector<InfluenceVolume> out;
+  for (const LayoutVolume& v : volumes) out.push_back(v.probe().influence);
+  return out;
 }
 
 TEST(BuildLayoutProxy, OnDownerTheKeptProxyHoldsTheFloorItsBandShares) {
@@ -155,11 +169,7 @@ TEST(BuildLayoutProxy, OnStarshipALongRangeMayKeepCheapK) {
   // end leaves its served floor over 5 deg (misses past the box); validate's generated proxy,
   // cheap_k, serves it clearly better. The layout must keep it, a scene holding cheap_k.
   const LevelRayCaster level(corpusLevel("starship", PROBEPROXY_CORPUS_VALIDATION));
-  struct Volume {
-    const char* name;
-    glm::dvec3 capture, center, half, innerHalf;
-  };
-  const Volume volumes[] = {
+  const LayoutVolume volumes[] = {
       {"probe_032",
        {30.75, -29.25, 3.6},
        {11.0625, -26.25, 3.0},
@@ -204,11 +214,8 @@ TEST(BuildLayoutProxy, OnStarshipALongRangeMayKeepCheapK) {
        {2.75, 5.25, 1.2495},
        {1.25, 3.75, 0.9995}},
   };
-  std::vector<InfluenceVolume> meeting;
-  for (const Volume& v : volumes)
-    meeting.push_back(layoutProbe(v.name, v.capture, v.center, v.half, v.innerHalf).influence);
-  const Probe probe = layoutProbe(volumes[0].name, volumes[0].capture, volumes[0].center,
-                                  volumes[0].half, volumes[0].innerHalf);
+  const std::vector<InfluenceVolume> meeting = influencesOf(volumes);
+  const Probe probe = volumes[0].probe();
   const KeptAndJudged judged = keepThenValidate(level, probe, meeting, 0, kRoomsFitMeters);
   EXPECT_TRUE(std::holds_alternative<CheapKShape>(judged.kept.candidates[judged.kept.kept].shape));
   const std::vector<ValidationFinding>& findings = judged.findings;
@@ -223,11 +230,7 @@ TEST(BuildLayoutProxy, OnDieselpowerValidatesOwnProxyOfManyPlanesIsAChoice) {
   // as validate's, had it but kept another, and the served floor's choice switched to no
   // candidate of more than 16 planes that a build had not kept.
   const LevelRayCaster level(corpusLevel("dieselpower", PROBEPROXY_CORPUS_VALIDATION));
-  struct Volume {
-    const char* name;
-    glm::dvec3 capture, center, half, innerHalf;
-  };
-  const Volume volumes[] = {
+  const LayoutVolume volumes[] = {
       {"probe_019",
        {62.25, 6.0, -8.4},
        {32.25, 12.25, -9.0},
@@ -254,12 +257,9 @@ TEST(BuildLayoutProxy, OnDieselpowerValidatesOwnProxyOfManyPlanesIsAChoice) {
        {3.375, 1.625, 1.875000015},
        {1.875, 0.125, 1.625000015}},
   };
-  std::vector<InfluenceVolume> meeting;
-  for (const Volume& v : volumes)
-    meeting.push_back(layoutProbe(v.name, v.capture, v.center, v.half, v.innerHalf).influence);
+  const std::vector<InfluenceVolume> meeting = influencesOf(volumes);
   constexpr int kProbeIndex = 4;
-  const Volume& own = volumes[kProbeIndex];
-  const Probe probe = layoutProbe(own.name, own.capture, own.center, own.half, own.innerHalf);
+  const Probe probe = volumes[kProbeIndex].probe();
   for (const double fitMeters : {0.0, kRoomFitMeters, kRoomsFitMeters}) {
     const std::vector<ValidationFinding> findings =
         keepThenValidate(level, probe, meeting, kProbeIndex, fitMeters).findings;
