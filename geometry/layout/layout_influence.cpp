@@ -19,10 +19,6 @@ namespace {
 // than this would leave that fill's range overlapping the platform's instead.
 constexpr double kMinAirOverFloorMeters = 0.05;
 
-// A range overhanging this one's edge takes a strip of its plan instead of its head room when
-// the strip is at most this share of the plan (warfare's: 7%).
-constexpr double kMostPlanGivenUpForHeadRoom = 0.25;
-
 BoxInfluence boxAround(glm::dvec3 lo, glm::dvec3 hi, double bandMeters) {
   BoxInfluence box;
   box.centerMeters = 0.5 * (lo + hi);
@@ -89,7 +85,7 @@ BoxInfluence influenceOfBounds(glm::dvec3 innerLoMeters, glm::dvec3 innerHiMeter
 
 void keepClearOfInnerRanges(glm::dvec3& lo, glm::dvec3& hi, glm::dvec3& captureMeters,
                             double floorMeters, std::span<const InfluenceVolume> others,
-                            double gapMeters) {
+                            double gapMeters, double mostPlanGivenUp) {
   const auto meets = [&](glm::dvec3 otherLo, glm::dvec3 otherHi) {
     return !glm::any(glm::greaterThanEqual(lo, otherHi)) &&
            !glm::any(glm::lessThanEqual(hi, otherLo));
@@ -134,8 +130,7 @@ void keepClearOfInnerRanges(glm::dvec3& lo, glm::dvec3& hi, glm::dvec3& captureM
     if (heightSide == 0) continue;
     const PlanCut cut = planCut(otherLo, otherHi);
     const int across = 1 - cut.axis;
-    if (cut.side != 0 &&
-        cut.meters * (hi[across] - lo[across]) <= kMostPlanGivenUpForHeadRoom * planArea()) {
+    if (cut.side != 0 && cut.meters * (hi[across] - lo[across]) <= mostPlanGivenUp * planArea()) {
       applyPlanCut(cut, otherLo, otherHi);
       continue;
     }

@@ -405,7 +405,8 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
     glm::dvec3 lo, hi;
     floorRectBounds(floor, rect, capture, lo, hi);
     const glm::dvec3 chosen = capture;
-    keepClearOfInnerRanges(lo, hi, capture, rect.floorMeters, volumes, o.blendBandMeters);
+    keepClearOfInnerRanges(lo, hi, capture, rect.floorMeters, volumes, o.blendBandMeters,
+                           kRangePlanGivenUpForHeadRoom);
     if (!clearMovedCapture(level, chosen, capture, rect.floorMeters, hi.z)) return;
     pullBandsIntoSight(level, walked, capture, o.blendBandMeters, lo, hi);
     r.probes.push_back({capture, influenceOfBounds(lo, hi, o.blendBandMeters), fitMeters});

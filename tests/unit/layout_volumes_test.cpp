@@ -68,7 +68,7 @@ TEST(KeepClearOfInnerRanges, APitFillStopsUnderTheRangeOverIt) {
   // A range over a 10 x 10 m floor at z 0 whose box spans a pit 2 m deep at [2, 4]^2.
   const std::vector<InfluenceVolume> range{influenceOfBounds({0, 0, -0.5}, {10, 10, 2.5}, 1.0)};
   glm::dvec3 lo{2, 2, -2.5}, hi{4, 4, 0.5}, capture{3, 3, -0.4};
-  keepClearOfInnerRanges(lo, hi, capture, -2.0, range, 1.0);
+  keepClearOfInnerRanges(lo, hi, capture, -2.0, range, 1.0, kRangePlanGivenUpForHeadRoom);
   EXPECT_NEAR(hi.z, -0.5, 2e-3);
   EXPECT_LT(hi.z, -0.5);
   EXPECT_DOUBLE_EQ(lo.z, -2.5);
@@ -80,7 +80,7 @@ TEST(KeepClearOfInnerRanges, AFillOnARangesOwnFloorIsNotCut) {
   // The other range spans the fill's floor: cutting it would leave the floor outside both.
   const std::vector<InfluenceVolume> range{influenceOfBounds({0, 0, -0.5}, {10, 10, 2.5}, 1.0)};
   glm::dvec3 lo{2, 2, -0.3}, hi{4, 4, 2.7}, capture{3, 3, 1.8};
-  keepClearOfInnerRanges(lo, hi, capture, 0.2, range, 1.0);
+  keepClearOfInnerRanges(lo, hi, capture, 0.2, range, 1.0, kRangePlanGivenUpForHeadRoom);
   EXPECT_DOUBLE_EQ(lo.z, -0.3);
   EXPECT_DOUBLE_EQ(hi.z, 2.7);
   EXPECT_DOUBLE_EQ(capture.z, 1.8);
@@ -91,12 +91,12 @@ TEST(KeepClearOfInnerRanges, ARangeStartingJustOverTheFloorIsNotCut) {
   // this range would keep no air over its floor and its capture point would sit on the floor.
   const std::vector<InfluenceVolume> platform{influenceOfBounds({0, 0, 5.5}, {10, 10, 8.5}, 1.0)};
   glm::dvec3 lo{2, 2, 5.0}, hi{4, 4, 8.0}, capture{3, 3, 7.1};
-  keepClearOfInnerRanges(lo, hi, capture, 5.5 - 1e-4, platform, 1.0);
+  keepClearOfInnerRanges(lo, hi, capture, 5.5 - 1e-4, platform, 1.0, kRangePlanGivenUpForHeadRoom);
   EXPECT_DOUBLE_EQ(hi.z, 8.0);
   EXPECT_DOUBLE_EQ(capture.z, 7.1);
   // 8 cm of air is enough (skyway): cut, the capture point half way up it.
   glm::dvec3 lo2{2, 2, 4.92}, hi2{4, 4, 7.92}, capture2{3, 3, 7.02};
-  keepClearOfInnerRanges(lo2, hi2, capture2, 5.42, platform, 1.0);
+  keepClearOfInnerRanges(lo2, hi2, capture2, 5.42, platform, 1.0, kRangePlanGivenUpForHeadRoom);
   EXPECT_NEAR(hi2.z, 5.5, 2e-3);
   EXPECT_NEAR(capture2.z, 5.46, 1e-3);
 }
@@ -108,7 +108,8 @@ TEST(KeepClearOfInnerRanges, ARangeOnALedgeBesideAnotherKeepsTheGapInPlan) {
   const InfluenceVolume low = influenceOfBounds({0, 0, -0.5}, {5, 10, 2.5}, 1.0);
   const glm::dvec3 ledgeLo{5, 0, 0.25}, ledgeHi{10, 10, 3.25};
   glm::dvec3 lo = ledgeLo, hi = ledgeHi, capture{8, 5, 2.35};
-  keepClearOfInnerRanges(lo, hi, capture, 0.75, std::span(&low, 1), 1.0);
+  keepClearOfInnerRanges(lo, hi, capture, 0.75, std::span(&low, 1), 1.0,
+                         kRangePlanGivenUpForHeadRoom);
   EXPECT_DOUBLE_EQ(lo.x, 6.0) << "one gap from the other range";
   EXPECT_EQ(hi, ledgeHi);
   EXPECT_EQ(glm::dvec2(lo.y, lo.z), glm::dvec2(ledgeLo.y, ledgeLo.z));
@@ -130,7 +131,8 @@ TEST(KeepClearOfInnerRanges, ARangeOnALedgeBesideAnotherKeepsTheGapInPlan) {
 TEST(KeepClearOfInnerRanges, ARangeACaptureMarginFromTheOtherComesBackOnlyToItsCapture) {
   const InfluenceVolume other = influenceOfBounds({0, 0, -0.5}, {5, 10, 2.5}, 1.0);
   glm::dvec3 lo{5.2, 0, -0.5}, hi{9, 10, 2.5}, capture{5.6, 5, 1.6};
-  keepClearOfInnerRanges(lo, hi, capture, 0.0, std::span(&other, 1), 1.0);
+  keepClearOfInnerRanges(lo, hi, capture, 0.0, std::span(&other, 1), 1.0,
+                         kRangePlanGivenUpForHeadRoom);
   EXPECT_DOUBLE_EQ(lo.x, 5.6 - kCaptureMarginMeters) << "its capture point stays inside";
 }
 
@@ -198,7 +200,7 @@ TEST(KeepClearOfInnerRanges, BoxesOverlappingInPlanAtOneHeightComeApartOnTheSide
   // with no floor in it (a pillar's), and their boxes overlap there (bloodprison, darkzone).
   const std::vector<InfluenceVolume> others{influenceOfBounds({0, 0, -0.5}, {5, 5, 2.5}, 1.0)};
   glm::dvec3 lo{4, 0, -0.5}, hi{10, 5, 2.5}, capture{6, 2, 1.6};
-  keepClearOfInnerRanges(lo, hi, capture, 0.0, others, 1.0);
+  keepClearOfInnerRanges(lo, hi, capture, 0.0, others, 1.0, kRangePlanGivenUpForHeadRoom);
   EXPECT_GE(lo.x, 5.0) << "the west side, 1 m into the other, comes back (not the 5 m in y)";
   EXPECT_EQ(lo.y, 0.0);
   EXPECT_EQ(hi, glm::dvec3(10, 5, 2.5));
@@ -212,7 +214,7 @@ TEST(KeepClearOfInnerRanges, ARaisedFloorOverAnEdgeTakesAStripAndABridgeOverTheM
   // its 2.5 m head room over all its floor, and a camera standing there was in no volume.
   const std::vector<InfluenceVolume> raised{influenceOfBounds({9.5, 0, 1.25}, {15, 10, 4.25}, 1.0)};
   glm::dvec3 lo{0, 0, -0.5}, hi{10, 10, 2.5}, capture{5, 5, 1.6};
-  keepClearOfInnerRanges(lo, hi, capture, 0.0, raised, 1.0);
+  keepClearOfInnerRanges(lo, hi, capture, 0.0, raised, 1.0, kRangePlanGivenUpForHeadRoom);
   EXPECT_EQ(hi.z, 2.5) << "the head room is kept";
   EXPECT_LE(hi.x, 9.5 - 1.0) << "the east side comes back, a gap from the raised range";
   EXPECT_EQ(lo, glm::dvec3(0, 0, -0.5));
@@ -224,7 +226,7 @@ TEST(KeepClearOfInnerRanges, ARaisedFloorOverAnEdgeTakesAStripAndABridgeOverTheM
   // half the room, the air under the bridge much less.
   const std::vector<InfluenceVolume> bridge{influenceOfBounds({0, 4, 2.0}, {10, 6, 5.0}, 1.0)};
   glm::dvec3 lo2{0, 0, -0.5}, hi2{10, 10, 2.5}, capture2{5, 2, 1.6};
-  keepClearOfInnerRanges(lo2, hi2, capture2, 0.0, bridge, 1.0);
+  keepClearOfInnerRanges(lo2, hi2, capture2, 0.0, bridge, 1.0, kRangePlanGivenUpForHeadRoom);
   EXPECT_NEAR(hi2.z, 2.0, 2e-3);
   EXPECT_EQ(glm::dvec2(hi2), glm::dvec2(10, 10)) << "the plan is whole";
   EXPECT_FALSE(innerRangesOverlap(bridge[0], influenceOfBounds(lo2, hi2, 1.0)));
@@ -281,6 +283,58 @@ void expectEveryCellCovered(const WalkableFloor& floor, std::span<const Influenc
       covered = covered || insideInfluence(v, cell.pointMeters);
     EXPECT_TRUE(covered) << cell.pointMeters.x << ", " << cell.pointMeters.y;
   }
+}
+
+TEST(FillsForUncoveredFloor, ARangeOverACornerTakesAStripOfTheFillNotItsHeadRoom) {
+  // A 16 x 14 m room; a range from 1.5 m up over its corner x 10..16, y 9..14 (a storey's
+  // range over a low passage), 13% of the plan. A fill over the whole floor cut under it kept
+  // 1.5 m over all its floor, its capture point 0.75 m up, the cameras' eyes out of its range
+  // (runningman: 16 x 14 m cut to 1.5 m by a range over a tenth of it). The fill gives up a
+  // strip instead; the rounds fill the rest, under the corner's range there.
+  const LevelRayCaster level(boxRoom({0, 0, 0}, {16, 14, 3.5f}));
+  const glm::dvec3 seed{2.0, 2.0, 1.6};
+  const WalkableFloor floor = walkableFloor(level, std::span(&seed, 1));
+  std::vector<InfluenceVolume> volumes{influenceOfBounds({10, 9, 1.5}, {16, 14, 4.0}, 1.0)};
+  const std::vector<FloorFill> fills = fillsForUncoveredFloor(level, floor, volumes, 1.0, 1.6);
+  ASSERT_GE(fills.size(), 2u);
+  EXPECT_NEAR(innerHi(fills[0].influence).z, kInfluenceHeadRoomMeters, 1e-3) << "head room kept";
+  EXPECT_GE(fills[0].captureMeters.z, 1.5);
+  for (const FloorFill& f : fills) {
+    for (const InfluenceVolume& v : volumes) EXPECT_FALSE(innerRangesOverlap(v, f.influence));
+    volumes.push_back(f.influence);
+  }
+  expectEveryCellCovered(floor, volumes);
+}
+
+TEST(FillsForUncoveredFloor, FloorAnEarlierFillHoldsGetsNoFillOfItsOwn) {
+  // A 10 x 10 m room whose floor is a raised ring, 0.2502 m up, round a 4 x 4 m pit: the pit's
+  // floor lies a hair past the 0.25 m a storey reaches down, so the ring's cells and the pit's
+  // are two groups. The ring's fill, over the whole room, holds the pit's floor in its inner
+  // range too; a second fill over the pit stood inside the ring's plan, where nothing parts two
+  // inner ranges (runningman: two fills overlapping by 239 m^3).
+  LevelMesh mesh = boxRoom({0, 0, 0}, {10, 10, 3.5f});
+  LevelMesh ring;
+  constexpr float kUp = 0.2502f;
+  const auto slab = [&](float x0, float y0, float x1, float y1) {
+    const auto first = static_cast<unsigned>(ring.positionsMeters.size());
+    ring.positionsMeters.insert(ring.positionsMeters.end(),
+                                {{x0, y0, kUp}, {x1, y0, kUp}, {x1, y1, kUp}, {x0, y1, kUp}});
+    ring.triangles.push_back({first, first + 1, first + 2});
+    ring.triangles.push_back({first, first + 2, first + 3});
+  };
+  slab(0, 0, 10, 3), slab(0, 7, 10, 10), slab(0, 3, 3, 7), slab(7, 3, 10, 7);
+  ring.parts = {{"ring", {}, 0, static_cast<std::uint32_t>(ring.triangles.size())}};
+  appendLevelMesh(mesh, ring);
+  const LevelRayCaster level(mesh);
+  const glm::dvec3 seed{1.0, 1.0, 1.6};
+  const WalkableFloor floor = walkableFloor(level, std::span(&seed, 1));
+  ASSERT_TRUE(std::any_of(floor.cells.begin(), floor.cells.end(), [](const FloorCell& c) {
+    return c.pointMeters.z < 0.1;
+  })) << "the pit's floor is walkable from the ring";
+  const std::vector<FloorFill> fills = fillsForUncoveredFloor(level, floor, {}, 1.0, 1.6);
+  ASSERT_EQ(fills.size(), 1u) << "the ring's fill holds the pit's floor";
+  const std::array<InfluenceVolume, 1> volumes{fills[0].influence};
+  expectEveryCellCovered(floor, volumes);
 }
 
 TEST(FillsForUncoveredFloor, FloorAFillsCutLeavesIsFilledAgain) {
