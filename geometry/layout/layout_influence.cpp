@@ -19,6 +19,9 @@ namespace {
 // than this would leave that fill's range overlapping the platform's instead.
 constexpr double kMinAirOverFloorMeters = 0.05;
 
+// StripForHeadRoom's quarter.
+constexpr double kMostPlanShareInAStrip = 0.25;
+
 BoxInfluence boxAround(glm::dvec3 lo, glm::dvec3 hi, double bandMeters) {
   BoxInfluence box;
   box.centerMeters = 0.5 * (lo + hi);
@@ -85,7 +88,7 @@ BoxInfluence influenceOfBounds(glm::dvec3 innerLoMeters, glm::dvec3 innerHiMeter
 
 void keepClearOfInnerRanges(glm::dvec3& lo, glm::dvec3& hi, glm::dvec3& captureMeters,
                             double floorMeters, std::span<const InfluenceVolume> others,
-                            double gapMeters, double mostPlanGivenUp) {
+                            double gapMeters, StripForHeadRoom strip) {
   const auto meets = [&](glm::dvec3 otherLo, glm::dvec3 otherHi) {
     return !glm::any(glm::greaterThanEqual(lo, otherHi)) &&
            !glm::any(glm::lessThanEqual(hi, otherLo));
@@ -130,7 +133,12 @@ void keepClearOfInnerRanges(glm::dvec3& lo, glm::dvec3& hi, glm::dvec3& captureM
     if (heightSide == 0) continue;
     const PlanCut cut = planCut(otherLo, otherHi);
     const int across = 1 - cut.axis;
-    if (cut.side != 0 && cut.meters * (hi[across] - lo[across]) <= mostPlanGivenUp * planArea()) {
+    const bool aQuarterAtMost =
+        cut.meters * (hi[across] - lo[across]) <= kMostPlanShareInAStrip * planArea();
+    // The strip, then the gap kept in plan from the range beside (below).
+    const bool leavesAGap = hi[cut.axis] - lo[cut.axis] - cut.meters - gapMeters >= gapMeters;
+    if (cut.side != 0 && (aQuarterAtMost ||
+                          (strip == StripForHeadRoom::atMostAQuarterOrLeavingAGap && leavesAGap))) {
       applyPlanCut(cut, otherLo, otherHi);
       continue;
     }

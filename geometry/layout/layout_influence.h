@@ -79,13 +79,16 @@ PlanGap planGap(const InnerRange& a, const InnerRange& b);
 // How far apart in plan (the larger of the two axes' separations; negative when they overlap).
 double planApart(const InnerRange& a, const InnerRange& b);
 
-// How much of its plan a range overhung by another range (over or under part of its floor)
-// gives up in a strip to keep its head room (or depth) over the rest, at most: a selected
-// range, little (warfare's raised floor overhanging an edge: 7%; a bridge over the middle, a
-// storey or an artist's volume over most of it take the height, the air they leave is theirs);
-// a fill, any, since the fill rounds fill what it gives up (uncovered_floor_fills.cpp).
-constexpr double kRangePlanGivenUpForHeadRoom = 0.25;
-constexpr double kFillPlanGivenUpForHeadRoom = 1.0;
+// Which strip of its plan a range overhung by another range (over or under part of its floor)
+// gives up to keep its head room (or depth) over the rest. A selected range: at most a quarter
+// of its plan (warfare's raised floor overhanging an edge: 7%; a bridge over the middle, a
+// storey or an artist's volume over most of it take the height, the air they leave is theirs).
+// A fill: that, or any strip that leaves it a gap wide across the cut (past the gap it keeps
+// from the range beside), since the fill rounds
+// fill what it gives up (uncovered_floor_fills.cpp; runningman: a 16 x 14 m fill cut to 1.5 m
+// tall by a range over a tenth of it). Narrower, a fill would keep its head room as a sliver
+// whose band is most of its influence (downer: 10 cm wide, its band behind a wall).
+enum class StripForHeadRoom { atMostAQuarter, atMostAQuarterOrLeavingAGap };
 
 // An inner range (lo, hi) over a floor at `floorMeters` that reaches into another volume's
 // inner range stops where that one begins, over or under its floor: a pit or a lower floor in
@@ -100,11 +103,10 @@ constexpr double kFillPlanGivenUpForHeadRoom = 1.0;
 // other at the touching face (validate's weight_jump). Its near side comes back, never past its
 // capture point; the floor it gives up stays in its band. A range over or under only part of
 // the plan, clear of the capture point, takes a strip of the plan instead of the height where
-// that gives up at most `mostPlanGivenUp` of it (kRangePlanGivenUpForHeadRoom or
-// kFillPlanGivenUpForHeadRoom).
+// `strip` allows it.
 void keepClearOfInnerRanges(glm::dvec3& lo, glm::dvec3& hi, glm::dvec3& captureMeters,
                             double floorMeters, std::span<const InfluenceVolume> others,
-                            double gapMeters, double mostPlanGivenUp);
+                            double gapMeters, StripForHeadRoom strip);
 
 // The box whose inner range is (lo, hi) (floorRectBounds) and whose outer range reaches
 // kOuterBandOverGap x `gapMeters` past it across the floor (kVerticalBandMeters up and down).

@@ -406,7 +406,7 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
     floorRectBounds(floor, rect, capture, lo, hi);
     const glm::dvec3 chosen = capture;
     keepClearOfInnerRanges(lo, hi, capture, rect.floorMeters, volumes, o.blendBandMeters,
-                           kRangePlanGivenUpForHeadRoom);
+                           StripForHeadRoom::atMostAQuarter);
     if (!clearMovedCapture(level, chosen, capture, rect.floorMeters, hi.z)) return;
     pullBandsIntoSight(level, walked, capture, o.blendBandMeters, lo, hi);
     r.probes.push_back({capture, influenceOfBounds(lo, hi, o.blendBandMeters), fitMeters});

@@ -136,7 +136,7 @@ void fillGroup(const FillContext& c, std::span<const std::size_t> members,
   innerHi = glm::max(innerHi, capture + glm::dvec3(kCaptureMarginMeters));
   const glm::dvec3 chosen = capture;
   keepClearOfInnerRanges(innerLo, innerHi, capture, storeyFloor, others, c.gapMeters,
-                         kFillPlanGivenUpForHeadRoom);
+                         StripForHeadRoom::atMostAQuarterOrLeavingAGap);
   if (!clearMovedCapture(c.level, chosen, capture, storeyFloor, innerHi.z)) return;
   // A range above came down to the fill's bottom (over a range's top) or under its capture
   // point: nothing left to fill (stormkeep: 0 m and -1 mm tall).

@@ -68,7 +68,7 @@ TEST(KeepClearOfInnerRanges, APitFillStopsUnderTheRangeOverIt) {
   // A range over a 10 x 10 m floor at z 0 whose box spans a pit 2 m deep at [2, 4]^2.
   const std::vector<InfluenceVolume> range{influenceOfBounds({0, 0, -0.5}, {10, 10, 2.5}, 1.0)};
   glm::dvec3 lo{2, 2, -2.5}, hi{4, 4, 0.5}, capture{3, 3, -0.4};
-  keepClearOfInnerRanges(lo, hi, capture, -2.0, range, 1.0, kRangePlanGivenUpForHeadRoom);
+  keepClearOfInnerRanges(lo, hi, capture, -2.0, range, 1.0, StripForHeadRoom::atMostAQuarter);
   EXPECT_NEAR(hi.z, -0.5, 2e-3);
   EXPECT_LT(hi.z, -0.5);
   EXPECT_DOUBLE_EQ(lo.z, -2.5);
@@ -80,7 +80,7 @@ TEST(KeepClearOfInnerRanges, AFillOnARangesOwnFloorIsNotCut) {
   // The other range spans the fill's floor: cutting it would leave the floor outside both.
   const std::vector<InfluenceVolume> range{influenceOfBounds({0, 0, -0.5}, {10, 10, 2.5}, 1.0)};
   glm::dvec3 lo{2, 2, -0.3}, hi{4, 4, 2.7}, capture{3, 3, 1.8};
-  keepClearOfInnerRanges(lo, hi, capture, 0.2, range, 1.0, kRangePlanGivenUpForHeadRoom);
+  keepClearOfInnerRanges(lo, hi, capture, 0.2, range, 1.0, StripForHeadRoom::atMostAQuarter);
   EXPECT_DOUBLE_EQ(lo.z, -0.3);
   EXPECT_DOUBLE_EQ(hi.z, 2.7);
   EXPECT_DOUBLE_EQ(capture.z, 1.8);
@@ -91,12 +91,13 @@ TEST(KeepClearOfInnerRanges, ARangeStartingJustOverTheFloorIsNotCut) {
   // this range would keep no air over its floor and its capture point would sit on the floor.
   const std::vector<InfluenceVolume> platform{influenceOfBounds({0, 0, 5.5}, {10, 10, 8.5}, 1.0)};
   glm::dvec3 lo{2, 2, 5.0}, hi{4, 4, 8.0}, capture{3, 3, 7.1};
-  keepClearOfInnerRanges(lo, hi, capture, 5.5 - 1e-4, platform, 1.0, kRangePlanGivenUpForHeadRoom);
+  keepClearOfInnerRanges(lo, hi, capture, 5.5 - 1e-4, platform, 1.0,
+                         StripForHeadRoom::atMostAQuarter);
   EXPECT_DOUBLE_EQ(hi.z, 8.0);
   EXPECT_DOUBLE_EQ(capture.z, 7.1);
   // 8 cm of air is enough (skyway): cut, the capture point half way up it.
   glm::dvec3 lo2{2, 2, 4.92}, hi2{4, 4, 7.92}, capture2{3, 3, 7.02};
-  keepClearOfInnerRanges(lo2, hi2, capture2, 5.42, platform, 1.0, kRangePlanGivenUpForHeadRoom);
+  keepClearOfInnerRanges(lo2, hi2, capture2, 5.42, platform, 1.0, StripForHeadRoom::atMostAQuarter);
   EXPECT_NEAR(hi2.z, 5.5, 2e-3);
   EXPECT_NEAR(capture2.z, 5.46, 1e-3);
 }
@@ -109,7 +110,7 @@ TEST(KeepClearOfInnerRanges, ARangeOnALedgeBesideAnotherKeepsTheGapInPlan) {
   const glm::dvec3 ledgeLo{5, 0, 0.25}, ledgeHi{10, 10, 3.25};
   glm::dvec3 lo = ledgeLo, hi = ledgeHi, capture{8, 5, 2.35};
   keepClearOfInnerRanges(lo, hi, capture, 0.75, std::span(&low, 1), 1.0,
-                         kRangePlanGivenUpForHeadRoom);
+                         StripForHeadRoom::atMostAQuarter);
   EXPECT_DOUBLE_EQ(lo.x, 6.0) << "one gap from the other range";
   EXPECT_EQ(hi, ledgeHi);
   EXPECT_EQ(glm::dvec2(lo.y, lo.z), glm::dvec2(ledgeLo.y, ledgeLo.z));
@@ -128,11 +129,38 @@ TEST(KeepClearOfInnerRanges, ARangeOnALedgeBesideAnotherKeepsTheGapInPlan) {
   EXPECT_TRUE(insideInfluence(influenceOfBounds(lo, hi, 1.0), {5.01, 5, 0.8}));
 }
 
+TEST(KeepClearOfInnerRanges, AFillGivesUpAStripThatLeavesItAGapWideARangeAQuarterAtMost) {
+  // A range starting 1 m over the floor, over the far part of a 4 x 4 m range: a strip of
+  // 1.2 m, 30% of the plan; with the 1 m gap kept from it, 1.8 m are left.
+  const InfluenceVolume over = influenceOfBounds({2.8, 0, 1.0}, {8, 4, 4}, 1.0);
+  const glm::dvec3 wideHi{4, 4, 2.5};
+  glm::dvec3 lo{0, 0, -0.5}, hi = wideHi, capture{0.5, 2, 1.6};
+  keepClearOfInnerRanges(lo, hi, capture, 0.0, std::span(&over, 1), 1.0,
+                         StripForHeadRoom::atMostAQuarterOrLeavingAGap);
+  EXPECT_DOUBLE_EQ(hi.x, 1.8) << "the fill gives up the strip and the gap";
+  EXPECT_DOUBLE_EQ(hi.z, 2.5) << "and keeps its head room";
+  glm::dvec3 rangeLo{0, 0, -0.5}, rangeHi = wideHi, rangeCapture{0.5, 2, 1.6};
+  keepClearOfInnerRanges(rangeLo, rangeHi, rangeCapture, 0.0, std::span(&over, 1), 1.0,
+                         StripForHeadRoom::atMostAQuarter);
+  EXPECT_DOUBLE_EQ(rangeHi.x, 4.0) << "a selected range keeps its plan";
+  EXPECT_NEAR(rangeHi.z, 1.0, 2e-3) << "and stops under the range over it";
+  // A fill 2.5 m wide under a range over its far 0.8 m: the strip and the gap would leave it
+  // 0.7 m wide, a sliver whose band is most of its influence (downer); it stops under the
+  // range instead.
+  const InfluenceVolume overNarrow = influenceOfBounds({1.7, 0, 1.0}, {8, 4, 4}, 1.0);
+  glm::dvec3 narrowLo{0, 0, -0.5}, narrowHi{2.5, 4, 2.5}, narrowCapture{0.5, 2, 1.6};
+  keepClearOfInnerRanges(narrowLo, narrowHi, narrowCapture, 0.0, std::span(&overNarrow, 1), 1.0,
+                         StripForHeadRoom::atMostAQuarterOrLeavingAGap);
+  EXPECT_DOUBLE_EQ(narrowHi.x, 2.5);
+  EXPECT_NEAR(narrowHi.z, 1.0, 2e-3);
+  EXPECT_LT(narrowCapture.z, narrowHi.z) << "its capture point comes down under the cut";
+}
+
 TEST(KeepClearOfInnerRanges, ARangeACaptureMarginFromTheOtherComesBackOnlyToItsCapture) {
   const InfluenceVolume other = influenceOfBounds({0, 0, -0.5}, {5, 10, 2.5}, 1.0);
   glm::dvec3 lo{5.2, 0, -0.5}, hi{9, 10, 2.5}, capture{5.6, 5, 1.6};
   keepClearOfInnerRanges(lo, hi, capture, 0.0, std::span(&other, 1), 1.0,
-                         kRangePlanGivenUpForHeadRoom);
+                         StripForHeadRoom::atMostAQuarter);
   EXPECT_DOUBLE_EQ(lo.x, 5.6 - kCaptureMarginMeters) << "its capture point stays inside";
 }
 
@@ -200,7 +228,7 @@ TEST(KeepClearOfInnerRanges, BoxesOverlappingInPlanAtOneHeightComeApartOnTheSide
   // with no floor in it (a pillar's), and their boxes overlap there (bloodprison, darkzone).
   const std::vector<InfluenceVolume> others{influenceOfBounds({0, 0, -0.5}, {5, 5, 2.5}, 1.0)};
   glm::dvec3 lo{4, 0, -0.5}, hi{10, 5, 2.5}, capture{6, 2, 1.6};
-  keepClearOfInnerRanges(lo, hi, capture, 0.0, others, 1.0, kRangePlanGivenUpForHeadRoom);
+  keepClearOfInnerRanges(lo, hi, capture, 0.0, others, 1.0, StripForHeadRoom::atMostAQuarter);
   EXPECT_GE(lo.x, 5.0) << "the west side, 1 m into the other, comes back (not the 5 m in y)";
   EXPECT_EQ(lo.y, 0.0);
   EXPECT_EQ(hi, glm::dvec3(10, 5, 2.5));
@@ -214,7 +242,7 @@ TEST(KeepClearOfInnerRanges, ARaisedFloorOverAnEdgeTakesAStripAndABridgeOverTheM
   // its 2.5 m head room over all its floor, and a camera standing there was in no volume.
   const std::vector<InfluenceVolume> raised{influenceOfBounds({9.5, 0, 1.25}, {15, 10, 4.25}, 1.0)};
   glm::dvec3 lo{0, 0, -0.5}, hi{10, 10, 2.5}, capture{5, 5, 1.6};
-  keepClearOfInnerRanges(lo, hi, capture, 0.0, raised, 1.0, kRangePlanGivenUpForHeadRoom);
+  keepClearOfInnerRanges(lo, hi, capture, 0.0, raised, 1.0, StripForHeadRoom::atMostAQuarter);
   EXPECT_EQ(hi.z, 2.5) << "the head room is kept";
   EXPECT_LE(hi.x, 9.5 - 1.0) << "the east side comes back, a gap from the raised range";
   EXPECT_EQ(lo, glm::dvec3(0, 0, -0.5));
@@ -226,7 +254,7 @@ TEST(KeepClearOfInnerRanges, ARaisedFloorOverAnEdgeTakesAStripAndABridgeOverTheM
   // half the room, the air under the bridge much less.
   const std::vector<InfluenceVolume> bridge{influenceOfBounds({0, 4, 2.0}, {10, 6, 5.0}, 1.0)};
   glm::dvec3 lo2{0, 0, -0.5}, hi2{10, 10, 2.5}, capture2{5, 2, 1.6};
-  keepClearOfInnerRanges(lo2, hi2, capture2, 0.0, bridge, 1.0, kRangePlanGivenUpForHeadRoom);
+  keepClearOfInnerRanges(lo2, hi2, capture2, 0.0, bridge, 1.0, StripForHeadRoom::atMostAQuarter);
   EXPECT_NEAR(hi2.z, 2.0, 2e-3);
   EXPECT_EQ(glm::dvec2(hi2), glm::dvec2(10, 10)) << "the plan is whole";
   EXPECT_FALSE(innerRangesOverlap(bridge[0], influenceOfBounds(lo2, hi2, 1.0)));
