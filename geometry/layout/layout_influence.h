@@ -84,10 +84,10 @@ double planApart(const InnerRange& a, const InnerRange& b);
 // of its plan (warfare's raised floor overhanging an edge: 7%; a bridge over the middle, a
 // storey or an artist's volume over most of it take the height, the air they leave is theirs).
 // A fill: that, or any strip that leaves it a gap wide across the cut (past the gap it keeps
-// from the range beside), since the fill rounds
-// fill what it gives up (uncovered_floor_fills.cpp; runningman: a 16 x 14 m fill cut to 1.5 m
-// tall by a range over a tenth of it). Narrower, a fill would keep its head room as a sliver
-// whose band is most of its influence (downer: 10 cm wide, its band behind a wall).
+// from the range beside), since the fill rounds fill what it gives up (uncovered_floor_fills.cpp;
+// runningman: a 16 x 14 m fill cut to 1.5 m tall by a range over a tenth of it). Narrower, a
+// fill would keep its head room as a sliver whose band is most of its influence (downer: 10 cm
+// wide, its band behind a wall).
 enum class StripForHeadRoom { atMostAQuarter, atMostAQuarterOrLeavingAGap };
 
 // An inner range (lo, hi) over a floor at `floorMeters` that reaches into another volume's
