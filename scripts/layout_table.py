@@ -6,6 +6,8 @@ number of probes, both surveyed (`probeproxy survey`'s figures, in layout.json),
 the floor it was measured on). With --reach, also the probe count the grid needs to reach the
 layout's p95 (grids of 2x and 4x the layout's count; "> 4x" when none does). With --validate,
 `probeproxy validate` of each layout with its defaults: its exit code and findings by rule.
+With --worst, what the layout's worst 5% of floor (at its p95 or over) reaches: the sky, a
+surface within 2 m, a surface inside its heaviest probe's proxy, and that probe's share.
 Prints one Markdown table per set and a line of each set's worst figures; --jsonl keeps a row per
 map. With --maps also copies the error maps of the levels named by --pictures into DIR as
 <level>_layout.png and <level>_grid.png.
@@ -17,7 +19,7 @@ tolerance" is the share of the walkable floor over 5 degrees.
   /usr/bin/python3 scripts/layout_table.py build/plugin/cli/probeproxy \
       --set tuning=build/corpus/scenes --set validation=build/corpus/validation \
       [--maps docs/images/layout --pictures downer toxic skyway] [--levels downer toxic] \
-      [--reach] [--validate] [--work DIR] [--jsonl FILE]
+      [--reach] [--validate] [--worst] [--work DIR] [--jsonl FILE]
 """
 import argparse
 import glob
@@ -86,6 +88,8 @@ def measure(args, scene, work):
            "grid_uncovered_share": guncovered,
            "p95_ratio": p95 / gp95 if gp95 > 0 else float("nan"),
            "walkable_m2": layout["survey"]["walkable_m2"],
+           "worst_floor": layout["survey"].get("worst_floor"),
+           "grid_worst_floor": grid["survey"].get("worst_floor"),
            "survey_agrees": survey_agrees(args.probeproxy, out + "_layout", layout)}
     if args.reach:
         row["grid_probes_to_reach"] = "> %dx" % GRID_FACTORS[-1]
@@ -114,6 +118,12 @@ def print_row(row, args):
              "%.0f" % row["seconds"], "%d" % row["grid_probes"], "%.1f" % row["grid_p95_deg"],
              "%.1f%%" % (100 * row["grid_over_share"]), "%.2f" % row["p95_ratio"],
              "yes" if row["survey_agrees"] else "**no**"]
+    if args.worst:
+        w = row["worst_floor"]
+        top = w["probes"][0] if w and w["probes"] else None
+        cells += ["%.0f%%" % (100 * w["sky_share"]), "%.0f%%" % (100 * w["near_hit_share"]),
+                  "%.0f%%" % (100 * w["hit_inside_proxy_share"]),
+                  "%s %.0f%%" % (top["name"], 100 * top["share"]) if top else "-"]
     if args.reach:
         cells.append(row["grid_probes_to_reach"])
     if args.validate:
@@ -131,6 +141,8 @@ def main():
     parser.add_argument("--maps")
     parser.add_argument("--pictures", nargs="*", default=[])
     parser.add_argument("--reach", action="store_true")
+    parser.add_argument("--worst", action="store_true",
+                        help="what the layout's worst 5%% of floor reaches (survey's worst_floor)")
     parser.add_argument("--validate", action="store_true")
     parser.add_argument("--work", help="keep every run's output here (to validate the layouts)")
     parser.add_argument("--jsonl", help="append one JSON row per map to this file")
@@ -141,6 +153,9 @@ def main():
     header = ("| map | layout probes | layout p95 | layout over 5 deg | layout uncovered "
               "| layout seconds | grid probes | grid p95 | grid over 5 deg | p95 ratio "
               "| survey of the scene agrees |")
+    if args.worst:
+        header += (" worst 5%: sky | worst 5%: hit within 2 m | worst 5%: hit inside the proxy "
+                   "| worst 5%: heaviest probe |")
     if args.reach:
         header += " grid probes to reach layout's p95 |"
     if args.validate:

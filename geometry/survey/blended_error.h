@@ -45,7 +45,8 @@ struct ProbeSight {
 };
 
 // A sample's error from its blend (`weights`: each with .probe and .weight) and what each
-// weighted probe shows there (`sightOf(probe)`). A probe whose cubemap stops short of the true
+// weighted probe shows there (`sightOf(probe)`); its heaviest probe is the first seen of the
+// largest weight. A probe whose cubemap stops short of the true
 // hit shows its clear colour there: that weight is the fallback's, as where no probe reaches.
 template <typename Weights, typename SightOf>
 SurveySampleError sampleErrorOfBlend(const Weights& weights, double fallbackWeight,
@@ -57,7 +58,7 @@ SurveySampleError sampleErrorOfBlend(const Weights& weights, double fallbackWeig
     e.uncoveredWeight = 1.0;
     return e;
   }
-  double weightedSum = 0.0, visibleWeight = 0.0;
+  double weightedSum = 0.0, visibleWeight = 0.0, heaviest = 0.0;
   for (const auto& w : weights) {
     const ProbeSight sight = sightOf(w.probe);
     if (!sight.captured) {
@@ -70,6 +71,10 @@ SurveySampleError sampleErrorOfBlend(const Weights& weights, double fallbackWeig
     }
     weightedSum += w.weight * (std::isnan(sight.errorDeg) ? kMissErrorDeg : sight.errorDeg);
     visibleWeight += w.weight;
+    if (w.weight > heaviest) {
+      heaviest = w.weight;
+      e.heaviestProbe = w.probe;
+    }
   }
   if (visibleWeight > 0.0) {
     e.errorDeg = weightedSum / visibleWeight;

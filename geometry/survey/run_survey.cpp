@@ -6,6 +6,7 @@
 #include "geometry/survey/capture_sights.h"
 #include "geometry/survey/floor_samples.h"
 #include "geometry/survey/survey_proxies.h"
+#include "geometry/survey/worst_floor.h"
 
 #include <tbb/parallel_for.h>
 
@@ -77,10 +78,12 @@ SurveyFigures figures(std::span<const SurveySampleError> errors, double toleranc
   return f;
 }
 
-// The survey of the prepared floor, each sample's error from `errorOf(index, sample)`.
+// The survey of the prepared floor, each sample's error from `errorOf(index, sample)`; `probeOf`
+// names the probes a sample's error weighs most (worst_floor.h).
 template <typename SampleError>
 SurveyResult surveyOn(const SurveyFloor& prepared, std::size_t probes, const SurveyOptions& o,
-                      const SampleError& errorOf) {
+                      const SampleError& errorOf,
+                      const std::function<SurveyProbeRef(int)>& probeOf) {
   const auto start = std::chrono::steady_clock::now();
   SurveyResult result;
   result.toleranceDeg = o.toleranceDeg;
@@ -100,6 +103,7 @@ SurveyResult surveyOn(const SurveyFloor& prepared, std::size_t probes, const Sur
     result.cells[c] = cellError(std::span(errors).subspan(c * perCell, perCell));
 
   result.figures = figures(errors, o.toleranceDeg);
+  result.worst = worstFloor(errors, samples, result.figures.p95Deg, probeOf);
   result.figures.probes = probes;
   result.figures.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() +
@@ -161,26 +165,38 @@ SurveyResult surveyProbes(std::span<const SurveyProbe> probes, const LevelRayCas
     captures.push_back(p.captureMeters);
     volumes.push_back(p.influence);
   }
-  return surveyOn(prepareSurveyFloor(captures, level, o), probes.size(), o,
-                  [&](std::size_t, const ReflectionSample& sample) {
-                    return blendedSampleError(level, probes, volumes, sample, o.blend);
-                  });
+  return surveyOn(
+      prepareSurveyFloor(captures, level, o), probes.size(), o,
+      [&](std::size_t, const ReflectionSample& sample) {
+        return blendedSampleError(level, probes, volumes, sample, o.blend);
+      },
+      [&](int i) {
+        return SurveyProbeRef{&probes[static_cast<std::size_t>(i)].proxy, i};
+      });
 }
 
 SurveyResult surveyModel(const EngineModel& model, const SurveyFloor& prepared,
                          const LevelRayCaster& level, const SurveyOptions& o,
                          CaptureSights* sights) {
+  const auto probeOf = [&](int i) {
+    const EngineProbe& probe = model.probes[static_cast<std::size_t>(i)];
+    return SurveyProbeRef{&probe.projection, probe.sceneProbe};
+  };
   if (!sights) {
-    return surveyOn(prepared, model.probes.size(), o, [&](std::size_t, const ReflectionSample& s) {
-      return blendedSampleError(level, model, s);
-    });
+    return surveyOn(
+        prepared, model.probes.size(), o,
+        [&](std::size_t, const ReflectionSample& s) { return blendedSampleError(level, model, s); },
+        probeOf);
   }
   const std::vector<std::uint32_t> ids = sights->idsOf(model.probes);
-  return surveyOn(prepared, model.probes.size(), o, [&](std::size_t i, const ReflectionSample& s) {
-    return blendedSampleError(model, s, [&](int probe) {
-      return sights->hidden(level, i, ids[static_cast<std::size_t>(probe)]);
-    });
-  });
+  return surveyOn(
+      prepared, model.probes.size(), o,
+      [&](std::size_t i, const ReflectionSample& s) {
+        return blendedSampleError(model, s, [&](int probe) {
+          return sights->hidden(level, i, ids[static_cast<std::size_t>(probe)]);
+        });
+      },
+      probeOf);
 }
 
 SurveyResult runSurvey(const Scene& scene, const LevelRayCaster& level, const SurveyOptions& o,

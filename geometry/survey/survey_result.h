@@ -33,6 +33,7 @@ struct SurveySampleError {
   double occludedWeight = 0.0;   // blend weight of the probes that cannot see the true hit
   double uncoveredWeight = 0.0;  // the sky / ambient fallback's share: 1 where no probe reaches
   bool uncovered = false;        // no probe reaches the sample at all
+  int heaviestProbe = -1;        // the probe that weighs most among those seen (-1: none)
 };
 
 struct SurveyCellError {  // per floor cell (WalkableFloor::cells, same order)
@@ -46,11 +47,33 @@ struct SurveyCellError {  // per floor cell (WalkableFloor::cells, same order)
   int samples = 0;
 };
 
+// What the worst 5% of the shaded floor is (the floor whose error is at the p95 or over): the
+// tail that sets the p95, read by what its reflections reach. Shares are of its area and
+// overlap (a near hit may lie inside the proxy too).
+struct WorstFloor {
+  double thresholdDeg = std::numeric_limits<double>::quiet_NaN();  // the p95
+  double squareMeters = 0.0;
+  double skyShare = 0.0;  // reflections reaching the sky, right only through an infinite lookup
+  // True hits within kNearHitMeters of the floor point (a step, a kerb, the foot of a wall).
+  double nearHitShare = 0.0;
+  // True hits inside the proxy of the probe that weighs most there: level standing in the room
+  // (steps, pillars, props), which no convex proxy of the room holds on its faces.
+  double hitInsideProxyShare = 0.0;
+  struct ProbeShare {
+    int probe = 0;  // scene index
+    double share = 0.0;
+  };
+  std::vector<ProbeShare> probes;  // the probe weighing most there, largest share first
+};
+
+inline constexpr double kNearHitMeters = 2.0;
+
 struct SurveyResult {
   std::string scene;  // the scene file's stem (e.g. "corridor"), or "scene" in memory
   SurveyFigures figures;
   WalkableFloor floor;
   std::vector<SurveyCellError> cells;
+  WorstFloor worst;
   double toleranceDeg = 0.0;        // what over_tolerance_share was measured against
   Engine engine = Engine::Generic;  // whose renderer the figures are for
 };

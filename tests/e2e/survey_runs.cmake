@@ -9,7 +9,7 @@ foreach(threads 1 0)
     message(FATAL_ERROR "survey --threads ${threads} exited ${code}: ${stderr}")
   endif()
   foreach(key scene walkable_m2 samples probes median_deg p95_deg over_tolerance_share
-              uncovered_share occluded_share seconds)
+              uncovered_share occluded_share worst_floor seconds)
     string(JSON value ERROR_VARIABLE missing GET "${stdout}" ${key})
     if(missing)
       message(FATAL_ERROR "survey --json has no \"${key}\": ${stdout}")

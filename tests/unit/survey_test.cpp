@@ -1,6 +1,7 @@
 // survey (geometry/survey/): the walkable floor's flood fill on a synthetic level with an
 // unreachable platform and a sealed void, the blend of two overlapping probes against a
-// hand-computed value, area-weighted percentiles, storeys, the JSON names and the error map.
+// hand-computed value, area-weighted percentiles, storeys, what the worst floor reaches, the JSON
+// names and the error map.
 
 #include "core/errors/input_error.h"
 #include "geometry/builtin/box_room.h"
@@ -13,6 +14,7 @@
 #include "geometry/survey/run_survey.h"
 #include "geometry/survey/storeys.h"
 #include "geometry/survey/survey_map.h"
+#include "geometry/survey/worst_floor.h"
 #include "plugin/jobs/survey/survey_report.h"
 
 #include <gtest/gtest.h>
@@ -22,6 +24,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace probeproxy {
 namespace {
@@ -209,6 +212,7 @@ TEST(BlendedError, TwoOverlappingProbesAgainstAHandComputedValue) {
   EXPECT_EQ(e.occludedWeight, 0.0);
   EXPECT_NEAR(e.errorDeg, expected, 1e-4);
   EXPECT_NEAR(expected, 2.65651, 1e-5);
+  EXPECT_EQ(e.heaviestProbe, 0) << "A weighs 0.9";
 }
 
 TEST(BlendedError, AMissCountsAs180Degrees) {
@@ -235,6 +239,7 @@ TEST(BlendedError, NoCoveringProbeIsUncoveredAndAHiddenProbeIsOccludedWeight) {
   ASSERT_FALSE(trueHitHiddenFrom(level, probes[1].captureMeters, s));
   const SurveySampleError e = blendedSampleError(level, probes, volumes, s, BlendOptions{});
   EXPECT_NEAR(e.occludedWeight, 0.9, 1e-9);
+  EXPECT_EQ(e.heaviestProbe, 1) << "the heaviest probe is of those that see the hit";
   const glm::dvec3 ideal = s.trueHitMeters - probes[1].captureMeters;
   const double expected =
       std::acos(std::clamp(glm::dot(glm::normalize(ideal), s.reflected), -1.0, 1.0)) * 180.0 / M_PI;
@@ -300,6 +305,69 @@ TEST(Survey, NoFloorUnderTheSeedsIsAnInputError) {
   EXPECT_THROW(o.check(), InputError);
 }
 
+// Four floor samples of 1 m^2 each, errors 1, 10, 20 and 30 deg, at the threshold 10: the
+// worst floor is the last three, one reaching the sky, one hitting a kerb 1 m away inside the
+// heaviest probe's box, one a wall 5 m away on that box's face (half its weight occluded).
+TEST(WorstFloor, SharesOfWhatTheWorstReflectionsReach) {
+  const BoxShape room{{5.0, 5.0, 1.5}, {5.0, 5.0, 1.5}, glm::dquat(1, 0, 0, 0)};
+  const std::vector<ProxyShape> proxies = {InfiniteShape{}, room};
+  auto sample = [](glm::dvec3 x, glm::dvec3 r, std::optional<glm::dvec3> hit) {
+    FloorSample f;
+    f.sample.xMeters = x;
+    f.sample.reflected = glm::normalize(r);
+    f.sample.hitsSky = !hit;
+    if (hit) f.sample.trueHitMeters = *hit;
+    f.areaSquareMeters = 1.0;
+    return f;
+  };
+  const std::vector<FloorSample> samples = {sample({5, 5, 0}, {0, 1, 1}, glm::dvec3(5, 10, 5)),
+                                            sample({5, 5, 0}, {0, 0, 1}, std::nullopt),
+                                            sample({5, 5, 0}, {1, 0, 0.2}, glm::dvec3(6, 5, 0.2)),
+                                            sample({5, 5, 0}, {1, 0, 0.3}, glm::dvec3(10, 5, 1.5))};
+  std::vector<SurveySampleError> errors(4);
+  const double deg[] = {1.0, 10.0, 20.0, 30.0};
+  const int heaviest[] = {0, 0, 1, 1};
+  for (std::size_t i = 0; i < 4; ++i) {
+    errors[i].errorDeg = deg[i];
+    errors[i].areaSquareMeters = 1.0;
+    errors[i].heaviestProbe = heaviest[i];
+  }
+  errors[3].occludedWeight = 0.5;
+  const WorstFloor w = worstFloor(errors, samples, 10.0, [&](int i) {
+    return SurveyProbeRef{&proxies[static_cast<std::size_t>(i)], 10 + i};
+  });
+  EXPECT_EQ(w.thresholdDeg, 10.0);
+  EXPECT_DOUBLE_EQ(w.squareMeters, 2.5);
+  EXPECT_DOUBLE_EQ(w.skyShare, 0.4);
+  EXPECT_DOUBLE_EQ(w.nearHitShare, 0.4);
+  EXPECT_DOUBLE_EQ(w.hitInsideProxyShare, 0.4) << "the wall on the box's face is not inside";
+  ASSERT_EQ(w.probes.size(), 2u);
+  EXPECT_EQ(w.probes[0].probe, 11);
+  EXPECT_DOUBLE_EQ(w.probes[0].share, 0.6);
+  EXPECT_EQ(w.probes[1].probe, 10);
+  EXPECT_DOUBLE_EQ(w.probes[1].share, 0.4);
+}
+
+// A room whose proxies are its exact box, with a 0.6 m kerb along one wall: every error left is
+// a reflection meeting the kerb, near the floor point and inside the proxy.
+TEST(Survey, TheWorstFloorOfExactRoomProxiesIsTheKerbStandingInTheRoom) {
+  LevelMesh room = boxRoom({0, 0, 0}, {10, 4, 3});
+  appendLevelMesh(room, block({0, 3.0f, 0}, {10, 4, 0.6f}));
+  const LevelRayCaster level(room);
+  const auto probes = twoProbes(kRoom, kRoom);
+  const SurveyResult r = surveyProbes(probes, level, SurveyOptions{});
+  const WorstFloor& w = r.worst;
+  EXPECT_EQ(w.thresholdDeg, r.figures.p95Deg);
+  EXPECT_GT(w.thresholdDeg, 5.0);
+  EXPECT_NEAR(w.squareMeters, 0.05 * r.figures.walkableSquareMeters,
+              0.01 * r.figures.walkableSquareMeters);
+  EXPECT_EQ(w.skyShare, 0.0);
+  EXPECT_EQ(w.hitInsideProxyShare, 1.0);
+  EXPECT_GT(w.nearHitShare, 0.9);
+  ASSERT_EQ(w.probes.size(), 2u);
+  EXPECT_NEAR(w.probes[0].share + w.probes[1].share, 1.0, 1e-12);
+}
+
 TEST(Storeys, FloorOverFloorGivesTwoStoreys) {
   // A 6 m tall room with a 3 x 10 m gallery slab at z = 2.9..3 along one wall, head room
   // above and below it; a seed on each.
@@ -318,13 +386,21 @@ TEST(SurveyReport, JsonHasTheDesignNamesInOrder) {
   SurveyResult r;
   r.scene = "room";
   r.figures.walkableSquareMeters = 40.0;
-  const nlohmann::ordered_json j = nlohmann::ordered_json::parse(jobs::surveyReportJson(r));
+  r.worst.squareMeters = 2.0;
+  r.worst.probes = {{1, 0.75}, {0, 0.25}};
+  std::vector<Probe> probes(2);
+  probes[0].name = "hall";
+  probes[1].name = "stair";
+  const nlohmann::ordered_json j = nlohmann::ordered_json::parse(jobs::surveyReportJson(r, probes));
   std::vector<std::string> keys;
   for (const auto& item : j.items()) keys.push_back(item.key());
   EXPECT_EQ(keys, (std::vector<std::string>{"scene", "engine", "walkable_m2", "samples", "probes",
                                             "median_deg", "p95_deg", "over_tolerance_share",
-                                            "uncovered_share", "occluded_share", "seconds"}));
+                                            "uncovered_share", "occluded_share", "worst_floor",
+                                            "seconds"}));
   EXPECT_TRUE(j["p95_deg"].is_null()) << "no visible floor: no figure, not a made-up one";
+  EXPECT_EQ(j["worst_floor"]["probes"][0]["name"], "stair");
+  EXPECT_EQ(j["worst_floor"]["probes"][1]["share"], 0.25);
 }
 
 TEST(SurveyMap, ReadableWideAndTheSameBytesEachTime) {

@@ -72,7 +72,7 @@ int runLayoutVerb(LayoutVerbOptions o) {
                     r.layout.seconds);
     }
     std::cout << line;
-    jobs::printSurveyTable(std::cout, r.survey);
+    jobs::printSurveyTable(std::cout, r.survey, r.scene.probes);
   }
   if (r.seededFrom == "the level's floor regions") {
     std::cerr << "probeproxy layout: the level has no spawn points or probes: its floor is "

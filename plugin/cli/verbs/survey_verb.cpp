@@ -52,7 +52,7 @@ int runSurveyVerb(SurveyVerbOptions o) {
   if (o.json)
     std::cout << r.json;
   else
-    jobs::printSurveyTable(std::cout, r.result);
+    jobs::printSurveyTable(std::cout, r.result, r.probes);
   for (const std::filesystem::path& file : r.written)
     std::cerr << "wrote " << file.string() << "\n";
   return 0;

@@ -253,12 +253,12 @@ std::string layoutReportJson(const LayoutJobOptions& o, const LayoutJobResult& r
       }
       SurveyResult named = c.survey;
       named.scene = baselineName(o.layout.baseline);
-      e["survey"] = nlohmann::ordered_json::parse(surveyReportJson(named));
+      e["survey"] = nlohmann::ordered_json::parse(surveyReportJson(named, r.scene.probes));
       engines[std::string(engineName(c.engine))] = e;
     }
     j["engines"] = engines;
   }
-  j["survey"] = nlohmann::ordered_json::parse(surveyReportJson(r.survey));
+  j["survey"] = nlohmann::ordered_json::parse(surveyReportJson(r.survey, r.scene.probes));
   return j.dump(2) + "\n";
 }
 

@@ -30,7 +30,8 @@ SurveyJobResult runSurveyJob(const SurveyJobOptions& o, const Progress& progress
 
   SurveyJobResult r;
   r.result = runSurvey(scene, rayCaster, survey, progress);
-  r.json = surveyReportJson(r.result);
+  r.probes = scene.probes;
+  r.json = surveyReportJson(r.result, r.probes);
   if (!o.outFolder.empty()) {
     r.written.push_back(o.outFolder / "survey.json");
     writeFileAtomically(r.written.back(), r.json);

@@ -10,6 +10,7 @@
 // and core/parallax lookups -> figures and maps.
 
 #include "core/scene/measure_settings.h"
+#include "core/scene/scene.h"
 #include "geometry/survey/survey_map.h"
 #include "geometry/survey/survey_options.h"
 #include "geometry/survey/survey_result.h"
@@ -38,6 +39,7 @@ struct SurveyJobOptions {
 
 struct SurveyJobResult {
   SurveyResult result;
+  std::vector<Probe> probes;                   // the scene's, which the result's indices refer to
   std::string json;                            // the `survey --json` report
   std::vector<std::filesystem::path> written;  // survey.json and the maps, when written
 };
