@@ -46,8 +46,8 @@ struct ProbeSight {
 
 // A sample's error from its blend (`weights`: each with .probe and .weight) and what each
 // weighted probe shows there (`sightOf(probe)`); its heaviest probe is the first seen of the
-// largest weight. A probe whose cubemap stops short of the true
-// hit shows its clear colour there: that weight is the fallback's, as where no probe reaches.
+// largest weight. A probe whose cubemap stops short of the true hit shows its clear colour
+// there: that weight is the fallback's, as where no probe reaches.
 template <typename Weights, typename SightOf>
 SurveySampleError sampleErrorOfBlend(const Weights& weights, double fallbackWeight,
                                      const SightOf& sightOf) {

@@ -34,7 +34,9 @@ ServedError servedError(const ProxyShape& shape, glm::dvec3 captureMeters,
 }
 
 bool servesClearlyBetter(const ServedError& a, const ServedError& b) {
-  return a.overShare + kClearlyLessServedFloor < b.overShare && a.p95Deg <= 1.02 * b.p95Deg + 0.05;
+  const bool lessOver = a.overShare + kClearlyLessServedFloor < b.overShare;
+  if (b.p95Deg >= kGrossTailDeg) return lessOver;
+  return lessOver && a.p95Deg <= 1.02 * b.p95Deg + 0.05;
 }
 
 }  // namespace probeproxy

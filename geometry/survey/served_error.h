@@ -35,8 +35,13 @@ ServedError servedError(const ProxyShape& shape, glm::dvec3 captureMeters,
 // `a` serves the floor clearly better than `b`: at least kClearlyLessServedFloor less of it over
 // the tolerance (a build fits on samples of its own, so a smaller difference is noise), with a
 // p95 no worse by more than select_proxy.h's noise (2% + 0.05 degrees). Fewer small errors
-// bought with more gross ones is no gain where a map's p95 lies.
+// bought with more gross ones is no gain where a map's p95 lies. Where `b`'s tail is gross
+// already (its p95 kGrossTailDeg or more: misses and lookups past a right angle, the wrong
+// thing shown either way), the floor over the tolerance decides alone: aneurysm's probe_008 kept
+// an obb leaving 85% of its served floor over 5 deg (p95 112 deg) against a convex fit's 31%
+// (p95 a miss), and that corridor was a tenth of the map's worst floor.
 inline constexpr double kClearlyLessServedFloor = 0.02;  // share of the served floor's weight
+inline constexpr double kGrossTailDeg = 90.0;
 bool servesClearlyBetter(const ServedError& a, const ServedError& b);
 
 }  // namespace probeproxy

@@ -2,7 +2,7 @@
 // What sets a survey's p95: the worst 5% of the shaded floor read by what its reflections reach
 // (survey_result.h, WorstFloor). Where a layout's p95 stays high, this says whether a better
 // layout could help (the floor of a few probes, reflections a proxy cuts short) or no convex
-// proxy of a room can (the sky beside near walls, steps and props standing in the room).
+// proxy of a room can (steps, kerbs and props standing in the room).
 
 #include "core/proxy/proxy_shape.h"
 #include "geometry/survey/floor_samples.h"

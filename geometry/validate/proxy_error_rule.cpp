@@ -7,10 +7,10 @@
 // layout probe failed (97-132 warnings on a corpus layout) with the hint to use the generated
 // proxy, the one the layout had chosen. The value is the weighted p95, a miss at 180 degrees as
 // the survey counts it. A proxy is worse than the generated one when the generated serves that
-// floor clearly better (servesClearlyBetter: less of it over the tolerance, the tail no worse),
-// the rule the layout keeps its own proxy by. Where none is clearly better, the finding is
-// information: what the floor gets, and that a second probe (split_probe) or accepting it is
-// what is left.
+// floor clearly better (servesClearlyBetter: less of it over the tolerance, the tail no worse
+// unless gross already), the rule the layout keeps its own proxy by. Where none is clearly
+// better, the finding is information: what the floor gets, and that a second probe
+// (split_probe) or accepting it is what is left.
 
 #include "geometry/probe_proxies/build_probe_proxy.h"
 #include "geometry/survey/served_error.h"

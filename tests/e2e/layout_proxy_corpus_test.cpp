@@ -12,6 +12,7 @@
 #include "geometry/probe_proxies/room_box.h"
 #include "geometry/raycast/level_ray_caster.h"
 #include "geometry/scene/scene_file.h"
+#include "geometry/survey/served_error.h"
 #include "geometry/validate/validation_rules.h"
 
 #include <gtest/gtest.h>
@@ -265,6 +266,99 @@ TEST(BuildLayoutProxy, OnDieselpowerValidatesOwnProxyOfManyPlanesIsAChoice) {
         keepThenValidate(level, probe, meeting, kProbeIndex, fitMeters).findings;
     ASSERT_EQ(findings.size(), 1u);
     EXPECT_EQ(findings[0].severity, "info") << fitMeters << " m: " << findings[0].message;
+  }
+}
+
+TEST(BuildLayoutProxy, OnAneurysmAGrossTailDoesNotHoldBackAProxyServingMoreFloor) {
+  // probe_008 of aneurysm's layout (a validation map) and the twelve volumes meeting its own,
+  // in the scene's order: a 16 x 37 m range whose capture point stands in a 6 x 14 m corridor
+  // under a 3 m ceiling, most of its range's floor hidden from it. Its proxy, an obb reaching
+  // the hall beyond the corridor's end, left 85% of its served floor over 5 deg (weighted p95
+  // 112 deg); a convex fit left 31%, its p95 a miss (180 deg), and was refused for that tail.
+  // Where the tail is gross already (90 deg or more: misses and lookups past a right angle),
+  // the floor over the tolerance decides.
+  const LevelRayCaster level(corpusLevel("aneurysm", PROBEPROXY_CORPUS_VALIDATION));
+  const LayoutVolume volumes[] = {
+      {"probe_008",
+       {-6.5, 9.75, 5.499499798},
+       {-0.1875, 23.25, 5.0},
+       {7.9375, 18.75, 1.75},
+       {6.4375, 17.25, 1.5}},
+      {"probe_016",
+       {-6.5, 44.75, 2.85},
+       {-8.25, 44.5, 2.375},
+       {5.0, 4.5, 1.875},
+       {3.5, 3.0, 1.625}},
+      {"probe_047",
+       {-9.0, 24.75, 1.85},
+       {-8.0, 22.5625, 1.6245},
+       {2.75, 4.0625, 2.1245},
+       {1.25, 2.5625, 1.8745}},
+      {"probe_069",
+       {-9.0, 17.25, 3.85},
+       {-9.25, 16.75, 4.125},
+       {2.5, 3.75, 2.625},
+       {1.0, 2.25, 2.375}},
+      {"probe_085",
+       {8.5, 44.75, 2.85},
+       {9.0, 44.25, 2.500000238},
+       {3.375, 5.75, 2.000000238},
+       {1.75, 4.25, 1.750000238}},
+      {"probe_113",
+       {-1.5, 44.75, 2.849999508},
+       {-1.5, 43.25, 2.499999754},
+       {3.75, 3.25, 2.000000246},
+       {2.25, 1.75, 1.750000246}},
+      {"probe_116",
+       {-11.5, 9.75, 3.849999881},
+       {-11.0, 8.75, 4.12499994},
+       {3.992119266, 4.25, 2.62500006},
+       {2.5, 1.5, 2.37500006}},
+      {"probe_131",
+       {3.5, 44.75, 3.34999997},
+       {3.5, 44.25, 2.750000224},
+       {2.98753211, 4.5, 1.750000253},
+       {1.75, 2.75, 1.500000253}},
+      {"probe_157",
+       {-5.5, 12.75, 3.2495},
+       {-5.85, 13.0, 2.9995},
+       {1.9, 2.5, 0.7495},
+       {0.4, 1.0, 0.4995}},
+      {"probe_158",
+       {-9.0, 12.75, 3.85},
+       {-9.25, 13.0, 4.125},
+       {2.5, 2.0, 2.625},
+       {1.0, 0.5, 2.375}},
+      {"probe_164",
+       {3.5, 40.25, 3.35},
+       {3.5, 40.25, 2.3745},
+       {3.75, 2.75, 1.3745},
+       {1.75, 0.25, 1.1245}},
+      {"probe_179",
+       {-0.125, 39.625, 3.35},
+       {-0.375, 39.75, 2.3745},
+       {3.625, 2.25, 1.3745},
+       {1.125, 0.75, 1.1245}},
+      {"probe_181",
+       {-9.875, 40.125, 2.85},
+       {-10.0, 40.125, 2.25},
+       {3.25, 1.875, 1.75},
+       {1.75, 0.375, 1.5}},
+  };
+  const std::vector<InfluenceVolume> meeting = influencesOf(volumes);
+  constexpr int kProbeIndex = 0;
+  const Probe probe = volumes[kProbeIndex].probe();
+  const auto samples =
+      buildReflectionSamples(level, probe, SampleSet::MirrorFloor, ProxyBuildOptions{}.samples);
+  const std::vector<double> weights = servedWeights(meeting, kProbeIndex, samples);
+  for (const double fitMeters : {0.0, kRoomFitMeters, kRoomsFitMeters}) {
+    const KeptAndJudged judged = keepThenValidate(level, probe, meeting, kProbeIndex, fitMeters);
+    const ServedError served = servedError(judged.kept.candidates[judged.kept.kept].shape,
+                                           probe.captureMeters, samples, weights, 5.0);
+    EXPECT_LT(served.overShare, 0.5) << fitMeters << " m";
+    ASSERT_EQ(judged.findings.size(), 1u);
+    EXPECT_EQ(judged.findings[0].severity, "info")
+        << fitMeters << " m: " << judged.findings[0].message;
   }
 }
 

@@ -89,5 +89,15 @@ TEST(ServesClearlyBetter, LessFloorOverByTwoPointsWithATailNoWorseThanNoise) {
   EXPECT_FALSE(servesClearlyBetter({5.0, 0.19}, kept));  // one point less is noise
 }
 
+TEST(ServesClearlyBetter, PastAGrossTailTheFloorOverTheToleranceDecides) {
+  // aneurysm's probe_008: the obb's served floor 85% over 5 deg, p95 112 deg; a convex fit's
+  // 31%, p95 a miss.
+  const ServedError gross{112.0, 0.85};
+  EXPECT_TRUE(servesClearlyBetter({180.0, 0.31}, gross));
+  EXPECT_FALSE(servesClearlyBetter({180.0, 0.84}, gross));  // one point less is noise still
+  const ServedError justUnder{89.9, 0.85};
+  EXPECT_FALSE(servesClearlyBetter({180.0, 0.31}, justUnder));
+}
+
 }  // namespace
 }  // namespace probeproxy
