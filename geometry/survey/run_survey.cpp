@@ -27,12 +27,6 @@ int samplesPerCell(const WalkableFloor& floor, const SurveyOptions& o) {
       std::clamp<std::size_t>(fit, 1, static_cast<std::size_t>(o.samplesPerCell)));
 }
 
-// A partly occluded sample, or one the fallback shares, stands for the part of its floor its
-// visible probes shade.
-double shadedArea(const SurveySampleError& e) {
-  return e.areaSquareMeters * (1.0 - e.occludedWeight - e.uncoveredWeight);
-}
-
 SurveyCellError cellError(std::span<const SurveySampleError> errors) {
   SurveyCellError c;
   c.samples = static_cast<int>(errors.size());

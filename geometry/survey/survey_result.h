@@ -36,6 +36,12 @@ struct SurveySampleError {
   int heaviestProbe = -1;        // the probe that weighs most among those seen (-1: none)
 };
 
+// A partly occluded sample, or one the fallback shares, stands for the part of its floor its
+// visible probes shade.
+inline double shadedArea(const SurveySampleError& e) {
+  return e.areaSquareMeters * (1.0 - e.occludedWeight - e.uncoveredWeight);
+}
+
 struct SurveyCellError {  // per floor cell (WalkableFloor::cells, same order)
   double p95Deg = std::numeric_limits<double>::quiet_NaN();  // of its samples; NaN: none visible
   // What the map colours: half the cell's shaded floor is at most this. Floor coloured past

@@ -25,7 +25,7 @@ WorstFloor worstFloor(std::span<const SurveySampleError> errors,
   for (std::size_t i = 0; i < errors.size(); ++i) {
     const SurveySampleError& e = errors[i];
     if (std::isnan(e.errorDeg) || e.errorDeg < thresholdDeg) continue;
-    const double area = e.areaSquareMeters * (1.0 - e.occludedWeight - e.uncoveredWeight);
+    const double area = shadedArea(e);
     const ReflectionSample& s = samples[i].sample;
     w.squareMeters += area;
     const SurveyProbeRef probe = probeOf(e.heaviestProbe);
