@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <variant>
@@ -302,33 +303,69 @@ void chooseProbeEntries(EnginePresetChoice& choice, const Scene& scene,
   }
 }
 
+// Whether two policies make the same boxes and influences, told apart only by their fades: the
+// probes' entries, chosen next, leave out or change boxes, which the fades do not decide.
+bool sameBoxes(const EnginePresetPolicy& a, const EnginePresetPolicy& b) {
+  return a.clipToInfluence == b.clipToInfluence && a.cubeAboutCapture == b.cubeAboutCapture &&
+         a.influenceInside == b.influenceInside && a.eeveeAtBoxCentre == b.eeveeAtBoxCentre;
+}
+
+// `engine`'s presets as `choice` makes them, read back as written.
+RuntimeExport chosenPresets(const EnginePresetChoice& choice, PresetsByPolicy& presetsOf,
+                            ProbeEntries entries) {
+  return entries.choose ? asWritten(enginePresets(choice, presetsOf.scene(), presetsOf.builds()))
+                        : presetsOf(choice.policy);
+}
+
 // The policy `engine` (not Generic) renders the trial floor best with, each probe's entry
-// under it as `entries` says, and the kept presets surveyed on `floor`.
+// under it as `entries` says, and the kept presets surveyed on `floor`. Before the entries the
+// trial floor is mostly not right for reasons the entries remove (probes that cannot see what
+// they show, left out next), so the policies are first ranked within each kind of box, then the
+// best of each kind gets its entries and the finished ones are compared.
 EnginePresetChoice choose(Engine engine, PresetsByPolicy& presetsOf, const LevelRayCaster& level,
                           const SurveyFloor& floor, const SurveyFloor& trialFloor,
                           CaptureSights& trialSights, const SurveyOptions& survey,
                           std::span<const EnginePresetPolicy> policies, ProbeEntries entries) {
   SurveyOptions options = survey;
   options.engine = engine;
-  EnginePresetChoice best;
-  best.engine = engine;
-  SurveyFigures bestTrial;
+  const auto onTrialFloor = [&](const RuntimeExport& presets) {
+    return surveyModel(engineModel(engine, presets, options.blend), trialFloor, level, options,
+                       &trialSights)
+        .figures;
+  };
+  std::vector<EnginePresetTrial> trials;
+  std::vector<std::size_t> bestOfKind;  // index into `trials`, one per kind of box
   for (const EnginePresetPolicy& policy : policies) {
-    const SurveyResult trial = surveyModel(engineModel(engine, presetsOf(policy), options.blend),
-                                           trialFloor, level, options, &trialSights);
-    best.trials.push_back({policy, trial.figures});
-    if (best.trials.size() == 1 || better(trial.figures, bestTrial)) {
-      best.policy = policy;
-      bestTrial = trial.figures;
+    trials.push_back({policy, onTrialFloor(presetsOf(policy)), std::nullopt});
+    const auto kind = std::find_if(bestOfKind.begin(), bestOfKind.end(), [&](std::size_t k) {
+      return sameBoxes(trials[k].policy, policy);
+    });
+    if (kind == bestOfKind.end())
+      bestOfKind.push_back(trials.size() - 1);
+    else if (better(trials.back().figures, trials[*kind].figures))
+      *kind = trials.size() - 1;
+  }
+  EnginePresetChoice best;
+  std::optional<SurveyFigures> bestFinished;
+  for (const std::size_t k : bestOfKind) {
+    EnginePresetChoice finished;
+    finished.engine = engine;
+    finished.policy = trials[k].policy;
+    if (entries.choose)
+      chooseProbeEntries(finished, presetsOf.scene(), presetsOf.builds(),
+                         presetsOf(finished.policy), level, trialFloor, trialSights, options,
+                         entries.keptProbes);
+    trials[k].finished =
+        entries.choose ? onTrialFloor(chosenPresets(finished, presetsOf, entries)) : trials[k].figures;
+    if (!bestFinished || better(*trials[k].finished, *bestFinished)) {
+      bestFinished = trials[k].finished;
+      best = std::move(finished);
     }
   }
-  if (entries.choose)
-    chooseProbeEntries(best, presetsOf.scene(), presetsOf.builds(), presetsOf(best.policy), level,
-                       trialFloor, trialSights, options, entries.keptProbes);
-  const RuntimeExport kept =
-      entries.choose ? asWritten(enginePresets(best, presetsOf.scene(), presetsOf.builds()))
-                     : presetsOf(best.policy);
-  best.survey = surveyModel(engineModel(engine, kept, options.blend), floor, level, options);
+  best.trials = std::move(trials);
+  best.survey = surveyModel(engineModel(engine, chosenPresets(best, presetsOf, entries),
+                                        options.blend),
+                            floor, level, options);
   return best;
 }
 

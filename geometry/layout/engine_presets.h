@@ -18,6 +18,7 @@
 #include "geometry/survey/survey_result.h"
 
 #include <functional>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -26,6 +27,9 @@ namespace probeproxy {
 struct EnginePresetTrial {
   EnginePresetPolicy policy;
   SurveyFigures figures;  // under the engine's model, on the trial floor
+  // The same with each probe's entry chosen under the policy, where it was the best of its kind
+  // of box (enginePresetPolicies) and so finished.
+  std::optional<SurveyFigures> finished;
 };
 
 // The box `build` exports for an engine: the kept proxy's, else the best of the build's boxes.
@@ -60,9 +64,11 @@ std::vector<int> enginePriorities(Engine engine);
 // fade, and the fade once and twice as wide with the floor cleared; each with the engine's own
 // second choice off, then on: Bevy's cube about the capture point, for the others the boxes cut
 // to the influence in plan (8); EEVEE both the cut and its influence inside the scene's range in
-// plan (16). The kept one has the least floor over the tolerance, left to the engine's
-// fallback or shown by probes that cannot see what it reflects, then the lowest p95, then the
-// first.
+// plan (16). Policies making the same boxes (differing only in their fades) are one kind. Of
+// each kind the best on the trial floor is finished with its probes' entries (ProbeEntries), and
+// of the finished ones the best is kept: the least floor over the tolerance, left to the
+// engine's fallback or shown by probes that cannot see what it reflects, then the lowest p95,
+// then the first.
 std::vector<EnginePresetPolicy> enginePresetPolicies(Engine engine);
 
 // Whether, after the policy, each probe's entry is chosen (its box, priority and capture point,

@@ -2,9 +2,10 @@
 # layout_engine_checks.sh PROBEPROXY SCENE WORK
 # A layout made for every engine (`layout --engine all`) exports, per engine, the presets it
 # measured: `survey --engine E --proxies proxies.json` on the layout's scene gives layout.json's
-# figures for E exactly; each engine's kept policy is the best of its trials (the least floor
-# over the tolerance, left to the fallback or shown by probes that cannot see what it reflects,
-# then the lowest p95); the same run twice writes the same bytes.
+# figures for E exactly; of each kind of box the best trial (the least floor over the
+# tolerance, left to the fallback or shown by probes that cannot see what it reflects, then the
+# lowest p95) is finished with its probes' entries, and the kept policy is the best finished one;
+# the same run twice writes the same bytes.
 set -eu
 probeproxy=$1 scene=$2 work=$3
 rm -rf "$work" && mkdir -p "$work"
@@ -35,11 +36,16 @@ for name, entry in engines.items():
     def rank(t):
         p95 = t["p95_deg"] if t["p95_deg"] is not None else math.inf
         return (t["over_tolerance_share"] + t["uncovered_share"] + t["occluded_share"], p95)
-    best = min(entry["tried"], key=rank)
     keys = ("clip_to_influence", "fade_scale", "clear_the_floor", "cube_about_capture",
             "influence_inside")
-    kept = next(t for t in entry["tried"] if all(t[k] == entry[k] for k in keys))
-    assert rank(best) == rank(kept), name
+    boxes = ("clip_to_influence", "cube_about_capture", "influence_inside")
+    finished = [t for t in entry["tried"] if "finished" in t]
+    for t in finished:
+        kind = [u for u in entry["tried"] if all(u[k] == t[k] for k in boxes)]
+        assert rank(t) == min(map(rank, kind)), (name, t)
+    assert len(finished) == len({tuple(t[k] for k in boxes) for t in entry["tried"]}), name
+    kept = next(t for t in finished if all(t[k] == entry[k] for k in keys))
+    assert rank(kept["finished"]) == min(rank(t["finished"]) for t in finished), name
 print("layout engine checks passed:", ", ".join(
     "%s %.1f%%" % (n, 100 * e["survey"]["over_tolerance_share"]) for n, e in engines.items()))
 PY

@@ -219,12 +219,17 @@ std::string layoutReportJson(const LayoutJobOptions& o, const LayoutJobResult& r
     for (const EnginePresetChoice& c : r.engines) {
       nlohmann::ordered_json e = policyJson(c.policy);
       e["tried"] = nlohmann::ordered_json::array();
+      const auto figuresJson = [](nlohmann::ordered_json& to, const SurveyFigures& f) {
+        to["p95_deg"] = number(f.p95Deg);
+        to["over_tolerance_share"] = number(f.overToleranceShare);
+        to["uncovered_share"] = number(f.uncoveredShare);
+        to["occluded_share"] = number(f.occludedShare);
+      };
       for (const EnginePresetTrial& t : c.trials) {
         nlohmann::ordered_json trial = policyJson(t.policy);
-        trial["p95_deg"] = number(t.figures.p95Deg);
-        trial["over_tolerance_share"] = number(t.figures.overToleranceShare);
-        trial["uncovered_share"] = number(t.figures.uncoveredShare);
-        trial["occluded_share"] = number(t.figures.occludedShare);
+        figuresJson(trial, t.figures);
+        // The best of its kind of box, with the probes' entries chosen under it.
+        if (t.finished) figuresJson(trial["finished"], *t.finished);
         e["tried"].push_back(trial);
       }
       // Where the engine takes another box than `build` exports, or none: probe by probe.
