@@ -246,5 +246,63 @@ TEST(EnginePresets, EeveeCapturesAnOffCentreProbeAtItsBoxCentreWhereItHoldsTheRo
             c.survey.figures.overToleranceShare);
 }
 
+// A policy is judged with the probes' entries chosen under it, not before. The west probe's box
+// is the room, its influence the west 6 m; the east probe stands behind the east wall (it sees
+// none of the room) with a box over the east 7 m and an influence over the east 4 m. Before the
+// entries, cutting the boxes to the influences wins: the east box, on top (Unreal draws the
+// smaller box over the larger), then shows less floor it cannot see. With the east probe left
+// out, which both policies do, the uncut room box is right everywhere and the cut one leaves the
+// east of the room to the sky.
+TEST(EnginePresets, APolicyIsKeptByTheFloorItsEntriesFinishNotByItsTrialBefore) {
+  const Room room;
+  Scene scene;
+  scene.file = "room.scene.json";
+  const auto probe = [](const std::string& name, glm::dvec3 capture, double fromX, double toX) {
+    Probe p;
+    p.name = name;
+    p.captureMeters = capture;
+    const glm::dvec3 centre{0.5 * (fromX + toX), 2.0, 1.5}, half{0.5 * (toX - fromX), 2.0, 1.5};
+    p.influence = BoxInfluence{centre, half, kUnturned, half - 0.01};
+    return p;
+  };
+  scene.probes = {probe("west", kWest, 0.0, 6.0), probe("east", {12.0, 2.0, 1.5}, 6.0, 10.0)};
+  const auto build = [](const std::string& name, const BoxShape& box) {
+    ProbeProxyBuild b;
+    b.probe = name;
+    ProxyCandidate c;
+    c.origin = CandidateOrigin::Aabb;
+    c.shape = box;
+    b.candidates.push_back(c);
+    return b;
+  };
+  const BoxShape eastSeven{{6.5, 2.0, 1.5}, {3.5, 2.0, 1.5}, kUnturned};  // [3, 10]
+  const std::vector<ProbeProxyBuild> builds = {build("west", kRoom), build("east", eastSeven)};
+  const Engine unreal = Engine::Unreal;
+  const std::vector<EnginePresetChoice> choices = choosePresetsForEngines(
+      std::span(&unreal, 1), scene, builds, room.level, room.floor, room.floor, room.options,
+      ProbeEntries{});
+  ASSERT_EQ(choices.size(), 1u);
+  const EnginePresetChoice& c = choices[0];
+  const auto notRight = [](const SurveyFigures& f) {
+    return f.overToleranceShare + f.uncoveredShare + f.occludedShare;
+  };
+  // Before the entries the best cut policy beat every uncut one; both kinds were finished.
+  double bestCut = 1.0, bestUncut = 1.0;
+  const EnginePresetTrial* cutFinished = nullptr;
+  for (const EnginePresetTrial& t : c.trials) {
+    double& best = t.policy.clipToInfluence ? bestCut : bestUncut;
+    best = std::min(best, notRight(t.figures));
+    if (t.finished && t.policy.clipToInfluence) cutFinished = &t;
+  }
+  EXPECT_LT(bestCut + 0.05, bestUncut);
+  ASSERT_NE(cutFinished, nullptr);
+  // Finished, the uncut boxes won, the east probe left out, and the floor is right but what the
+  // room box's corners and fades miss; the cut policy left the east 4 m (40%) to the sky.
+  EXPECT_FALSE(c.policy.clipToInfluence);
+  EXPECT_EQ(c.boxFrom, (std::vector<int>{kDefaultBox, kLeftOut}));
+  EXPECT_LT(notRight(c.survey.figures), 0.05);
+  EXPECT_GT(notRight(*cutFinished->finished), 0.35);
+}
+
 }  // namespace
 }  // namespace probeproxy
