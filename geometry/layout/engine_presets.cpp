@@ -351,21 +351,22 @@ EnginePresetChoice choose(Engine engine, PresetsByPolicy& presetsOf, const Level
     EnginePresetChoice finished;
     finished.engine = engine;
     finished.policy = trials[k].policy;
-    if (entries.choose)
+    if (entries.choose) {
       chooseProbeEntries(finished, presetsOf.scene(), presetsOf.builds(),
                          presetsOf(finished.policy), level, trialFloor, trialSights, options,
                          entries.keptProbes);
-    trials[k].finished =
-        entries.choose ? onTrialFloor(chosenPresets(finished, presetsOf, entries)) : trials[k].figures;
-    if (!bestFinished || better(*trials[k].finished, *bestFinished)) {
-      bestFinished = trials[k].finished;
+      trials[k].finished = onTrialFloor(chosenPresets(finished, presetsOf, entries));
+    }
+    const SurveyFigures judged = trials[k].finished.value_or(trials[k].figures);
+    if (!bestFinished || better(judged, *bestFinished)) {
+      bestFinished = judged;
       best = std::move(finished);
     }
   }
   best.trials = std::move(trials);
-  best.survey = surveyModel(engineModel(engine, chosenPresets(best, presetsOf, entries),
-                                        options.blend),
-                            floor, level, options);
+  best.survey =
+      surveyModel(engineModel(engine, chosenPresets(best, presetsOf, entries), options.blend),
+                  floor, level, options);
   return best;
 }
 

@@ -28,7 +28,7 @@ struct EnginePresetTrial {
   EnginePresetPolicy policy;
   SurveyFigures figures;  // under the engine's model, on the trial floor
   // The same with each probe's entry chosen under the policy, where it was the best of its kind
-  // of box (enginePresetPolicies) and so finished.
+  // of box (enginePresetPolicies) and entries are chosen (ProbeEntries): finished.
   std::optional<SurveyFigures> finished;
 };
 

@@ -278,9 +278,9 @@ TEST(EnginePresets, APolicyIsKeptByTheFloorItsEntriesFinishNotByItsTrialBefore) 
   const BoxShape eastSeven{{6.5, 2.0, 1.5}, {3.5, 2.0, 1.5}, kUnturned};  // [3, 10]
   const std::vector<ProbeProxyBuild> builds = {build("west", kRoom), build("east", eastSeven)};
   const Engine unreal = Engine::Unreal;
-  const std::vector<EnginePresetChoice> choices = choosePresetsForEngines(
-      std::span(&unreal, 1), scene, builds, room.level, room.floor, room.floor, room.options,
-      ProbeEntries{});
+  const std::vector<EnginePresetChoice> choices =
+      choosePresetsForEngines(std::span(&unreal, 1), scene, builds, room.level, room.floor,
+                              room.floor, room.options, ProbeEntries{});
   ASSERT_EQ(choices.size(), 1u);
   const EnginePresetChoice& c = choices[0];
   const auto notRight = [](const SurveyFigures& f) {
