@@ -10,6 +10,7 @@
 #include "geometry/layout/head_room.h"
 #include "geometry/layout/layout_candidates.h"
 #include "geometry/layout/layout_influence.h"
+#include "geometry/layout/leftover_floor.h"
 #include "geometry/layout/near_ranges.h"
 #include "geometry/layout/overlap_trim.h"
 #include "geometry/layout/select_probes.h"
@@ -450,6 +451,8 @@ void layoutByCandidates(const LevelRayCaster& level, std::span<const glm::dvec3>
   // Ranges a capture point held too near their neighbours for a smooth blend part
   // (near_ranges.h).
   partNearRanges(o.blendBandMeters, keptVolumes, r.probes);
+  // Floor no fill could take joins the volume that reaches it for the least growth.
+  coverLeftoverFloor(level, walked, o.blendBandMeters, keptVolumes, r.probes);
   lap("uncovered_floor");
   // Where more bands cross than the blend takes (overlap_trim.h), to validate's defaults. An
   // optional fill in a crowd the trim could not free, its faces moved or not, goes, and the rest

@@ -12,6 +12,7 @@
 #include "geometry/layout/layout_candidates.h"
 #include "geometry/layout/layout_influence.h"
 #include "geometry/layout/layout_proxy.h"
+#include "geometry/layout/leftover_floor.h"
 #include "geometry/layout/near_ranges.h"
 #include "geometry/layout/overlap_trim.h"
 #include "geometry/layout/thin_ranges.h"
@@ -445,6 +446,83 @@ struct RangesInARoom {
 // eggandbacon's probe_106).
 constexpr std::array<std::array<double, 4>, 5> kCrossingByAStrip{
     {{0, 3, 0, 2.5}, {4, 4.5, 0, 2.5}, {5.5, 10, 0, 2.5}, {0, 4.25, 3.5, 6}, {5.25, 10, 3.5, 6}}};
+
+// Whether the whole square of a floor cell (where the survey's samples of it lie), lifted as
+// the blend weighs it, is in one of the probes' volumes.
+bool cellSquareCovered(const WalkableFloor& floor, const FloorCell& cell,
+                       std::span<const LayoutProbe> probes) {
+  const double h = 0.5 * floor.spacingMeters - 1e-3;
+  for (double dx : {-h, h})
+    for (double dy : {-h, h}) {
+      const glm::dvec3 at = cell.pointMeters + glm::dvec3(dx, dy, kBlendLiftMeters);
+      if (std::none_of(probes.begin(), probes.end(),
+                       [&](const LayoutProbe& p) { return insideInfluence(p.influence, at); }))
+        return false;
+    }
+  return true;
+}
+
+// A 10 x 4 m room and its floor, with probes whose ranges run across it: x lo..hi, the whole
+// width, from the floor up (bands 1.5 m), each captured 0.6 m over the floor at `captureX`.
+struct StripRoom {
+  LevelRayCaster level{boxRoom({0, 0, 0}, {10, 4, 3.5f})};
+  WalkableFloor floor;
+  StripRoom() {
+    const glm::dvec3 seed{2.0, 2.0, 1.6};
+    floor = walkableFloor(level, std::span(&seed, 1));
+  }
+  static LayoutProbe range(double captureX, double lo, double hi) {
+    return {{captureX, 2.0, 0.6}, influenceOfBounds({lo, 0, -0.5}, {hi, 4, 2.5}, 1.0)};
+  }
+};
+
+TEST(CoverLeftoverFloor, AStripNoVolumeReachesJoinsTheBandThatGrowsLeastAndNoInnerRangeMoves) {
+  // Ranges over x 0..3.5 and 7..10: the floor x 5..5.5 lies in no volume (as a stair under a
+  // range above, where no fill's capture point is clear).
+  const StripRoom room;
+  const WalkableFloor& floor = room.floor;
+  std::vector<LayoutProbe> probes{StripRoom::range(1.75, 0, 3.5), StripRoom::range(8.5, 7, 10)};
+  const std::vector<LayoutProbe> before = probes;
+  const auto strip = std::count_if(floor.cells.begin(), floor.cells.end(), [&](const FloorCell& c) {
+    return !cellSquareCovered(floor, c, probes);
+  });
+  ASSERT_GT(strip, 0) << "the strip between the bands";
+  EXPECT_TRUE(coverLeftoverFloor(room.level, floor, 1.0, {}, probes).empty());
+  for (const FloorCell& c : floor.cells)
+    EXPECT_TRUE(cellSquareCovered(floor, c, probes)) << c.pointMeters.x << ", " << c.pointMeters.y;
+  for (std::size_t i = 0; i < probes.size(); ++i) {
+    EXPECT_EQ(innerLo(probes[i].influence), innerLo(before[i].influence)) << i;
+    EXPECT_EQ(innerHi(probes[i].influence), innerHi(before[i].influence)) << i;
+  }
+  // The first band is 0.25 m nearer the strip's first cells than the second: it takes the strip.
+  const auto& grown = std::get<BoxInfluence>(probes[0].influence);
+  EXPECT_NEAR(grown.centerMeters.x + grown.halfExtentsMeters.x, 5.5, 0.01);
+  EXPECT_EQ(std::get<BoxInfluence>(probes[1].influence).halfExtentsMeters,
+            std::get<BoxInfluence>(before[1].influence).halfExtentsMeters);
+}
+
+TEST(CoverLeftoverFloor, FloorMoreThanAGapPastEveryBandOrHiddenFromItsProbeIsLeftAndReturned) {
+  // Bands end at x 5 and begin at x 8: the floor x 6.25..6.75 lies more than a 1 m gap past
+  // both, so no band grows that far. Then a band 0.25 m short of the floor x 3.5..5.5 whose
+  // capture point stands behind the room's east wall: it does not see that floor, so it does
+  // not grow; the first band grows a gap and takes what lies within it.
+  const StripRoom room;
+  const WalkableFloor& floor = room.floor;
+  std::vector<LayoutProbe> probes{StripRoom::range(1.75, 0, 3.5), StripRoom::range(9.75, 9.5, 10)};
+  const std::vector<std::size_t> left = coverLeftoverFloor(room.level, floor, 1.0, {}, probes);
+  ASSERT_FALSE(left.empty());
+  for (std::size_t c : left) {
+    const double x = floor.cells[c].pointMeters.x;
+    EXPECT_GT(x, 5.0 + 1.0 - 0.125) << "within a gap of the first band";
+    EXPECT_LT(x, 8.0 - 1.0 + 0.125) << "within a gap of the second band";
+  }
+  std::vector<LayoutProbe> hidden{StripRoom::range(1.0, 0, 2), StripRoom::range(10.5, 7, 10.75)};
+  const std::vector<std::size_t> unseen = coverLeftoverFloor(room.level, floor, 1.0, {}, hidden);
+  ASSERT_FALSE(unseen.empty());
+  for (std::size_t c : unseen) EXPECT_GT(floor.cells[c].pointMeters.x, 3.5 + 1.0 - 0.125);
+  EXPECT_EQ(std::get<BoxInfluence>(hidden[1].influence).halfExtentsMeters,
+            influenceOfBounds({7, 0, -0.5}, {10.75, 4, 2.5}, 1.0).halfExtentsMeters);
+}
 
 TEST(JoinThinRanges, AStripInARowJoinsANeighbourAndNoMoreThanTheBlendTakesMeet) {
   RangesInARoom room(kCrossingByAStrip);
