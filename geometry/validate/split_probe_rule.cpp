@@ -32,7 +32,6 @@ namespace {
 
 constexpr double kTrySpacingMeters = 1.5;  // between the capture points tried
 constexpr std::size_t kMaxTries = 64;
-constexpr double kCaptureHeightMeters = 1.6;
 constexpr double kSplitCellMeters = 1.0;  // the squares of floor the split hands out
 // The widest fit region tried: past any room the validator's probes span, "all it sees".
 constexpr double kAllItSeesFitMeters = 4.0 * kRoomsFitMeters;
@@ -58,7 +57,8 @@ std::vector<glm::dvec3> capturesToTry(const LevelRayCaster& level, const Probe& 
   std::vector<glm::dvec3> captures;
   for (const auto& [key, nearest] : squares) {
     const glm::dvec3 p = nearest.second;
-    const glm::dvec3 capture = captureAbove(level, p, kCaptureHeightMeters);
+    // Where `layout` would capture a probe over that floor.
+    const glm::dvec3 capture = captureAbove(level, p, LayoutOptions{}.captureHeightMeters);
     if (!insideInfluence(probe.influence, capture)) continue;
     if (nearestSurface(level, capture).distanceMeters < kLayoutCaptureClearanceMeters) continue;
     captures.push_back(capture);

@@ -88,9 +88,10 @@ void readLayoutOptions(const py::dict& options, jobs::LayoutJobOptions& job) {
       o.maxCandidates = value.cast<std::size_t>();
     else if (name == "reach")
       o.reachMeters = value.cast<double>();
-    else if (name == "capture_height")
+    else if (name == "capture_height") {
       o.captureHeightMeters = value.cast<double>();
-    else if (name == "blend_band")
+      job.captureHeightGiven = true;
+    } else if (name == "blend_band")
       o.blendBandMeters = value.cast<double>();
     else if (name == "tile_size")
       o.tileMeters = value.cast<double>();

@@ -135,8 +135,10 @@ Verb addLayoutVerb(CLI::App& app) {
                    "a candidate serves floor within this distance, m (0: all it sees)")
       ->capture_default_str();
   verb->add_option("--capture-height", l.captureHeightMeters,
-                   "capture points this far above the floor (at most half the free height), m")
-      ->capture_default_str();
+                   "capture points this far above the floor (at most half the free height; "
+                   "with --keep-authored, by default as high as the scene's probes), m")
+      ->capture_default_str()
+      ->each([o](const std::string&) { o->job.captureHeightGiven = true; });
   verb->add_option("--blend-band", l.blendBandMeters,
                    "gap between neighbouring inner ranges, where they blend (outer ranges "
                    "reach 1.5x as far), m")

@@ -44,6 +44,9 @@ struct LayoutJobOptions {
   MeasureSettings given;
   int threads = 0;  // 0: all cores
   LayoutOptions layout;
+  // Whether layout.captureHeightMeters was named. With layout.keepAuthored and no height named,
+  // the added probes are captured as high over their floor as the artist's are (their median).
+  bool captureHeightGiven = false;
   SurveyOptions survey;  // how the result is measured (the generic model); seeds as the layout's
   // The engines the level ships to: each gets the presets it renders best and its own figures
   // (geometry/layout/engine_presets.h). With exactly one, the layout's survey is that engine's.
