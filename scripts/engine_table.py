@@ -21,7 +21,7 @@ whose folder under --work already holds its layout.json instead of running it ag
 
   /usr/bin/python3 scripts/engine_table.py build/plugin/cli/probeproxy build/corpus/scenes \
       [--levels downer toxic] [--engines unity godot3] [--work DIR] [--jsonl FILE] \
-      [--without-generic] [--resume]
+      [--without-generic] [--resume] [--capture-height H]
   /usr/bin/python3 scripts/engine_table.py - - --from-jsonl FILE
 """
 import argparse
@@ -59,15 +59,15 @@ def run_layout(probeproxy, scene, out, resume, *options):
     return run_json(probeproxy, "layout", scene, "--out", out, "--json", *options)
 
 
-def level_figures(probeproxy, scene, work, engines, generic=True, resume=False):
+def level_figures(probeproxy, scene, work, engines, generic=True, resume=False, layout_options=()):
     plain, engine, grid = (os.path.join(work, kind) for kind in ("plain", "engine", "grid"))
     names = ",".join(engines)
-    tuned = run_layout(probeproxy, scene, engine, resume, "--engine", names)
+    tuned = run_layout(probeproxy, scene, engine, resume, "--engine", names, *layout_options)
     baseline = run_layout(probeproxy, scene, grid, resume, "--baseline", "grid", "--max-probes",
-                          str(tuned["probes"]), "--engine", names)
+                          str(tuned["probes"]), "--engine", names, *layout_options)
     # The same probes as `layout` alone writes them: the engine stage changes only the presets
     # (and with one engine named, its survey is that engine's, so the generic one comes from here).
-    layout = run_layout(probeproxy, scene, plain, resume) if generic else None
+    layout = run_layout(probeproxy, scene, plain, resume, *layout_options) if generic else None
     out = {"probes": tuned["probes"], "grid_probes": baseline["probes"],
            "generic": layout and figures(layout["survey"]), "engines": {}}
     for engine in engines:
@@ -157,7 +157,11 @@ def main():
                         help="skip the generic layout's presets (one layout run less per level)")
     parser.add_argument("--resume", action="store_true",
                         help="read a run whose --work folder holds its layout.json, not run it")
+    parser.add_argument("--capture-height", type=float,
+                        help="every layout's and grid's --capture-height (default: layout's)")
     args = parser.parse_args()
+    layout_options = () if args.capture_height is None else (
+        "--capture-height", repr(args.capture_height))
 
     if args.from_jsonl:
         with open(args.from_jsonl) as f:
@@ -174,7 +178,7 @@ def main():
             level = os.path.basename(os.path.dirname(scene))
             work = os.path.join(args.work or scratch, level)
             results[level] = level_figures(args.probeproxy, scene, work, args.engines,
-                                           not args.without_generic, args.resume)
+                                           not args.without_generic, args.resume, layout_options)
             if args.jsonl:
                 with open(args.jsonl, "a") as f:
                     f.write(json.dumps({"level": level, **results[level]}) + "\n")

@@ -21,7 +21,7 @@ OUT/render_check_<camera>.png (rendered and predicted error per set, survey's co
 
   /usr/bin/python3 scripts/render_check.py build/plugin/cli/probeproxy \\
       build/scenes/l_room/l_room.scene.json scripts/render_check/cameras/l_room.json \\
-      --module-dir build/plugin/python --out out/render_check/l_room
+      --module-dir build/plugin/python --out out/render_check/l_room [--capture-height H]
 Exit 0 when it ran (the figures say how the engines did), 1 with --require-agreement when the
 model and the renderer disagree, 2 on bad input.
 """
@@ -62,10 +62,12 @@ def run_json(*command):
 def lay_out(args, out, region):
     """The three probe sets' proxies.json, as rendered: within `region` when the cameras
     file gives one."""
+    height = () if args.capture_height is None else ("--capture-height", repr(args.capture_height))
     layout = run_json(args.probeproxy, "layout", args.scene, "--engine", args.engine,
-                      "--out", os.path.join(out, "layout"), "--json")
+                      "--out", os.path.join(out, "layout"), "--json", *height)
     run_json(args.probeproxy, "layout", args.scene, "--engine", args.engine, "--baseline", "grid",
-             "--max-probes", str(layout["probes"]), "--out", os.path.join(out, "grid"), "--json")
+             "--max-probes", str(layout["probes"]), "--out", os.path.join(out, "grid"), "--json",
+             *height)
     exports = {}
     for name in ("layout", "grid"):
         with open(os.path.join(out, name, "proxies.json")) as f:
@@ -410,6 +412,8 @@ def main():
     parser.add_argument("--engine", choices=sorted(PRESETS), default="eevee",
                         help="the renderer: eevee (Blender) or godot3 (godot3-runner)")
     parser.add_argument("--blender", default="blender")
+    parser.add_argument("--capture-height", type=float,
+                        help="the layout's and the grid's --capture-height (default: layout's)")
     parser.add_argument("--out", required=True)
     parser.add_argument("--max-cameras", type=int, default=None,
                         help="the first N cameras of the file only (a quicker check)")
