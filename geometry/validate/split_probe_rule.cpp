@@ -54,11 +54,11 @@ std::vector<glm::dvec3> capturesToTry(const LevelRayCaster& level, const Probe& 
     const auto [at, fresh] = squares.emplace(key, std::pair{offCentre, p});
     if (!fresh && offCentre < at->second.first) at->second = {offCentre, p};
   }
+  // Where `layout` would capture a probe over that floor.
+  const double height = LayoutOptions{}.captureHeightMeters;
   std::vector<glm::dvec3> captures;
   for (const auto& [key, nearest] : squares) {
-    const glm::dvec3 p = nearest.second;
-    // Where `layout` would capture a probe over that floor.
-    const glm::dvec3 capture = captureAbove(level, p, LayoutOptions{}.captureHeightMeters);
+    const glm::dvec3 capture = captureAbove(level, nearest.second, height);
     if (!insideInfluence(probe.influence, capture)) continue;
     if (nearestSurface(level, capture).distanceMeters < kLayoutCaptureClearanceMeters) continue;
     captures.push_back(capture);

@@ -351,9 +351,9 @@ LayoutJobResult runLayoutJob(const LayoutJobOptions& o, const Progress& progress
     // Probes added beside an artist's are captured at the artist's height: beside the pillared
     // hall's probes at 1.6 m, added probes at the 0.6 m default left its p95 at 9.0 deg, at
     // 1.6 m 0.30 deg.
-    if (const std::optional<double> height = authoredCaptureHeight(rayCaster, input.probes);
-        height && !o.captureHeightGiven)
-      layout.captureHeightMeters = *height;
+    if (!o.captureHeightGiven)
+      if (const std::optional<double> height = authoredCaptureHeight(rayCaster, input.probes))
+        layout.captureHeightMeters = *height;
     keptBuilds = buildSceneProxies(input, rayCaster, o.layout.finalProxy);
     for (std::size_t i = 0; i < input.probes.size(); ++i)
       kept.push_back({input.probes[i].captureMeters, input.probes[i].influence,
