@@ -595,6 +595,39 @@ TEST(PolytopeFromPlanes, PlanesMeetingAlongOneEdgeLeaveAClosedMesh) {
   }
 }
 
+TEST(PolytopeFromPlanes, AFacetOfNoAreaWhoseNeighboursDoNotMeetIsSolvedAgainWithoutIt) {
+  // Thirteen planes like desertfactory's layout probe_186 (a strip 184 m long and 2 m deep):
+  // planes 2, 3 and 4 are one wall fitted three times, 1e-6 apart, and plane 2's facet between
+  // the other two is 170 m long and 4e-8 m wide. Left out as a plane touching an edge, it left
+  // its neighbours open where it was (3 open edges, validate's proxy_not_closed); solved again
+  // without it, the mesh is the polytope of the other planes.
+  const std::vector<ProxyPlane> planes = {
+      {{-0.015739524294074214, -0.83855283702288597, -0.54459288178956711}, -34.929482080571546},
+      {{-0.01274987633708192, 0.99991871702320656, -2.3239685762776952e-07}, 38.332480642748678},
+      {{-4.6698760409541684e-08, -0.95105662927083423, 0.30901664667133566}, -31.837317130735755},
+      {{2.3200881961292744e-07, -0.95105257515056041, 0.30902912370751368}, -31.837061089162692},
+      {{2.0669475469879431e-07, -0.95106303385451629, 0.30899693466990952}, -31.837794369277173},
+      {{-7.6688585725715273e-08, -8.2032114323291015e-08, -0.99999999999999356}, -7.9999992615551667},
+      {{1.3484992994378661e-07, 0.99999999999998412, 1.1647557055167266e-07}, 38.000007582187635},
+      {{0.013049307450022729, -0.39236983926159341, -0.91971496933175234}, -21.189189419926979},
+      {{0.016069353087418012, -0.34456333206460849, -0.93862553027705686}, -19.51592678521018},
+      {{0.12372439422485068, 0.070700961590853137, -0.98979475059419386}, -0.90138454106935129},
+      {{0.12372576252125078, 0.070673056879771129, -0.98979657239243035}, -0.90232267001367927},
+      {{0.10281992729248397, 0.99424359601364465, -0.030128629863055471}, 44.43403091049661},
+      {{0.98864070426378725, 0.14923544934189686, -0.017842043955913722}, 76.84112028978528},
+  };
+  const glm::dvec3 interior{35.75, 37.25, 8.6483808372815147};
+  std::vector<std::size_t> dropped;
+  const ConvexProxy proxy = polytopeFromPlanes(planes, interior, &dropped);
+  expectConsistent(proxy, 1e-4 * 200.0);
+  EXPECT_TRUE(std::find(dropped.begin(), dropped.end(), 2u) != dropped.end());
+  std::vector<ProxyPlane> without = planes;
+  without.erase(without.begin() + 2);
+  const ConvexProxy solvedWithout = polytopeFromPlanes(without, interior);
+  EXPECT_EQ(proxy.verticesMeters, solvedWithout.verticesMeters);
+  EXPECT_EQ(proxy.triangles, solvedWithout.triangles);
+}
+
 TEST(PolytopeFromPlanes, CornersTooNearForTheMeshFloatsAreOne) {
   // The fourteen planes of downer's layout probe_016: plane 4 meets the roof (plane 7) and two
   // others 0.13 mm apart, 32 m from the origin. Kept apart (1e-5 of the size merges only
