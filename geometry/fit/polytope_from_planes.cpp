@@ -230,8 +230,9 @@ bool ringsClose(const std::vector<Facet>& facets) {
     for (std::size_t j = 0; j < f.corners.size(); ++j)
       edges.emplace(f.corners[j], f.corners[(j + 1) % f.corners.size()]);
   }
-  return std::all_of(edges.begin(), edges.end(),
-                     [&](const auto& e) { return edges.contains({e.second, e.first}); });
+  return std::all_of(edges.begin(), edges.end(), [&](const auto& e) {
+    return edges.contains({e.second, e.first});
+  });
 }
 
 }  // namespace
