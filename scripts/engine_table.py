@@ -14,8 +14,9 @@ p95 for the three, and the layout-to-grid ratios of the floor over 5 deg and of 
 right (the three shares together, what the engine choice minimises); then one summary table, an
 engine a row and a level a column (floor over 5 deg, layout / grid and their ratio; the floor
 not right, layout / grid), with the levels where the layout has at most half the grid's floor
-over 5 deg and under 30%. With --jsonl FILE each level's figures are also appended there as they
-come; --from-jsonl FILE prints the tables of such a file without running anything;
+over 5 deg and under 30%; then, with the generic layout measured, what a studio importing it
+gets in each engine, a level a row. With --jsonl FILE each level's figures are also appended
+there as they come; --from-jsonl FILE prints the tables of such a file without running anything;
 --without-generic skips the first run (and the tables' first column); --resume reads each run
 whose folder under --work already holds its layout.json instead of running it again.
 
@@ -144,6 +145,28 @@ def print_summary(results, engines):
                                              " (%s)" % ", ".join(met) if met else ""))
 
 
+def print_today_table(results, engines):
+    """What a studio imports today, a level a row: the generic layout's own floor over 5 deg (its
+    convex proxies, Lagarde's blend), then per engine its presets' floor over 5 deg / floor not
+    right, % (in brackets the floor not right under the layout made for the engine)."""
+    if any(r["generic"] is None for r in results.values()):
+        return
+    print("\n| level | generic (own proxies, Lagarde) | %s |"
+          % " | ".join("`%s`" % e for e in engines))
+    print("|---|---|%s" % ("---|" * len(engines)))
+    for level, r in results.items():
+        cells = ["%.0f / %.0f (%.0f)" % (100 * e["today"]["over"], 100 * not_right(e["today"]),
+                                         100 * not_right(e["layout"]))
+                 for e in (r["engines"][name] for name in engines)]
+        print("| %s | %.1f | %s |" % (level, 100 * r["generic"]["over"], " | ".join(cells)))
+
+
+def print_tables(results, engines):
+    print_level_tables(results, engines)
+    print_summary(results, engines)
+    print_today_table(results, engines)
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("probeproxy")
@@ -166,8 +189,7 @@ def main():
     if args.from_jsonl:
         with open(args.from_jsonl) as f:
             results = {r.pop("level"): r for r in map(json.loads, f)}
-        print_level_tables(results, args.engines)
-        print_summary(results, args.engines)
+        print_tables(results, args.engines)
         return
     scenes = sorted(glob.glob(os.path.join(args.scenes, "*", "*.scene.json")))
     if args.levels:
@@ -182,8 +204,7 @@ def main():
             if args.jsonl:
                 with open(args.jsonl, "a") as f:
                     f.write(json.dumps({"level": level, **results[level]}) + "\n")
-    print_level_tables(results, args.engines)
-    print_summary(results, args.engines)
+    print_tables(results, args.engines)
 
 
 if __name__ == "__main__":
