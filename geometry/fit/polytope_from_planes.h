@@ -22,7 +22,9 @@ namespace probeproxy {
 // solved from the best conditioned three of the planes that meet there: the result depends on
 // the planes and the interior point only, bit for bit (not on the thread, nor on the heap).
 // Throws FitError when a normal is not unit length or a value is not finite, when the planes
-// bound no volume (isBounded is false), or when the interior point is not strictly inside.
+// bound no volume (isBounded is false), when the interior point is not strictly inside, or when
+// rounding leaves no closed boundary even without the planes whose facets have no area: the
+// mesh it returns is always closed.
 ConvexProxy polytopeFromPlanes(std::vector<ProxyPlane> planes, glm::dvec3 interiorPointMeters,
                                std::vector<std::size_t>* droppedPlaneIndices = nullptr);
 
