@@ -537,6 +537,15 @@ TEST(PolytopeFromPlanes, FloorsMicrometresApartLeaveNoSliver) {
   expectConsistent(proxy, 1e-9);
 }
 
+// The polytope is, bit for bit, the one the planes give with plane `left` left out.
+void expectSolvedWithout(const ConvexProxy& proxy, std::vector<ProxyPlane> planes, std::size_t left,
+                         glm::dvec3 interior) {
+  planes.erase(planes.begin() + static_cast<std::ptrdiff_t>(left));
+  const ConvexProxy solvedWithout = polytopeFromPlanes(planes, interior);
+  EXPECT_EQ(proxy.verticesMeters, solvedWithout.verticesMeters);
+  EXPECT_EQ(proxy.triangles, solvedWithout.triangles);
+}
+
 TEST(PolytopeFromPlanes, APlaneGrazingAnEdgeIsLeftOutAndItsCornersSolvedAgain) {
   // Twelve planes a bloodprison layout probe's simplification tried (a step 2.7 km across):
   // plane 2 meets the others only within the merge distance of an edge, a facet 1.4 cm wide
@@ -569,11 +578,7 @@ TEST(PolytopeFromPlanes, APlaneGrazingAnEdgeIsLeftOutAndItsCornersSolvedAgain) {
                                              proxy.verticesMeters[t[2]]));
   EXPECT_GT(lowest, 1e-6 * glm::distance(lo, hi));
   expectConsistent(proxy, 1e-9);
-  std::vector<ProxyPlane> without = planes;
-  without.erase(without.begin() + 2);
-  const ConvexProxy solvedWithout = polytopeFromPlanes(without, interior);
-  EXPECT_EQ(proxy.verticesMeters, solvedWithout.verticesMeters);
-  EXPECT_EQ(proxy.triangles, solvedWithout.triangles);
+  expectSolvedWithout(proxy, planes, 2, interior);
 }
 
 TEST(PolytopeFromPlanes, PlanesMeetingAlongOneEdgeLeaveAClosedMesh) {
@@ -637,11 +642,7 @@ TEST(PolytopeFromPlanes, AFacetOfNoAreaWhoseNeighboursDoNotMeetIsSolvedAgainWith
   const ConvexProxy proxy = polytopeFromPlanes(planes, kStripInterior, &dropped);
   expectConsistent(proxy, 1e-4 * 200.0);
   EXPECT_TRUE(std::find(dropped.begin(), dropped.end(), 2u) != dropped.end());
-  std::vector<ProxyPlane> without = planes;
-  without.erase(without.begin() + 2);
-  const ConvexProxy solvedWithout = polytopeFromPlanes(without, kStripInterior);
-  EXPECT_EQ(proxy.verticesMeters, solvedWithout.verticesMeters);
-  EXPECT_EQ(proxy.triangles, solvedWithout.triangles);
+  expectSolvedWithout(proxy, planes, 2, kStripInterior);
 }
 
 TEST(PolytopeFromPlanes, NoNudgeOfAStripWithAWallFittedThreeTimesLeavesItOpen) {
