@@ -421,6 +421,12 @@ ConvexProxy polytopeFromPlanes(std::vector<ProxyPlane> planes, glm::dvec3 interi
     return proxy;
   }
 
+  if (!closed) {
+    // Engines and validate's proxy_not_closed reject an open mesh: better no proxy (the
+    // caller keeps the box) than one with a hole.
+    throw FitError("polytope from planes: the " + std::to_string(planes.size()) +
+                   " planes leave an open boundary within rounding");
+  }
   // Corners sorted by position, so the output does not depend on the hull's internal order.
   std::vector<std::uint32_t> used;
   for (const Facet& f : facets) used.insert(used.end(), f.corners.begin(), f.corners.end());
@@ -432,12 +438,6 @@ ConvexProxy polytopeFromPlanes(std::vector<ProxyPlane> planes, glm::dvec3 interi
     return std::tie(pa.x, pa.y, pa.z) < std::tie(pb.x, pb.y, pb.z);
   });
   std::vector<std::uint32_t> outputIndex(cornerCount, UINT32_MAX);
-  if (!closed) {
-    // Engines and validate's proxy_not_closed reject an open mesh: better no proxy (the
-    // caller keeps the box) than one with a hole.
-    throw FitError("polytope from planes: the " + std::to_string(planes.size()) +
-                   " planes leave an open boundary within rounding");
-  }
   if (facets.size() < 4) {
     // Rounding merged what the dual hull kept apart; a proxy without a volume is no proxy.
     throw FitError("polytope from planes: the " + std::to_string(planes.size()) +
